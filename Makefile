@@ -1,0 +1,95 @@
+# Fixed-point Whitted ray tracer: host build, tests, and the default render.
+#
+#   make            build the hosted CLI (build/host/rt)
+#   make run        render the default scene and report its error vs double
+#   make test       install missing packages, build, run every test
+#
+# The core (src/) is compiled once per numeric backend; each copy is
+# partially linked with platform/hosted/backend.c into one object that
+# exports only its rt_backend_t, so `rt` carries both builds.
+
+SCENE ?= scenes/spd/balls-2.nff
+SIZE  ?=
+DEPTH ?= 5
+
+CC      ?= cc
+LD      ?= ld
+OBJCOPY ?= objcopy
+
+# Capacities for the host: large enough for every SPD "default" scene.
+HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 \
+            -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024
+
+WARN      = -std=c11 -Wall -Wextra -Werror
+CORE_SRC  = $(wildcard src/*.c)
+HOST_SRC  = platform/hosted/main.c platform/hosted/image.c
+HOST_INC  = -Isrc -Iplatform/hosted
+
+# Two host variants: optimised, and sanitised (what the tests run).
+host_CFLAGS = -O2 -g
+asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+              -fno-omit-frame-pointer
+host_LDFLAGS =
+asan_LDFLAGS = -fsanitize=address,undefined
+
+.PHONY: all run test clean deps
+all: build/host/rt
+
+# $(1) variant, $(2) backend name, $(3) RT_BACKEND_DOUBLE value
+define core_rules
+build/$(1)/$(2)/%.o: src/%.c $(wildcard src/*.h) Makefile
+	@mkdir -p $$(@D)
+	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) -DRT_BACKEND_DOUBLE=$(3) -Isrc -c $$< -o $$@
+
+build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard src/*.h) Makefile
+	@mkdir -p $$(@D)
+	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) -DRT_BACKEND_DOUBLE=$(3) $(HOST_INC) -c $$< -o $$@
+
+build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) build/$(1)/$(2)/backend.o
+	$$(LD) -r -o $$@.tmp $$^
+	$$(OBJCOPY) -G rt_backend_$(2) $$@.tmp $$@
+	@rm -f $$@.tmp
+endef
+
+define host_rules
+$(call core_rules,$(1),fixed,0)
+$(call core_rules,$(1),double,1)
+
+build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
+	@mkdir -p $$(@D)
+	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
+
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/core-fixed.o build/$(1)/core-double.o
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lz -lm
+
+build/$(1)/test_%: tests/test_%.c build/$(1)/image.o build/$(1)/core-fixed.o build/$(1)/core-double.o tests/testlib.h
+	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
+	    -o $$@ $$< build/$(1)/image.o build/$(1)/core-fixed.o build/$(1)/core-double.o -lz -lm
+endef
+
+$(eval $(call host_rules,host))
+$(eval $(call host_rules,asan))
+
+# The fixed-point unit test links the fixed scalar layer alone.
+build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
+
+run: build/host/rt
+	@mkdir -p out
+	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE))).png --fixed --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --stats
+	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE)))-double.png --double --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --quiet
+	@printf 'fixed vs double: '
+	@build/host/rt compare out/$(basename $(notdir $(SCENE))).png out/$(basename $(notdir $(SCENE)))-double.png
+
+deps:
+	@tests/ensure-deps.sh
+
+TESTS = build/asan/test_fx build/asan/test_geometry build/asan/rt
+
+test: deps
+	$(MAKE) $(TESTS)
+	@tests/run-all.sh build/asan
+
+clean:
+	rm -rf build out

@@ -1,0 +1,87 @@
+/* backend.c - rt_backend_t over one build of the core (see backend.h). */
+#include "backend.h"
+
+#include "camera.h"
+#include "nff.h"
+#include "scene_hit.h"
+#include "trace.h"
+
+#if RT_BACKEND_DOUBLE
+#define BACKEND_SYMBOL rt_backend_double
+static real_t to_real(double v) { return v; }
+static double to_double(real_t v) { return v; }
+#else
+#define BACKEND_SYMBOL rt_backend_fixed
+static real_t to_real(double v)
+{
+    double s = v * FX_ONE;
+    return (real_t)(s < 0 ? s - 0.5 : s + 0.5);
+}
+static double to_double(real_t v) { return (double)v / FX_ONE; }
+#endif
+
+static scene_store_t store;
+
+static bool load(const char *text, size_t len, rt_error_t *err)
+{
+    return nff_read(text, len, &store, err);
+}
+
+static void resolution(uint16_t *w, uint16_t *h)
+{
+    *w = store.scene.width;
+    *h = store.scene.height;
+}
+
+static uint32_t primitive_count(void)
+{
+    const scene_t *s = &store.scene;
+    return s->n_spheres + s->n_cones + s->n_polygons;
+}
+
+static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
+{
+    return rt_render(&store.scene, opts, sink, stats, err);
+}
+
+static bool probe(const double o[3], const double d[3], probe_hit_t *out)
+{
+    const scene_t *sc = &store.scene;
+    ray_t r;
+    r.origin = v3(to_real(o[0]), to_real(o[1]), to_real(o[2]));
+    r.dir = v3_unit(v3(to_real(d[0]), to_real(d[1]), to_real(d[2])));
+    rt_stats_t st = { 0 };
+    hit_t h;
+    h.t = RT_T_FAR;
+    if (!scene_nearest(sc, &r, RT_T_MIN, &h, &st))
+        return false;
+    vec3_t p = ray_at(&r, h.t), n;
+    switch (h.kind) {
+    case PRIM_SPHERE: n = sphere_normal(&sc->spheres[h.index], p); break;
+    case PRIM_CONE: n = cone_normal(&sc->cones[h.index], p); break;
+    default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;
+    }
+    out->t = to_double(h.t);
+    out->normal[0] = to_double(n.x);
+    out->normal[1] = to_double(n.y);
+    out->normal[2] = to_double(n.z);
+    out->kind = h.kind;
+    out->index = h.index;
+    return true;
+}
+
+static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
+{
+    camera_t cam;
+    if (camera_init(&cam, &store.scene.view, nx, ny))
+        return false;
+    ray_t r = camera_ray(&cam, i, j);
+    dir[0] = to_double(r.dir.x);
+    dir[1] = to_double(r.dir.y);
+    dir[2] = to_double(r.dir.z);
+    return true;
+}
+
+const rt_backend_t BACKEND_SYMBOL = {
+    R_BACKEND_NAME, load, resolution, primitive_count, render, probe, eye_dir,
+};

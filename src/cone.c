@@ -1,0 +1,74 @@
+/* cone.c - the 'c' primitive: open cone or cylinder, no end caps. */
+#include "geometry.h"
+
+const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t r_apex,
+                      uint16_t material)
+{
+    vec3_t along = v3_sub(apex, base);
+    c->base = base;
+    c->axis = v3_unit(along);
+    c->height = v3_length(along);
+    c->r0 = r_abs(r_base);
+    c->material = material;
+    if (c->height <= 0)
+        return "cone base and apex are the same point";
+    if (c->r0 == 0 && r_apex == 0)
+        return "cone radii are both zero";
+    c->slope = r_div(r_abs(r_apex) - c->r0, c->height);
+    return 0;
+}
+
+/* With the ray in cone coordinates (height h along the axis, radial part
+ * perpendicular to it), a point is on the surface when
+ *   |radial|^2 = (r0 + slope * h)^2,
+ * a quadratic a t^2 + 2 b t + c = 0 in the ray parameter. */
+bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
+{
+    vec3_t ob = v3_sub(r->origin, c->base);
+    real_t ov = v3_dot(ob, c->axis);
+    real_t dv = v3_dot(r->dir, c->axis);
+    vec3_t op = v3_madd(ob, -ov, c->axis);
+    vec3_t dp = v3_madd(r->dir, -dv, c->axis);
+    real_t rr = c->r0 + r_mul(c->slope, ov); /* radius at the origin's height */
+    real_t kdv = r_mul(c->slope, dv);
+
+    real_t a = r_from_wide(v3_wdot(dp, dp) - r_wmul(kdv, kdv));
+    real_t b = r_from_wide(v3_wdot(op, dp) - r_wmul(rr, kdv));
+    real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
+    real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
+    if (disc < 0)
+        return false;
+    real_t h = r_wsqrt(disc);
+    /* the two roots without cancellation: q / a and c / q */
+    real_t q = b > 0 ? -(b + h) : h - b;
+    real_t roots[2];
+    int n = 0;
+    if (a != 0)
+        roots[n++] = r_div(q, a);
+    if (q != 0)
+        roots[n++] = r_div(cc, q);
+    if (n == 2 && roots[1] < roots[0]) {
+        real_t tmp = roots[0];
+        roots[0] = roots[1];
+        roots[1] = tmp;
+    }
+    for (int i = 0; i < n; i++) {
+        real_t ti = roots[i];
+        if (ti <= tmin || ti >= *t)
+            continue;
+        real_t hh = ov + r_mul(ti, dv);
+        if (hh < 0 || hh > c->height)
+            continue;
+        *t = ti;
+        return true;
+    }
+    return false;
+}
+
+vec3_t cone_normal(const cone_t *c, vec3_t p)
+{
+    vec3_t w = v3_sub(p, c->base);
+    vec3_t radial = v3_madd(w, -v3_dot(w, c->axis), c->axis);
+    /* gradient of |radial| - (r0 + slope h): outward, tilted by the slope */
+    return v3_unit(v3_madd(v3_unit(radial), -c->slope, c->axis));
+}

@@ -1,0 +1,246 @@
+/* fx.c - the out-of-line fixed-point operations (see fx.h for accuracy). */
+#include "fx.h"
+
+/* floor(sqrt(v)) with the remainder v - root^2 (digit-by-digit method). */
+static uint32_t isqrt64(uint64_t v, uint64_t *rem_out)
+{
+    uint64_t rem = v, root = 0, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (rem >= root + bit) {
+            rem -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    *rem_out = rem;
+    return (uint32_t)root;
+}
+
+/* round(sqrt(v)): (r + 1/2)^2 = r^2 + r + 1/4, so round up when rem > r. */
+static uint64_t isqrt64_round(uint64_t v)
+{
+    uint64_t rem;
+    uint64_t r = isqrt64(v, &rem);
+    return rem > r ? r + 1 : r;
+}
+
+fx_t fx_div(fx_t a, fx_t b)
+{
+    if (b == 0) {
+        FX_ON_SATURATE();
+        return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
+    }
+    int64_t n = (int64_t)a * FX_ONE;
+    int64_t d = b;
+    int64_t h = (d < 0 ? -d : d) / 2;
+    return fx_sat64((n >= 0 ? n + h : n - h) / d);
+}
+
+fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
+{
+    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
+    while (a >= lim || a <= -lim) {
+        a /= 2;
+        b /= 2;
+    }
+    if (b == 0) {
+        FX_ON_SATURATE();
+        return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
+    }
+    int64_t n = a * FX_ONE;
+    int64_t h = (b < 0 ? -b : b) / 2;
+    return fx_sat64((n >= 0 ? n + h : n - h) / b);
+}
+
+fx_t fx_sqrt(fx_t a)
+{
+    if (a <= 0)
+        return 0;
+    return (fx_t)isqrt64_round((uint64_t)a << FX_FRAC_BITS);
+}
+
+fx_t fx_wsqrt(fx_wide_t w)
+{
+    if (w <= 0)
+        return 0;
+    uint64_t r = isqrt64_round((uint64_t)w);
+    return r > (uint64_t)FX_MAX ? fx_sat64(FX_MAX + (int64_t)1) : (fx_t)r;
+}
+
+void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
+{
+    int64_t v[3] = { x, y, z };
+    uint64_t m = 0;
+    for (int i = 0; i < 3; i++) {
+        uint64_t a = (uint64_t)(v[i] < 0 ? -v[i] : v[i]);
+        m = a > m ? a : m;
+    }
+    if (m == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return;
+    }
+    /* Bring the largest component into [2^27, 2^28): 28 significant bits,
+     * the squared length stays below 2^58 and v * 2^F below 2^52. */
+    int64_t up = 1, down = 1;
+    while (m * (uint64_t)up < ((uint64_t)1 << 27))
+        up *= 2;
+    while (m / (uint64_t)down >= ((uint64_t)1 << 28))
+        down *= 2;
+    uint64_t len2 = 0;
+    for (int i = 0; i < 3; i++) {
+        v[i] = v[i] * up / down;
+        len2 += (uint64_t)(v[i] * v[i]);
+    }
+    int64_t len = (int64_t)isqrt64_round(len2);
+    for (int i = 0; i < 3; i++) {
+        int64_t n = v[i] * FX_ONE;
+        out[i] = (fx_t)((n >= 0 ? n + len / 2 : n - len / 2) / len);
+    }
+}
+
+/* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1). */
+static int32_t log2_q24(fx_t x)
+{
+    uint32_t m = (uint32_t)x;
+    int s = 0;
+    while (m < ((uint32_t)1 << 30)) {
+        m <<= 1;
+        s++;
+    }
+    /* x = (m / 2^30) * 2^(30 - s - F), with m/2^30 in [1, 2). */
+    int32_t result = (30 - s - FX_FRAC_BITS) * ((int32_t)1 << 24);
+    uint64_t mm = m;
+    for (int bit = 23; bit >= 0; bit--) {
+        mm = (mm * mm) >> 30;
+        if (mm >= ((uint64_t)2 << 30)) {
+            mm >>= 1;
+            result += (int32_t)1 << bit;
+        }
+    }
+    return result;
+}
+
+/* 2^f for f in [0, 1) given in Q.24, result in Q.30. Taylor series of
+ * e^(f ln 2) to degree 9; the coefficients are (ln 2)^k / k! in Q.30,
+ * truncation error below 1e-8. */
+static uint64_t exp2_frac_q30(int32_t f_q24)
+{
+    static const uint32_t coef[10] = {
+        1073741824u, 744261118u, 257941248u, 59597083u, 10327387u,
+        1431680u, 165394u, 16377u, 1419u, 109u,
+    };
+    uint64_t z = (uint64_t)f_q24 << 6; /* Q.30 */
+    uint64_t p = coef[9];
+    for (int k = 8; k >= 0; k--)
+        p = coef[k] + ((p * z) >> 30);
+    return p;
+}
+
+fx_t fx_pow_unit(fx_t x, fx_shine_t s)
+{
+    if (x <= 0)
+        return 0;
+    if (x >= FX_ONE || s == 0)
+        return FX_ONE;
+    /* y = s * log2(x) in Q.24; below -(F+2) the result rounds to 0. */
+    int64_t y = ((int64_t)s * log2_q24(x)) / ((int64_t)1 << FX_SHINE_FRAC_BITS);
+    if (y <= -(int64_t)(FX_FRAC_BITS + 2) * (1 << 24))
+        return 0;
+    int32_t yi = (int32_t)y;
+    /* y = -n + f with n >= 1 integer, f in [0, 1). */
+    int32_t n = -((yi >> 24));          /* floor: arithmetic shift */
+    int32_t f = yi + n * (1 << 24);
+    uint64_t p = exp2_frac_q30(f);      /* Q.30, in [1, 2) */
+    unsigned shift = (unsigned)(30 - FX_FRAC_BITS + n);
+    return (fx_t)((p + ((uint64_t)1 << (shift - 1))) >> shift);
+}
+
+/* Q.30 sin and cos of x in [0, pi/2] (Q.30), by nested Taylor series
+ * to x^15 / x^16; truncation error below 1e-11. */
+static int64_t mul_q30(int64_t a, int64_t b) { return (a * b) / ((int64_t)1 << 30); }
+
+static int64_t sin_q30(int64_t x)
+{
+    static const int32_t den[] = { 210, 156, 110, 72, 42, 20, 6 };
+    int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
+    for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
+        t = ((int64_t)1 << 30) - mul_q30(x2, t) / den[i];
+    return mul_q30(x, t);
+}
+
+static int64_t cos_q30(int64_t x)
+{
+    static const int32_t den[] = { 240, 182, 132, 90, 56, 30, 12, 2 };
+    int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
+    for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
+        t = ((int64_t)1 << 30) - mul_q30(x2, t) / den[i];
+    return t;
+}
+
+fx_wide_t fx_tan_deg_wide(fx_t deg)
+{
+    /* deg * (pi/180 in Q.40), to radians in Q.30 */
+    int64_t rad = ((int64_t)deg * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
+    int64_t s = sin_q30(rad), c = cos_q30(rad);
+    if (c <= 0)
+        return INT64_MAX;
+    int64_t t30 = (s * ((int64_t)1 << 30)) / c; /* tan in Q.30 (s < 2^30, fits) */
+    const int sh = 2 * FX_FRAC_BITS - 30;
+    if (sh >= 0)
+        return t30 * ((int64_t)1 << sh);
+    return fx_round_shift(t30, (unsigned)-sh);
+}
+
+bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits, uint32_t max, int32_t *out)
+{
+    uint64_t result;
+    if (mant == 0) {
+        *out = 0;
+        return true;
+    }
+    if (exp10 >= 0) {
+        /* An integer: scale up with an overflow check at every step. */
+        uint64_t limit = (uint64_t)max >> frac_bits;
+        uint64_t v = mant;
+        for (int32_t i = 0; i < exp10; i++) {
+            if (v > limit)
+                return false;
+            v *= 10;
+        }
+        if (v > limit)
+            return false;
+        result = v << frac_bits;
+    } else {
+        /* mant / 10^k by long division into binary fraction bits. */
+        uint32_t k = (uint32_t)-exp10;
+        while (k > 18) { /* keeps 10^k and r << 1 inside 64 bits */
+            mant /= 10;
+            k--;
+        }
+        uint64_t d = 1;
+        for (uint32_t i = 0; i < k; i++)
+            d *= 10;
+        uint64_t q = mant / d, r = mant % d;
+        if (q > ((uint64_t)max >> frac_bits))
+            return false;
+        result = q << frac_bits;
+        for (int bit = (int)frac_bits - 1; bit >= 0; bit--) {
+            r <<= 1;
+            if (r >= d) {
+                r -= d;
+                result |= (uint64_t)1 << bit;
+            }
+        }
+        /* Round to nearest; an exact half goes away from zero. */
+        if (2 * r >= d)
+            result++;
+    }
+    if (result > max)
+        return false;
+    *out = neg ? -(int32_t)result : (int32_t)result;
+    return true;
+}

@@ -1,0 +1,505 @@
+/*
+ * nff.c - NFF reader: text in a caller's buffer to a scene_store_t.
+ *
+ * Whitespace-separated tokens, so an entity may span lines or share one
+ * (the SPD cones put base and apex on one line). Numbers are parsed from
+ * their decimal digits straight to the active scalar, correctly rounded in
+ * the fixed build; no libc.
+ */
+#include "nff.h"
+
+#include "camera.h"
+#include "geometry.h"
+
+typedef struct {
+    const char *p, *end;
+    uint32_t line;      /* line of the current position */
+    uint32_t tok_line;  /* line of the last token read */
+    const char *tok;
+    size_t tok_len;
+    scene_store_t *st;
+    rt_error_t *err;
+    bool have_view, have_material;
+    uint16_t material;
+} reader_t;
+
+/* ---- tokens ----------------------------------------------------------- */
+
+static bool is_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
+}
+
+static bool fail(reader_t *r, uint32_t line, const char *msg)
+{
+    rt_error_set(r->err, line, msg);
+    return false;
+}
+
+/* "<what><msg>, found '<token>'" with the token shortened. */
+static bool fail_tok(reader_t *r, const char *what, const char *msg)
+{
+    rt_error_set(r->err, r->tok_line, what);
+    rt_error_append(r->err, msg);
+    if (r->tok == 0) {
+        rt_error_append(r->err, " (end of file)");
+        return false;
+    }
+    char q[24];
+    size_t n = 0;
+    for (; n < r->tok_len && n < 16; n++)
+        q[n] = r->tok[n];
+    if (r->tok_len > 16) {
+        q[n++] = '.';
+        q[n++] = '.';
+        q[n++] = '.';
+    }
+    q[n] = '\0';
+    rt_error_append(r->err, ", found '");
+    rt_error_append(r->err, q);
+    rt_error_append(r->err, "'");
+    return false;
+}
+
+/* Skips blanks and comments; false (with the error set) on a control or
+ * non-ASCII byte, which means the file is not text. */
+static bool skip_blank(reader_t *r)
+{
+    while (r->p < r->end) {
+        unsigned char c = (unsigned char)*r->p;
+        if (c == '\n') {
+            r->line++;
+            r->p++;
+        } else if (is_space((char)c)) {
+            r->p++;
+        } else if (c == '#') {
+            while (r->p < r->end && *r->p != '\n')
+                r->p++;
+        } else if (c < 0x20 || c >= 0x7F) {
+            rt_error_set(r->err, r->line, "not a text file (byte ");
+            rt_error_append_int(r->err, c);
+            rt_error_append(r->err, ")");
+            return false;
+        } else {
+            return true;
+        }
+    }
+    return true;
+}
+
+/* Next token, or tok == NULL at the end of input. */
+static bool next_token(reader_t *r)
+{
+    if (!skip_blank(r))
+        return false;
+    r->tok_line = r->line;
+    if (r->p >= r->end) {
+        r->tok = 0;
+        r->tok_len = 0;
+        return true;
+    }
+    r->tok = r->p;
+    while (r->p < r->end && !is_space(*r->p) && *r->p != '#') {
+        unsigned char c = (unsigned char)*r->p;
+        if (c < 0x20 || c >= 0x7F)
+            break;
+        r->p++;
+    }
+    r->tok_len = (size_t)(r->p - r->tok);
+    return true;
+}
+
+static bool tok_is(const reader_t *r, const char *word)
+{
+    size_t i = 0;
+    if (r->tok == 0)
+        return false;
+    for (; i < r->tok_len; i++)
+        if (word[i] == '\0' || word[i] != r->tok[i])
+            return false;
+    return word[i] == '\0';
+}
+
+/* ---- numbers ---------------------------------------------------------- */
+
+typedef struct {
+    bool neg;
+    uint64_t mant;   /* up to 19 significant digits */
+    int32_t exp10;
+} decimal_t;
+
+/* Parses the current token as [+-]digits[.digits][(e|E)[+-]digits]. */
+static bool parse_decimal(const reader_t *r, decimal_t *d)
+{
+    const char *s = r->tok, *e = r->tok + r->tok_len;
+    int digits = 0, sig = 0;
+    int32_t exp10 = 0;
+    d->neg = false;
+    d->mant = 0;
+    if (s == 0)
+        return false;
+    if (s < e && (*s == '+' || *s == '-'))
+        d->neg = *s++ == '-';
+    for (; s < e && *s >= '0' && *s <= '9'; s++, digits++) {
+        if (sig < 19) {
+            d->mant = d->mant * 10 + (uint64_t)(*s - '0');
+            sig += d->mant != 0;
+        } else {
+            exp10++; /* dropped integer digit */
+        }
+    }
+    if (s < e && *s == '.') {
+        for (s++; s < e && *s >= '0' && *s <= '9'; s++, digits++) {
+            if (sig < 19) {
+                d->mant = d->mant * 10 + (uint64_t)(*s - '0');
+                sig += d->mant != 0;
+                exp10--;
+            }
+        }
+    }
+    if (digits == 0)
+        return false;
+    if (s < e && (*s == 'e' || *s == 'E')) {
+        bool eneg = false;
+        int32_t ev = 0;
+        s++;
+        if (s < e && (*s == '+' || *s == '-'))
+            eneg = *s++ == '-';
+        if (s >= e || *s < '0' || *s > '9')
+            return false;
+        for (; s < e && *s >= '0' && *s <= '9'; s++)
+            if (ev < 100000)
+                ev = ev * 10 + (*s - '0');
+        exp10 += eneg ? -ev : ev;
+    }
+    d->exp10 = exp10;
+    return s == e;
+}
+
+static bool read_decimal(reader_t *r, const char *what, decimal_t *d)
+{
+    if (!next_token(r))
+        return false;
+    if (!parse_decimal(r, d))
+        return fail_tok(r, what, ": expected a number");
+    return true;
+}
+
+static bool out_of_range(reader_t *r, const char *what)
+{
+    rt_error_set(r->err, r->tok_line, what);
+    rt_error_append(r->err, ": number out of range for the ");
+    rt_error_append(r->err, R_BACKEND_NAME);
+    rt_error_append(r->err, " build");
+    return false;
+}
+
+static bool read_real(reader_t *r, const char *what, real_t *out)
+{
+    decimal_t d;
+    if (!read_decimal(r, what, &d))
+        return false;
+    if (!r_from_decimal(d.neg, d.mant, d.exp10, out))
+        return out_of_range(r, what);
+    return true;
+}
+
+static bool read_vec3(reader_t *r, const char *what, vec3_t *v)
+{
+    return read_real(r, what, &v->x) && read_real(r, what, &v->y) && read_real(r, what, &v->z);
+}
+
+/* A non-negative integer in [lo, hi]. */
+static bool read_count(reader_t *r, const char *what, uint32_t lo, uint32_t hi, uint32_t *out)
+{
+    decimal_t d;
+    if (!read_decimal(r, what, &d))
+        return false;
+    uint64_t v = d.mant;
+    for (int32_t i = 0; i < d.exp10 && v <= hi; i++)
+        v *= 10;
+    if (d.neg || d.exp10 < 0 || v < lo || v > hi) {
+        rt_error_set(r->err, r->tok_line, what);
+        rt_error_append(r->err, ": expected a whole number from ");
+        rt_error_append_int(r->err, (int32_t)lo);
+        rt_error_append(r->err, " to ");
+        rt_error_append_int(r->err, (int32_t)hi);
+        return false;
+    }
+    *out = (uint32_t)v;
+    return true;
+}
+
+/* ---- capacities ------------------------------------------------------- */
+
+static bool over_capacity(reader_t *r, const char *what, const char *macro, int32_t cap)
+{
+    rt_error_set(r->err, r->tok_line, "too many ");
+    rt_error_append(r->err, what);
+    rt_error_append(r->err, ": capacity ");
+    rt_error_append(r->err, macro);
+    rt_error_append(r->err, " = ");
+    rt_error_append_int(r->err, cap);
+    rt_error_append(r->err, " (raise it with -D");
+    rt_error_append(r->err, macro);
+    rt_error_append(r->err, "=N)");
+    return false;
+}
+
+#define CHECK_ROOM(r, count, cap, what) \
+    ((count) < (cap) ? true : over_capacity((r), (what), #cap, (int32_t)(cap)))
+
+static bool need_material(reader_t *r, const char *what)
+{
+    if (r->have_material)
+        return true;
+    rt_error_set(r->err, r->tok_line, what);
+    rt_error_append(r->err, " before any 'f' material line");
+    return false;
+}
+
+/* ---- entities --------------------------------------------------------- */
+
+static bool read_view(reader_t *r)
+{
+    static const char *const keys[] = { "from", "at", "up", "angle", "hither", "resolution" };
+    view_t *v = &r->st->scene.view;
+    uint32_t line = r->tok_line;
+    for (unsigned k = 0; k < 6; k++) {
+        if (!next_token(r))
+            return false;
+        if (!tok_is(r, keys[k]))
+            return fail_tok(r, "v: expected ", keys[k]);
+        real_t hither;
+        uint32_t w = 0, h = 0;
+        bool ok = true;
+        switch (k) {
+        case 0: ok = read_vec3(r, "from", &v->from); break;
+        case 1: ok = read_vec3(r, "at", &v->at); break;
+        case 2: ok = read_vec3(r, "up", &v->up); break;
+        case 3: ok = read_real(r, "angle", &v->angle); break;
+        case 4: ok = read_real(r, "hither", &hither); break; /* ignored by the model */
+        default:
+            ok = read_count(r, "resolution", 1, RT_MAX_WIDTH, &w) &&
+                 read_count(r, "resolution", 1, RT_MAX_HEIGHT, &h);
+            r->st->scene.width = (uint16_t)w;
+            r->st->scene.height = (uint16_t)h;
+            break;
+        }
+        if (!ok)
+            return false;
+    }
+    camera_t cam;
+    const char *why = camera_init(&cam, v, r->st->scene.width, r->st->scene.height);
+    if (why)
+        return fail(r, line, why);
+    r->have_view = true;
+    return true;
+}
+
+static bool read_light(reader_t *r)
+{
+    scene_t *sc = &r->st->scene;
+    if (!CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
+        return false;
+    light_t *l = &r->st->lights[sc->n_lights];
+    if (!read_vec3(r, "l", &l->pos))
+        return false;
+    l->colour = v3(R_ONE, R_ONE, R_ONE);
+    /* optional colour: three more numbers on the same line */
+    const char *save_p = r->p;
+    uint32_t save_line = r->line;
+    if (!next_token(r))
+        return false;
+    if (r->tok != 0 && r->tok_line == save_line) {
+        decimal_t d;
+        if (!parse_decimal(r, &d))
+            return fail_tok(r, "l", ": expected a number or the end of the line");
+        if (!r_from_decimal(d.neg, d.mant, d.exp10, &l->colour.x))
+            return out_of_range(r, "l");
+        if (!read_real(r, "l", &l->colour.y) || !read_real(r, "l", &l->colour.z))
+            return false;
+    } else {
+        r->p = save_p;
+        r->line = save_line;
+    }
+    sc->n_lights++;
+    return true;
+}
+
+static bool read_material(reader_t *r)
+{
+    scene_t *sc = &r->st->scene;
+    material_t m;
+    decimal_t d;
+    if (!read_vec3(r, "f", &m.colour) || !read_real(r, "f", &m.kd) || !read_real(r, "f", &m.ks) ||
+        !read_decimal(r, "f", &d))
+        return false;
+    if (!shine_from_decimal(d.neg, d.mant, d.exp10, &m.shine))
+        return fail(r, r->tok_line, "f: Phong exponent must be from 0 to 1000000");
+    if (!read_real(r, "f", &m.t) || !read_real(r, "f", &m.ior))
+        return false;
+    if (m.t > 0 && m.ior <= 0)
+        return fail(r, r->tok_line, "f: index of refraction must be positive");
+    /* reuse an identical material (SPD files repeat a few many times) */
+    for (uint32_t i = 0; i < sc->n_materials; i++) {
+        const material_t *o = &r->st->materials[i];
+        if (o->colour.x == m.colour.x && o->colour.y == m.colour.y && o->colour.z == m.colour.z &&
+            o->kd == m.kd && o->ks == m.ks && o->shine == m.shine && o->t == m.t &&
+            o->ior == m.ior) {
+            r->material = (uint16_t)i;
+            r->have_material = true;
+            return true;
+        }
+    }
+    if (!CHECK_ROOM(r, sc->n_materials, RT_MAX_MATERIALS, "materials"))
+        return false;
+    r->st->materials[sc->n_materials] = m;
+    r->material = (uint16_t)sc->n_materials++;
+    r->have_material = true;
+    return true;
+}
+
+static bool read_sphere(reader_t *r)
+{
+    scene_t *sc = &r->st->scene;
+    uint32_t line = r->tok_line;
+    vec3_t c;
+    real_t rad;
+    if (!need_material(r, "s") || !CHECK_ROOM(r, sc->n_spheres, RT_MAX_SPHERES, "spheres") ||
+        !read_vec3(r, "s", &c) || !read_real(r, "s", &rad))
+        return false;
+    const char *why = sphere_init(&r->st->spheres[sc->n_spheres], c, rad, r->material);
+    if (why)
+        return fail(r, line, why);
+    sc->n_spheres++;
+    return true;
+}
+
+static bool read_cone(reader_t *r)
+{
+    scene_t *sc = &r->st->scene;
+    uint32_t line = r->tok_line;
+    vec3_t base, apex;
+    real_t rb, ra;
+    if (!need_material(r, "c") || !CHECK_ROOM(r, sc->n_cones, RT_MAX_CONES, "cones") ||
+        !read_vec3(r, "c", &base) || !read_real(r, "c", &rb) || !read_vec3(r, "c", &apex) ||
+        !read_real(r, "c", &ra))
+        return false;
+    const char *why = cone_init(&r->st->cones[sc->n_cones], base, rb, apex, ra, r->material);
+    if (why)
+        return fail(r, line, why);
+    sc->n_cones++;
+    return true;
+}
+
+static bool read_polygon(reader_t *r, bool patch)
+{
+    scene_t *sc = &r->st->scene;
+    const char *what = patch ? "pp" : "p";
+    uint32_t line = r->tok_line, n;
+    if (!need_material(r, what) ||
+        !CHECK_ROOM(r, sc->n_polygons, RT_MAX_POLYGONS, "polygons and patches"))
+        return false;
+    if (!read_count(r, what, 3, 0xFFFFFFFFu >> 8, &n))
+        return false;
+    if (n > RT_MAX_POLY_VERTS)
+        return over_capacity(r, "vertices in one polygon", "RT_MAX_POLY_VERTS", RT_MAX_POLY_VERTS);
+    if (n > RT_MAX_VERTICES - sc->n_vertices)
+        return over_capacity(r, "vertices", "RT_MAX_VERTICES", RT_MAX_VERTICES);
+    if (patch && n > RT_MAX_VERTICES - sc->n_normals)
+        return over_capacity(r, "patch normals", "RT_MAX_VERTICES", RT_MAX_VERTICES);
+    for (uint32_t i = 0; i < n; i++) {
+        if (!read_vec3(r, what, &r->st->vertices[sc->n_vertices + i]))
+            return false;
+        if (patch) {
+            vec3_t nv;
+            if (!read_vec3(r, what, &nv))
+                return false;
+            nv = v3_unit(nv);
+            if (nv.x == 0 && nv.y == 0 && nv.z == 0)
+                return fail(r, r->tok_line, "pp: vertex normal is zero");
+            r->st->normals[sc->n_normals + i] = nv;
+        }
+    }
+    const char *why = polygon_init(&r->st->polygons[sc->n_polygons], r->st->vertices,
+                                   sc->n_vertices, (uint16_t)n,
+                                   patch ? sc->n_normals : POLY_NO_NORMALS, r->material);
+    if (why)
+        return fail(r, line, why);
+    sc->n_vertices += n;
+    if (patch)
+        sc->n_normals += n;
+    sc->n_polygons++;
+    return true;
+}
+
+static bool read_entity(reader_t *r)
+{
+    if (tok_is(r, "v")) {
+        if (r->have_view)
+            return fail(r, r->tok_line, "v: a second viewpoint");
+        return read_view(r);
+    }
+    if (tok_is(r, "b"))
+        return read_vec3(r, "b", &r->st->scene.background);
+    if (tok_is(r, "#"))
+        return true;
+    static const char *const need_view[] = { "l", "f", "s", "c", "p", "pp" };
+    for (unsigned i = 0; i < sizeof need_view / sizeof need_view[0]; i++) {
+        if (tok_is(r, need_view[i]) && !r->have_view) {
+            rt_error_set(r->err, r->tok_line, "'");
+            rt_error_append(r->err, need_view[i]);
+            rt_error_append(r->err, "' before the 'v' viewpoint");
+            return false;
+        }
+    }
+    if (tok_is(r, "l"))
+        return read_light(r);
+    if (tok_is(r, "f"))
+        return read_material(r);
+    if (tok_is(r, "s"))
+        return read_sphere(r);
+    if (tok_is(r, "c"))
+        return read_cone(r);
+    if (tok_is(r, "p"))
+        return read_polygon(r, false);
+    if (tok_is(r, "pp"))
+        return read_polygon(r, true);
+    return fail_tok(r, "", "unknown entity (expected v, b, l, f, c, s, p or pp)");
+}
+
+bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *err)
+{
+    reader_t r = { 0 };
+    r.p = text;
+    r.end = text + len;
+    r.line = 1;
+    r.st = store;
+    r.err = err;
+    scene_t *sc = &store->scene;
+    *sc = (scene_t){ 0 };
+    sc->materials = store->materials;
+    sc->lights = store->lights;
+    sc->spheres = store->spheres;
+    sc->cones = store->cones;
+    sc->polygons = store->polygons;
+    sc->vertices = store->vertices;
+    sc->normals = store->normals;
+    err->line = 0;
+    err->msg[0] = '\0';
+
+    for (;;) {
+        if (!next_token(&r))
+            return false;
+        if (r.tok == 0)
+            break;
+        if (!read_entity(&r))
+            return false;
+    }
+    if (!r.have_view)
+        return fail(&r, r.line, "no 'v' viewpoint in the file");
+    uint32_t n = sc->n_lights;
+    sc->light_intensity = n ? r_div(r_sqrt(r_from_int((int32_t)n)), r_from_int(2 * (int32_t)n)) : 0;
+    return true;
+}

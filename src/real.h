@@ -1,0 +1,127 @@
+/*
+ * real.h - the scalar the algorithm is written in, and its two backends.
+ *
+ * The tracer source uses real_t with the ordinary + - < > operators and
+ * the r_* functions below for everything else, so the same code builds as
+ *   fixed point (RT_BACKEND_DOUBLE == 0): real_t = fx_t, Q(31-F).F, and
+ *   double      (RT_BACKEND_DOUBLE == 1): the reference the fixed build is
+ *               measured against.
+ * real_wide_t holds exact products (Q.2F in the fixed build) so that
+ * discriminants and dot products lose nothing before the final rounding.
+ *
+ * The double backend uses the compiler's sqrt/pow/tan builtins; it is the
+ * reference for the host and the soft-float benchmark, not the product.
+ */
+#ifndef REAL_H
+#define REAL_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "rt_config.h"
+
+#if RT_BACKEND_DOUBLE
+
+typedef double real_t;
+typedef double real_wide_t;
+typedef double shine_t;
+
+#define R_RATIO(n, d) ((double)(n) / (double)(d))
+#define R_ONE 1.0
+#define R_BACKEND_NAME "double"
+
+static inline real_t r_from_int(int32_t i) { return (double)i; }
+static inline real_t r_mul(real_t a, real_t b) { return a * b; }
+static inline real_t r_div(real_t a, real_t b) { return a / b; }
+static inline real_t r_sqrt(real_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
+static inline real_wide_t r_wmul(real_t a, real_t b) { return a * b; }
+static inline real_wide_t r_to_wide(real_t a) { return a; }
+static inline real_t r_from_wide(real_wide_t w) { return w; }
+static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? __builtin_sqrt(w) : 0.0; }
+static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
+static inline real_t r_pow_unit(real_t x, shine_t s)
+{
+    return x <= 0 ? 0.0 : __builtin_pow(x, s);
+}
+static inline real_wide_t r_tan_deg_wide(real_t deg)
+{
+    return __builtin_tan(deg * (3.14159265358979323846 / 180.0));
+}
+static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
+{
+    double l = __builtin_sqrt(x * x + y * y + z * z);
+    if (l == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return;
+    }
+    out[0] = x / l;
+    out[1] = y / l;
+    out[2] = z / l;
+}
+/* round(255 c) of c clamped to [0, 1] */
+static inline uint8_t r_to_u8(real_t c)
+{
+    if (!(c > 0))
+        return 0;
+    if (c >= 1)
+        return 255;
+    return (uint8_t)(c * 255.0 + 0.5);
+}
+bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out);
+bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out);
+
+#else /* fixed point */
+
+#include "fx.h"
+
+typedef fx_t real_t;
+typedef fx_wide_t real_wide_t;
+typedef fx_shine_t shine_t;
+
+#define R_RATIO(n, d) FX_RATIO(n, d)
+#define R_ONE FX_ONE
+#define R_BACKEND_NAME "fixed"
+
+static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
+static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
+static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
+static inline real_t r_sqrt(real_t a) { return fx_sqrt(a); }
+static inline real_wide_t r_wmul(real_t a, real_t b) { return fx_wmul(a, b); }
+static inline real_wide_t r_to_wide(real_t a) { return fx_to_wide(a); }
+static inline real_t r_from_wide(real_wide_t w) { return fx_from_wide(w); }
+static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
+static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
+static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
+static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
+static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
+{
+    fx_unit3(x, y, z, out);
+}
+static inline uint8_t r_to_u8(real_t c)
+{
+    if (c <= 0)
+        return 0;
+    if (c >= FX_ONE)
+        return 255;
+    return (uint8_t)(((int64_t)c * 255 + FX_HALF) >> FX_FRAC_BITS);
+}
+static inline bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
+{
+    return fx_from_decimal(neg, mant, exp10, FX_FRAC_BITS, (uint32_t)FX_MAX, out);
+}
+static inline bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
+{
+    int32_t v;
+    if (neg || !fx_from_decimal(false, mant, exp10, FX_SHINE_FRAC_BITS, (uint32_t)INT32_MAX, &v))
+        return false;
+    *out = (shine_t)v;
+    return true;
+}
+
+#endif
+
+static inline real_t r_abs(real_t a) { return a < 0 ? -a : a; }
+static inline real_t r_min(real_t a, real_t b) { return a < b ? a : b; }
+static inline real_t r_max(real_t a, real_t b) { return a > b ? a : b; }
+
+#endif

@@ -1,0 +1,37 @@
+/* real_double.c - decimal conversion for the double (reference) backend. */
+#include "real.h"
+
+#if RT_BACKEND_DOUBLE
+
+/* mant * 10^exp10 to within a few ulps; the reference need not be exact. */
+static bool decimal_to_double(bool neg, uint64_t mant, int32_t exp10, double *out)
+{
+    double v = (double)mant;
+    if (mant != 0 && exp10 > 308)
+        return false;
+    if (exp10 < -400)
+        exp10 = -400; /* certainly zero */
+    double p = 1.0;
+    int32_t k = exp10 < 0 ? -exp10 : exp10;
+    for (int32_t i = 0; i < k; i++)
+        p *= 10.0;
+    v = exp10 < 0 ? v / p : v * p;
+    if (v > 1e300)
+        return false;
+    *out = neg ? -v : v;
+    return true;
+}
+
+bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
+{
+    return decimal_to_double(neg, mant, exp10, out);
+}
+
+bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
+{
+    return !neg && decimal_to_double(false, mant, exp10, out) && *out <= 1048575.0;
+}
+
+#else
+typedef int real_double_unused_t; /* ISO C forbids an empty translation unit */
+#endif

@@ -1,0 +1,90 @@
+/* render.c - the frame loop: eye rays per pixel, pixels packed per band. */
+#include "render.h"
+
+#include "camera.h"
+#include "trace.h"
+
+static void put_pixel(uint8_t *px, fb_format_t f, colour_t c)
+{
+    uint8_t r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
+    if (f == FB_RGB565) {
+        uint16_t w = (uint16_t)(((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 |
+                                ((b * 31u + 127u) / 255u));
+        px[0] = (uint8_t)(w & 0xFF);
+        px[1] = (uint8_t)(w >> 8);
+    } else {
+        px[0] = r;
+        px[1] = g;
+        px[2] = b;
+    }
+}
+
+static void wait_flushed(fb_sink_t *sink)
+{
+    while (sink->flushing) {
+        if (sink->wait)
+            sink->wait(sink);
+    }
+}
+
+int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
+              rt_error_t *err)
+{
+    uint16_t w = opts->width ? opts->width : sc->width;
+    uint16_t h = opts->height ? opts->height : sc->height;
+    int depth = opts->max_depth ? opts->max_depth : RT_MAX_DEPTH;
+    if (w == 0 || h == 0 || w > RT_MAX_WIDTH || h > RT_MAX_HEIGHT) {
+        rt_error_set(err, 0, "image size must be 1x1 to ");
+        rt_error_append_int(err, RT_MAX_WIDTH);
+        rt_error_append(err, "x");
+        rt_error_append_int(err, RT_MAX_HEIGHT);
+        return -1;
+    }
+    if (depth > RT_MAX_DEPTH) {
+        rt_error_set(err, 0, "depth exceeds RT_MAX_DEPTH = ");
+        rt_error_append_int(err, RT_MAX_DEPTH);
+        return -1;
+    }
+    size_t line_bytes = (size_t)w * fb_bytes_per_pixel(sink->format);
+    size_t band_lines = sink->band_bytes / line_bytes;
+    if (band_lines == 0 || sink->band[0] == 0) {
+        rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
+        return -1;
+    }
+    camera_t cam;
+    const char *why = camera_init(&cam, &sc->view, w, h);
+    if (why) {
+        rt_error_set(err, 0, why);
+        return -1;
+    }
+    tracer_t tr = { sc, depth, stats };
+
+    sink->flushing = false;
+    int status = sink->begin ? sink->begin(sink, w, h) : 0;
+    if (status != 0)
+        return status;
+    unsigned cur = 0;
+    uint16_t band_y = 0;
+    for (uint16_t y = 0; y < h; y++) {
+        uint8_t *line = sink->band[cur] + (size_t)(y - band_y) * line_bytes;
+        for (uint16_t x = 0; x < w; x++) {
+            ray_t ray = camera_ray(&cam, x, y);
+            stats->eye_rays++;
+            colour_t c = trace_ray(&tr, &ray, 1);
+            put_pixel(line + (size_t)x * fb_bytes_per_pixel(sink->format), sink->format, c);
+        }
+        if ((size_t)(y - band_y + 1) == band_lines || y + 1 == h) {
+            fb_area_t area = { 0, band_y, (uint16_t)(w - 1), y };
+            wait_flushed(sink); /* the other buffer's flush */
+            sink->flushing = true;
+            sink->flush(sink, &area, sink->band[cur]);
+            if (sink->band[1])
+                cur ^= 1u;
+            else
+                wait_flushed(sink);
+            band_y = (uint16_t)(y + 1);
+        }
+    }
+    wait_flushed(sink);
+    return sink->end ? sink->end(sink) : 0;
+}

@@ -1,0 +1,96 @@
+/*
+ * scene.h - a scene as the tracer sees it: flat tables of primitives with
+ * their per-primitive constants already computed.
+ *
+ * scene_t only points at its tables, so they can live in RAM (filled by the
+ * NFF reader into a scene_store_t) or in flash (emitted as const data by the
+ * scene compiler for a board).
+ */
+#ifndef SCENE_H
+#define SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "rt_config.h"
+#include "vec3.h"
+
+typedef struct {
+    colour_t colour;  /* C */
+    real_t kd, ks, t, ior;
+    shine_t shine;
+} material_t;
+
+typedef struct {
+    vec3_t pos;
+    colour_t colour;  /* Lc, (1, 1, 1) unless given */
+} light_t;
+
+typedef struct {
+    vec3_t centre;
+    real_t radius;
+    real_wide_t radius2; /* exact r^2 */
+    uint16_t material;
+} sphere_t;
+
+/* Open cone/cylinder: radius r0 at `base`, growing by `slope` per unit of
+ * height along the unit `axis`, up to `height` (the apex end). */
+typedef struct {
+    vec3_t base, axis;
+    real_t height, r0, slope;
+    uint16_t material;
+} cone_t;
+
+#define POLY_NO_NORMALS UINT32_MAX
+
+/* Planar polygon ('p') or patch ('pp'): vertices [first, first + count) of
+ * the scene's vertex pool; a patch also has normals at the same indices.
+ * Inside tests work in the plane of the two axes other than `drop_axis`. */
+typedef struct {
+    vec3_t normal;        /* Ng, unit, from the first three vertices */
+    real_t offset;        /* Ng . v0 */
+    vec3_t box_min, box_max;
+    uint32_t first;
+    uint32_t normals;     /* first normal, or POLY_NO_NORMALS for 'p' */
+    uint16_t count;
+    uint16_t material;
+    uint8_t drop_axis;
+} polygon_t;
+
+/* The NFF viewpoint; the camera basis is derived per render resolution. */
+typedef struct {
+    vec3_t from, at, up;
+    real_t angle;         /* degrees, full field of view */
+} view_t;
+
+typedef struct {
+    view_t view;
+    colour_t background;
+    uint16_t width, height;   /* the file's resolution */
+    real_t light_intensity;   /* I = sqrt(n) / (2 n) */
+
+    const material_t *materials;
+    const light_t *lights;
+    const sphere_t *spheres;
+    const cone_t *cones;
+    const polygon_t *polygons;
+    const vec3_t *vertices;
+    const vec3_t *normals;    /* per-vertex normals of patches (unit) */
+
+    uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
+    uint32_t n_vertices, n_normals;
+} scene_t;
+
+/* RAM tables at the configured capacities, for scenes read at run time. */
+typedef struct {
+    scene_t scene;
+    material_t materials[RT_MAX_MATERIALS];
+    light_t lights[RT_MAX_LIGHTS];
+    sphere_t spheres[RT_MAX_SPHERES];
+    cone_t cones[RT_MAX_CONES];
+    polygon_t polygons[RT_MAX_POLYGONS];
+    vec3_t vertices[RT_MAX_VERTICES];
+    vec3_t normals[RT_MAX_VERTICES];
+} scene_store_t;
+
+#endif

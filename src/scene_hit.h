@@ -1,0 +1,24 @@
+/* scene_hit.h - a ray against the whole scene: nearest hit and any hit. */
+#ifndef SCENE_HIT_H
+#define SCENE_HIT_H
+
+#include <stdbool.h>
+
+#include "geometry.h"
+#include "stats.h"
+
+enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON };
+
+typedef struct {
+    real_t t;
+    uint8_t kind;     /* enum prim_kind */
+    uint32_t index;   /* into the kind's table */
+} hit_t;
+
+/* Nearest hit with tmin < t < h->t (set h->t to the ray's far limit). */
+bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);
+
+/* Whether anything lies on the ray with tmin < t < tmax (shadow rays). */
+bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, rt_stats_t *st);
+
+#endif

@@ -1,0 +1,13 @@
+/* stats.h - ray and intersection-test counters (rt --stats). */
+#ifndef STATS_H
+#define STATS_H
+
+#include <stdint.h>
+
+typedef struct {
+    uint64_t eye_rays, eye_hits;
+    uint64_t reflect_rays, refract_rays, shadow_rays;
+    uint64_t tests_sphere, tests_cone, tests_polygon;
+} rt_stats_t;
+
+#endif

@@ -1,0 +1,115 @@
+/* trace.c - the recursive Whitted tracer; recursion depth <= RT_MAX_DEPTH. */
+#include "trace.h"
+
+#include "scene_hit.h"
+
+typedef struct {
+    vec3_t point;
+    vec3_t n;        /* shading normal, facing the incoming ray */
+    vec3_t n_out;    /* geometric normal, facing the incoming ray */
+    bool entering;   /* D . Ng < 0 */
+    const material_t *m;
+} surface_t;
+
+static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
+{
+    surface_t s;
+    vec3_t ng, n;
+    uint16_t mat;
+    s.point = ray_at(ray, h->t);
+    switch (h->kind) {
+    case PRIM_SPHERE:
+        ng = n = sphere_normal(&sc->spheres[h->index], s.point);
+        mat = sc->spheres[h->index].material;
+        break;
+    case PRIM_CONE:
+        ng = n = cone_normal(&sc->cones[h->index], s.point);
+        mat = sc->cones[h->index].material;
+        break;
+    default: {
+        const polygon_t *p = &sc->polygons[h->index];
+        ng = p->normal;
+        n = polygon_shading_normal(sc, p, s.point);
+        mat = p->material;
+        break;
+    }
+    }
+    s.entering = v3_dot(ray->dir, ng) < 0;
+    s.n_out = s.entering ? ng : v3_neg(ng);
+    s.n = v3_dot(n, ray->dir) < 0 ? n : v3_neg(n);
+    s.m = &sc->materials[mat];
+    return s;
+}
+
+static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
+{
+    const scene_t *sc = tr->scene;
+    const material_t *m = s->m;
+    real_t I = sc->light_intensity;
+    colour_t kdc = v3_scale(m->colour, m->kd);
+    colour_t c = v3_scale(kdc, I); /* ambient */
+    vec3_t from = v3_madd(s->point, RT_SURFACE_OFFSET, s->n_out);
+
+    for (uint32_t i = 0; i < sc->n_lights; i++) {
+        const light_t *l = &sc->lights[i];
+        vec3_t to_light = v3_sub(l->pos, s->point);
+        vec3_t ldir = v3_unit(to_light);
+        real_t ndl = v3_dot(s->n, ldir);
+        if (ndl <= 0)
+            continue;
+        ray_t shadow = { from, ldir };
+        tr->stats->shadow_rays++;
+        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, from)), tr->stats))
+            continue;
+        colour_t lit = v3_scale(kdc, ndl);
+        if (m->ks > 0) {
+            /* Phong: R = 2 (N.L) N - L against V = -D */
+            vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
+            real_t rv = -v3_dot(refl, ray->dir);
+            real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
+            lit = v3_add(lit, v3(spec, spec, spec));
+        }
+        c = v3_add(c, v3_scale(v3_mul(lit, l->colour), I));
+    }
+    return c;
+}
+
+colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth)
+{
+    const scene_t *sc = tr->scene;
+    hit_t h;
+    h.t = RT_T_FAR;
+    if (!scene_nearest(sc, ray, RT_T_MIN, &h, tr->stats))
+        return sc->background;
+    if (depth == 1)
+        tr->stats->eye_hits++;
+
+    surface_t s = surface_at(sc, &h, ray);
+    colour_t c = direct_light(tr, &s, ray);
+    if (depth >= tr->max_depth)
+        return c;
+
+    const material_t *m = s.m;
+    real_t cos_i = -v3_dot(ray->dir, s.n); /* > 0 */
+    if (m->ks > 0) {
+        ray_t refl;
+        refl.origin = v3_madd(s.point, RT_SURFACE_OFFSET, s.n_out);
+        refl.dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s.n));
+        tr->stats->reflect_rays++;
+        c = v3_add(c, v3_scale(trace_ray(tr, &refl, depth + 1), m->ks));
+    }
+    if (m->t > 0) {
+        /* Snell: eta = n1 / n2; no ray on total internal reflection */
+        real_t eta = s.entering ? r_div(R_ONE, m->ior) : m->ior;
+        real_t sin2_t = r_mul(r_mul(eta, eta), R_ONE - r_mul(cos_i, cos_i));
+        if (sin2_t <= R_ONE) {
+            real_t cos_t = r_sqrt(R_ONE - sin2_t);
+            ray_t refr;
+            refr.origin = v3_madd(s.point, -RT_SURFACE_OFFSET, s.n_out);
+            refr.dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s.n));
+            tr->stats->refract_rays++;
+            c = v3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1), m->t));
+        }
+    }
+    return c;
+}

@@ -1,0 +1,66 @@
+/* vec3.h - 3-vectors over real_t; dot products keep wide intermediates. */
+#ifndef VEC3_H
+#define VEC3_H
+
+#include "real.h"
+
+typedef struct {
+    real_t x, y, z;
+} vec3_t;
+
+typedef vec3_t colour_t; /* r, g, b in x, y, z */
+
+static inline vec3_t v3(real_t x, real_t y, real_t z)
+{
+    vec3_t v = { x, y, z };
+    return v;
+}
+static inline vec3_t v3_add(vec3_t a, vec3_t b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3_t v3_sub(vec3_t a, vec3_t b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3_t v3_neg(vec3_t a) { return v3(-a.x, -a.y, -a.z); }
+static inline vec3_t v3_scale(vec3_t a, real_t s)
+{
+    return v3(r_mul(a.x, s), r_mul(a.y, s), r_mul(a.z, s));
+}
+/* a + s * b, each component rounded once */
+static inline vec3_t v3_madd(vec3_t a, real_t s, vec3_t b)
+{
+    return v3(a.x + r_mul(s, b.x), a.y + r_mul(s, b.y), a.z + r_mul(s, b.z));
+}
+/* component-wise product (colours) */
+static inline vec3_t v3_mul(vec3_t a, vec3_t b)
+{
+    return v3(r_mul(a.x, b.x), r_mul(a.y, b.y), r_mul(a.z, b.z));
+}
+static inline real_wide_t v3_wdot(vec3_t a, vec3_t b)
+{
+    return r_wmul(a.x, b.x) + r_wmul(a.y, b.y) + r_wmul(a.z, b.z);
+}
+static inline real_t v3_dot(vec3_t a, vec3_t b) { return r_from_wide(v3_wdot(a, b)); }
+static inline real_t v3_length(vec3_t a) { return r_wsqrt(v3_wdot(a, a)); }
+static inline vec3_t v3_unit(vec3_t a)
+{
+    real_t u[3];
+    r_unit3(a.x, a.y, a.z, u);
+    return v3(u[0], u[1], u[2]);
+}
+/* unit vector along a x b, from the exact (wide) cross product */
+static inline vec3_t v3_unit_cross(vec3_t a, vec3_t b)
+{
+    real_t u[3];
+    r_unit3(r_wmul(a.y, b.z) - r_wmul(a.z, b.y), r_wmul(a.z, b.x) - r_wmul(a.x, b.z),
+            r_wmul(a.x, b.y) - r_wmul(a.y, b.x), u);
+    return v3(u[0], u[1], u[2]);
+}
+static inline vec3_t v3_cross(vec3_t a, vec3_t b)
+{
+    return v3(r_from_wide(r_wmul(a.y, b.z) - r_wmul(a.z, b.y)),
+              r_from_wide(r_wmul(a.z, b.x) - r_wmul(a.x, b.z)),
+              r_from_wide(r_wmul(a.x, b.y) - r_wmul(a.y, b.x)));
+}
+static inline real_t v3_axis(const vec3_t *v, unsigned axis)
+{
+    return axis == 0 ? v->x : axis == 1 ? v->y : v->z;
+}
+
+#endif
