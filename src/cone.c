@@ -18,6 +18,18 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
     return 0;
 }
 
+/* One Newton step on f(t) = |op + t dp|^2 - (rr + kdv t)^2, evaluated from
+ * the geometry at t: removes the error the closed-form roots pick up from
+ * rounded coefficients. */
+static real_t refine_root(vec3_t op, vec3_t dp, real_t rr, real_t kdv, real_t t)
+{
+    vec3_t q = v3_madd(op, t, dp);
+    real_t rad = rr + r_mul(kdv, t);
+    real_wide_t f = v3_wdot(q, q) - r_wmul(rad, rad);
+    real_wide_t slope = 2 * (v3_wdot(q, dp) - r_wmul(rad, kdv));
+    return slope != 0 ? t - r_wdiv(f, slope) : t;
+}
+
 /* With the ray in cone coordinates (height h along the axis, radial part
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
@@ -34,26 +46,43 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
 
     real_t a = r_from_wide(v3_wdot(dp, dp) - r_wmul(kdv, kdv));
     real_t b = r_from_wide(v3_wdot(op, dp) - r_wmul(rr, kdv));
-    real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
-    real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
-    if (disc < 0)
-        return false;
-    real_t h = r_wsqrt(disc);
-    /* the two roots without cancellation: q / a and c / q */
-    real_t q = b > 0 ? -(b + h) : h - b;
     real_t roots[2];
     int n = 0;
-    if (a != 0)
-        roots[n++] = r_div(q, a);
-    if (q != 0)
-        roots[n++] = r_div(cc, q);
+    if (r_abs(a) >= R_RATIO(1, 64)) {
+        /* Roots tv -+ sqrt(-f(tv) / a) around the parabola's vertex tv,
+         * with f evaluated there from the geometry: its rounding error
+         * scales with the distance to the surface, not to the origin. */
+        real_t tv = r_div(-b, a);
+        vec3_t q = v3_madd(op, tv, dp);
+        real_t rad = rr + r_mul(kdv, tv);
+        real_wide_t h2 = r_wdiv_real(r_wmul(rad, rad) - v3_wdot(q, q), a);
+        if (h2 < 0)
+            return false;
+        real_t h = r_wsqrt(h2);
+        roots[0] = tv - h;
+        roots[1] = tv + h;
+        n = 2;
+    } else {
+        /* Nearly parallel to a surface line: the cancellation-free pair
+         * q / a and c / q of a t^2 + 2 b t + c. */
+        real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
+        real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
+        if (disc < 0)
+            return false;
+        real_t h = r_wsqrt(disc);
+        real_t q = b > 0 ? -(b + h) : h - b;
+        if (a != 0)
+            roots[n++] = r_div(q, a);
+        if (q != 0)
+            roots[n++] = r_div(cc, q);
+    }
     if (n == 2 && roots[1] < roots[0]) {
         real_t tmp = roots[0];
         roots[0] = roots[1];
         roots[1] = tmp;
     }
     for (int i = 0; i < n; i++) {
-        real_t ti = roots[i];
+        real_t ti = refine_root(op, dp, rr, kdv, roots[i]);
         if (ti <= tmin || ti >= *t)
             continue;
         real_t hh = ov + r_mul(ti, dv);

@@ -56,6 +56,18 @@ fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
     return fx_sat64((n >= 0 ? n + h : n - h) / b);
 }
 
+fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
+{
+    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
+    if (a == 0) {
+        FX_ON_SATURATE();
+        return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
+    }
+    if (w < lim && w > -lim)
+        return (w * FX_ONE) / a;
+    return (w / a) * FX_ONE;
+}
+
 fx_t fx_sqrt(fx_t a)
 {
     if (a <= 0)

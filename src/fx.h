@@ -11,6 +11,7 @@
  *   fx_mul, fx_div        correctly rounded (<= 0.5 ulp)
  *   fx_wdiv               correctly rounded while |a| < 2^(62-F), else
  *                         both operands lose low bits first
+ *   fx_wdiv_fx            truncated to 2^-2F while |w| < 2^(62-F)
  *   fx_sqrt, fx_wsqrt     correctly rounded (<= 0.5 ulp)
  *   fx_unit3              each component within 1 ulp of the true unit vector
  *   fx_pow_unit(x, s)     within 2 ulp + 1e-7 * s relative of x^s for the
@@ -74,6 +75,7 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b); /* a / b of two Q.2F values, as Q.F */
+fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a); /* w / a, as Q.2F; a == 0 saturates */
 fx_t fx_sqrt(fx_t a);                 /* a < 0 gives 0 */
 fx_t fx_wsqrt(fx_wide_t w);           /* sqrt of a Q.2F value, as Q.F */
 fx_t fx_pow_unit(fx_t x, fx_shine_t s);/* x^s for x in [0,1]; 0 for x <= 0 */

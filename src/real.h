@@ -39,6 +39,7 @@ static inline real_wide_t r_to_wide(real_t a) { return a; }
 static inline real_t r_from_wide(real_wide_t w) { return w; }
 static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? __builtin_sqrt(w) : 0.0; }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
+static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
 static inline real_t r_pow_unit(real_t x, shine_t s)
 {
     return x <= 0 ? 0.0 : __builtin_pow(x, s);
@@ -91,6 +92,7 @@ static inline real_wide_t r_to_wide(real_t a) { return fx_to_wide(a); }
 static inline real_t r_from_wide(real_wide_t w) { return fx_from_wide(w); }
 static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
+static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])

@@ -18,8 +18,11 @@ bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t)
      * or behind the origin. */
     if (v - s->radius >= *t || v + s->radius <= tmin)
         return false;
-    /* disc = r^2 - |l_perp|^2, exact in the wide type before the sqrt */
-    real_wide_t disc = s->radius2 - v3_wdot(l, l) + r_wmul(v, v);
+    /* disc = r^2 - |l_perp|^2 from the perpendicular itself: its rounding
+     * error scales with the radius, not with the distance (v^2 - |l|^2
+     * would cancel catastrophically for a small, far sphere). */
+    vec3_t perp = v3_madd(l, -v, r->dir);
+    real_wide_t disc = s->radius2 - v3_wdot(perp, perp);
     if (disc < 0)
         return false;
     real_t h = r_wsqrt(disc);

@@ -1,0 +1,186 @@
+/*
+ * test_geometry.c - each NFF primitive's intersection and normal in the
+ * fixed build against the double build.
+ *
+ * For every primitive, random rays (from outside and from inside) go to
+ * both builds. Where both hit, t and the normal must agree within the
+ * tolerances below, which are relative to t because a Q16.16 unit
+ * direction is only good to ~1e-5 rad: over a distance t it moves the hit
+ * by ~1e-5 t, more at grazing angles, so rays with |D.N| < 0.25 are left
+ * out of the accuracy figures (the image tests cover them). A hit/miss or
+ * far-apart-t disagreement is excused only where the double result itself
+ * jumps when the ray is nudged by 1e-3 of the object's size (a silhouette
+ * or a rim); those must stay under MAX_MISMATCH of the rays.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "backend.h"
+#include "testlib.h"
+
+#define N_RAYS 20000
+#define TOL_T_ABS 2e-4   /* |t error| <= TOL_T_ABS + TOL_T_REL * t */
+#define TOL_T_REL 5e-4
+#define TOL_N 5e-3       /* per normal component */
+#define MIN_COS 0.25
+#define MAX_MISMATCH 0.002 /* share of rays whose hit/miss differs */
+
+static const char *const header =
+    "v\nfrom 0 -8 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 64 64\n"
+    "l 4 -6 5\nf 1 1 1 0.8 0.2 10 0 1\n";
+
+typedef struct {
+    const char *name;
+    const char *body;
+    double extent;   /* rays aim inside a cube of this half-size */
+} shape_t;
+
+static const shape_t shapes[] = {
+    { "sphere", "s 0.3 -0.2 0.1 1.5\n", 1.6 },
+    { "small sphere", "s 0.01 0.02 0 0.05\n", 0.06 },
+    { "cylinder", "c 0 0 -1 0.5 0.2 0.3 1.2 0.5\n", 1.3 },
+    { "cone", "c 0 0 -1 1.0 0 0 1 0.2\n", 1.2 },
+    { "cone to a point", "c -0.5 0 0 0.8 1 0.5 0.5 0\n", 1.2 },
+    { "triangle", "p 3\n-1 0 -1\n1 0.2 -1\n0 -0.3 1.2\n", 1.2 },
+    { "concave polygon",
+      "p 8\n0 0 1.5\n0.4 0 0.4\n1.5 0 0\n0.4 0 -0.4\n0 0 -1.5\n-0.4 0 -0.4\n-1.5 0 0\n-0.4 0 0.4\n", 1.5 },
+    { "patch triangle", "pp 3\n-1 0 -1 -0.3 -1 0\n1 0 -1 0.3 -1 0\n0 0.5 1 0 -1 0.4\n", 1.2 },
+    { "patch fan",
+      "pp 4\n-1 0 -1 -0.2 -1 -0.2\n1 0 -1 0.2 -1 -0.2\n1 0 1 0.2 -1 0.2\n-1 0 1 -0.2 -1 0.2\n", 1.2 },
+};
+
+static bool load_both(const shape_t *s)
+{
+    char text[2048];
+    rt_error_t err;
+    snprintf(text, sizeof text, "%s%s", header, s->body);
+    if (!rt_backend_fixed.load(text, strlen(text), &err) ||
+        !rt_backend_double.load(text, strlen(text), &err)) {
+        printf("  cannot load %s: line %u: %s\n", s->name, (unsigned)err.line, err.msg);
+        return false;
+    }
+    return true;
+}
+
+static void random_ray(double extent, bool inside, double o[3], double dir[3])
+{
+    double target[3];
+    for (int k = 0; k < 3; k++)
+        target[k] = tl_uniform(-extent, extent);
+    if (inside) {
+        for (int k = 0; k < 3; k++) {
+            o[k] = tl_uniform(-0.3, 0.3) * extent;
+            dir[k] = tl_uniform(-1, 1);
+        }
+    } else {
+        /* from a random point 4..8 extents away, towards the target */
+        double u[3], l = 0;
+        for (int k = 0; k < 3; k++) {
+            u[k] = tl_uniform(-1, 1);
+            l += u[k] * u[k];
+        }
+        double r = extent * tl_uniform(4, 8) / sqrt(l);
+        for (int k = 0; k < 3; k++) {
+            o[k] = u[k] * r;
+            dir[k] = target[k] - o[k];
+        }
+    }
+    double l = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
+    for (int k = 0; k < 3; k++)
+        dir[k] /= l;
+}
+
+/* Whether a nudge of the ray by `eps` makes the double result jump (hit
+ * to miss, or t by more than `dt`): the ray passes a silhouette or rim. */
+static bool near_discontinuity(const double o[3], const double dir[3], double eps, double dt)
+{
+    probe_hit_t h0, h;
+    bool base = rt_backend_double.probe(o, dir, &h0);
+    for (int k = 0; k < 3; k++) {
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double o2[3] = { o[0], o[1], o[2] };
+            o2[k] += sgn * eps;
+            bool hit = rt_backend_double.probe(o2, dir, &h);
+            if (hit != base || (hit && fabs(h.t - h0.t) > dt))
+                return true;
+            for (int m = 0; hit && m < 3; m++)
+                if (fabs(h.normal[m] - h0.normal[m]) > 0.1)
+                    return true; /* e.g. the tip of a cone */
+        }
+    }
+    return false;
+}
+
+static void test_shape(const shape_t *s)
+{
+    if (!load_both(s)) {
+        CHECK(0, "%s: scene loads in both builds", s->name);
+        return;
+    }
+    double worst_t = 0, worst_n = 0;
+    int hits = 0, mismatch = 0, unexcused = 0;
+    const double nudge = 1e-3 * s->extent;
+    for (int i = 0; i < N_RAYS; i++) {
+        double o[3], dir[3];
+        random_ray(s->extent, i % 4 == 3, o, dir);
+        probe_hit_t hf, hd;
+        bool f = rt_backend_fixed.probe(o, dir, &hf);
+        bool dd = rt_backend_double.probe(o, dir, &hd);
+        bool far_apart = f && fabs(hf.t - hd.t) > 0.05 * s->extent;
+        for (int k = 0; f && dd && k < 3; k++)
+            far_apart |= fabs(hf.normal[k] - hd.normal[k]) > 0.1;
+        if (f != dd || far_apart) {
+            mismatch++;
+            unexcused += !near_discontinuity(o, dir, nudge, 0.05 * s->extent);
+            continue;
+        }
+        if (!f)
+            continue;
+        hits++;
+        double cosine = fabs(hd.normal[0] * dir[0] + hd.normal[1] * dir[1] + hd.normal[2] * dir[2]);
+        if (cosine < MIN_COS)
+            continue;
+        double et = fabs(hf.t - hd.t) / (TOL_T_ABS + TOL_T_REL * hd.t);
+        worst_t = et > worst_t ? et : worst_t;
+        for (int k = 0; k < 3; k++) {
+            double en = fabs(hf.normal[k] - hd.normal[k]);
+            worst_n = en > worst_n ? en : worst_n;
+        }
+    }
+    CHECK(hits > N_RAYS / 10, "%s: %d of %d rays hit (the test exercises hits)", s->name, hits, N_RAYS);
+    CHECK(worst_t <= 1, "%s: max |t error| %.2f of the tolerance %.0e + %.0e t", s->name, worst_t,
+          TOL_T_ABS, TOL_T_REL);
+    CHECK(worst_n <= TOL_N, "%s: max normal component error %.2e (tolerance %.0e)", s->name, worst_n, TOL_N);
+    CHECK((double)mismatch / N_RAYS <= MAX_MISMATCH && unexcused == 0,
+          "%s: results differ for %d rays (%.3f%%, limit %.1f%%), %d of them away from a silhouette or rim",
+          s->name, mismatch, 100.0 * mismatch / N_RAYS, 100 * MAX_MISMATCH, unexcused);
+}
+
+static void test_camera(void)
+{
+    /* eye ray directions across a 512x512 grid, fixed against double */
+    const shape_t *s = &shapes[0];
+    if (!load_both(s))
+        return;
+    double worst = 0;
+    for (int j = 0; j < 512; j += 7)
+        for (int i = 0; i < 512; i += 5) {
+            double a[3], b[3];
+            rt_backend_fixed.eye_dir(512, 512, i, j, a);
+            rt_backend_double.eye_dir(512, 512, i, j, b);
+            for (int k = 0; k < 3; k++)
+                worst = fabs(a[k] - b[k]) > worst ? fabs(a[k] - b[k]) : worst;
+        }
+    /* one pixel at 512 px and 45 degrees is 1.6e-3 */
+    CHECK(worst < 3e-5, "camera: max eye-direction component error %.2e at 512x512 (bound 3e-5, 2%% of a pixel)",
+          worst);
+}
+
+int main(void)
+{
+    printf("test_geometry: fixed vs double, %d random rays per primitive\n", N_RAYS);
+    for (unsigned i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
+        test_shape(&shapes[i]);
+    test_camera();
+    return tl_summary("test_geometry");
+}
