@@ -27,7 +27,10 @@ static real_t refine_root(vec3_t op, vec3_t dp, real_t rr, real_t kdv, real_t t)
     real_t rad = rr + r_mul(kdv, t);
     real_wide_t f = v3_wdot(q, q) - r_wmul(rad, rad);
     real_wide_t slope = 2 * (v3_wdot(q, dp) - r_wmul(rad, kdv));
-    return slope != 0 ? t - r_wdiv(f, slope) : t;
+    if (slope == 0)
+        return t;
+    real_t step = r_wdiv(f, slope);
+    return r_abs(step) < R_ONE ? t - step : t; /* a huge step: keep t */
 }
 
 /* With the ray in cone coordinates (height h along the axis, radial part
@@ -82,6 +85,8 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         roots[1] = tmp;
     }
     for (int i = 0; i < n; i++) {
+        if (roots[i] <= tmin || roots[i] >= *t)
+            continue;
         real_t ti = refine_root(op, dp, rr, kdv, roots[i]);
         if (ti <= tmin || ti >= *t)
             continue;

@@ -23,6 +23,9 @@ static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin
 const char *sphere_init(sphere_t *s, vec3_t centre, real_t radius, uint16_t material);
 const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t r_apex,
                       uint16_t material);
+/* True when all the polygon's vertices lie on one line (it has no area and
+ * can never be hit; the SPD teapot has a few such triangles). */
+bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count);
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
                          uint32_t normals, uint16_t material);
 

@@ -92,12 +92,12 @@ static bool next_token(reader_t *r)
 {
     if (!skip_blank(r))
         return false;
-    r->tok_line = r->line;
-    if (r->p >= r->end) {
+    if (r->p >= r->end) { /* errors at the end point at the last token */
         r->tok = 0;
         r->tok_len = 0;
         return true;
     }
+    r->tok_line = r->line;
     r->tok = r->p;
     while (r->p < r->end && !is_space(*r->p) && *r->p != '#') {
         unsigned char c = (unsigned char)*r->p;
@@ -422,6 +422,10 @@ static bool read_polygon(reader_t *r, bool patch)
             r->st->normals[sc->n_normals + i] = nv;
         }
     }
+    if (polygon_is_flat(r->st->vertices, sc->n_vertices, (uint16_t)n)) {
+        sc->n_flat_skipped++; /* invisible: nothing to intersect */
+        return true;
+    }
     const char *why = polygon_init(&r->st->polygons[sc->n_polygons], r->st->vertices,
                                    sc->n_vertices, (uint16_t)n,
                                    patch ? sc->n_normals : POLY_NO_NORMALS, r->material);
@@ -475,6 +479,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     r.p = text;
     r.end = text + len;
     r.line = 1;
+    r.tok_line = 1;
     r.st = store;
     r.err = err;
     scene_t *sc = &store->scene;
@@ -498,7 +503,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
             return false;
     }
     if (!r.have_view)
-        return fail(&r, r.line, "no 'v' viewpoint in the file");
+        return fail(&r, r.tok_line, "no 'v' viewpoint in the file");
     uint32_t n = sc->n_lights;
     sc->light_intensity = n ? r_div(r_sqrt(r_from_int((int32_t)n)), r_from_int(2 * (int32_t)n)) : 0;
     return true;

@@ -1,6 +1,26 @@
 /* polygon.c - the 'p' (polygon) and 'pp' (patch) primitives. */
 #include "geometry.h"
 
+static bool is_zero(real_wide_t x, real_wide_t y, real_wide_t z) { return x == 0 && y == 0 && z == 0; }
+
+bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count)
+{
+    const vec3_t *v = &pool[first];
+    uint16_t k = 1;
+    while (k < count && v[k].x == v[0].x && v[k].y == v[0].y && v[k].z == v[0].z)
+        k++;
+    if (k == count)
+        return true;
+    vec3_t a = v3_sub(v[k], v[0]);
+    for (uint16_t i = k + 1; i < count; i++) {
+        vec3_t b = v3_sub(v[i], v[0]);
+        if (!is_zero(r_wmul(a.y, b.z) - r_wmul(a.z, b.y), r_wmul(a.z, b.x) - r_wmul(a.x, b.z),
+                     r_wmul(a.x, b.y) - r_wmul(a.y, b.x)))
+            return false;
+    }
+    return true;
+}
+
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
                          uint32_t normals, uint16_t material)
 {

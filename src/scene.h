@@ -79,6 +79,7 @@ typedef struct {
 
     uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
     uint32_t n_vertices, n_normals;
+    uint32_t n_flat_skipped;  /* zero-area polygons dropped by the reader */
 } scene_t;
 
 /* RAM tables at the configured capacities, for scenes read at run time. */

@@ -39,6 +39,8 @@ static uint32_t primitive_count(void)
     return s->n_spheres + s->n_cones + s->n_polygons;
 }
 
+static uint32_t flat_skipped(void) { return store.scene.n_flat_skipped; }
+
 static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     return rt_render(&store.scene, opts, sink, stats, err);
@@ -83,5 +85,5 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    R_BACKEND_NAME, load, resolution, primitive_count, render, probe, eye_dir,
+    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, render, probe, eye_dir,
 };

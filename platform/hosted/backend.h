@@ -31,6 +31,7 @@ typedef struct {
     bool (*load)(const char *text, size_t len, rt_error_t *err);
     void (*resolution)(uint16_t *width, uint16_t *height);
     uint32_t (*primitive_count)(void);
+    uint32_t (*flat_skipped)(void); /* zero-area polygons the reader dropped */
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
     /* Nearest hit of one ray against the loaded scene (for tests). */
     bool (*probe)(const double origin[3], const double dir[3], probe_hit_t *hit);

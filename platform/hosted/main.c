@@ -16,7 +16,7 @@
 
 static const char usage_text[] =
     "usage: rt SCENE.nff -o OUT.png|OUT.ppm [options]\n"
-    "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT]\n"
+    "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N]\n"
     "\n"
     "render options:\n"
     "  -o, --output FILE   output image; the format follows the extension\n"
@@ -29,7 +29,10 @@ static const char usage_text[] =
     "  --quiet             no progress indicator\n"
     "compare options:\n"
     "  --psnr-min DB       exit 1 if PSNR is below DB\n"
-    "  --max-over8 PCT     exit 1 if more than PCT %% of pixels differ by > 8/255\n";
+    "  --max-over8 PCT     exit 1 if more than PCT %% of pixels differ by > 8/255\n"
+    "  --max-error N       exit 1 if any channel differs by more than N/255\n"
+    "\n"
+    "exit status: 0 success, 1 output or threshold failure, 2 bad input or usage\n";
 
 static int usage_error(const char *fmt, const char *arg)
 {
@@ -249,6 +252,10 @@ static int cmd_render(int argc, char **argv)
         return EXIT_BAD_INPUT;
     }
 
+    if (be->flat_skipped())
+        fprintf(stderr, "%s: note: skipped %u zero-area polygon(s)\n", scene_path,
+                (unsigned)be->flat_skipped());
+
     static host_sink_t hs;
     hs.sink = (fb_sink_t){ .format = format,
                            .band = { hs.band_a, hs.band_b },
@@ -283,15 +290,15 @@ static int cmd_render(int argc, char **argv)
 static int cmd_compare(int argc, char **argv)
 {
     const char *paths[2] = { NULL, NULL };
-    double psnr_min = -1, max_over8 = -1;
+    double psnr_min = -1, max_over8 = -1, max_error = -1;
     int n = 0;
     for (int i = 2; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--psnr-min") || !strcmp(a, "--max-over8")) {
+        if (!strcmp(a, "--psnr-min") || !strcmp(a, "--max-over8") || !strcmp(a, "--max-error")) {
             double v;
-            if (i + 1 >= argc || !parse_double(argv[i + 1], &v))
-                return usage_error("%s needs a number", a);
-            *(a[2] == 'p' ? &psnr_min : &max_over8) = v;
+            if (i + 1 >= argc || !parse_double(argv[i + 1], &v) || v < 0)
+                return usage_error("%s needs a non-negative number", a);
+            *(!strcmp(a, "--psnr-min") ? &psnr_min : !strcmp(a, "--max-over8") ? &max_over8 : &max_error) = v;
             i++;
         } else if (a[0] == '-' && a[1] != '\0') {
             return usage_error("unknown option '%s'", a);
@@ -323,7 +330,8 @@ static int cmd_compare(int argc, char **argv)
     printf("psnr %.2f dB  max-error %d  over2 %.3f%%  over8 %.3f%%\n", d.psnr_db, d.max_err,
            100 * d.share_over2, 100 * d.share_over8);
     bool fail = (psnr_min >= 0 && d.psnr_db < psnr_min) ||
-                (max_over8 >= 0 && 100 * d.share_over8 > max_over8);
+                (max_over8 >= 0 && 100 * d.share_over8 > max_over8) ||
+                (max_error >= 0 && d.max_err > max_error);
     return fail ? 1 : 0;
 }
 

@@ -1,0 +1,19 @@
+#!/bin/sh
+# Installs the Debian packages the build and tests need, when missing.
+set -e
+need=""
+command -v cc >/dev/null 2>&1 || need="$need gcc"
+command -v make >/dev/null 2>&1 || need="$need make"
+command -v ld >/dev/null 2>&1 || need="$need binutils"
+[ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
+# The sanitiser runtimes come with gcc's libasan/libubsan on Debian.
+if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
+    need="$need libasan8 libubsan1"
+fi
+if [ -n "$need" ]; then
+    echo "installing:$need"
+    SUDO=""
+    [ "$(id -u)" = 0 ] || SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $need >/dev/null
+fi

@@ -1,0 +1,48 @@
+#!/bin/sh
+# Image tests: every SPD size-1 and size-2 scene rendered at 128x128 by the
+# fixed and the double build; the fixed image must reach PSNR >= 40 dB
+# against double with at most 0.5% of pixels off by more than 8/255.
+# Prints one line of figures per scene and "name: N passed, M failed".
+RT=${1:-build/asan/rt}
+OUT=${2:-build/test-images}
+SIZE=128x128
+PSNR_MIN=40
+OVER8_MAX=0.5
+mkdir -p "$OUT"
+pass=0 fail=0
+check() { # name, command...
+    name=$1; shift
+    if out=$("$@" 2>&1); then
+        pass=$((pass + 1)); printf '  ok    %-28s %s\n' "$name" "$out"
+    else
+        fail=$((fail + 1)); printf '  FAIL  %-28s %s\n' "$name" "$out"
+    fi
+}
+echo "image tests: fixed vs double at $SIZE (PSNR >= $PSNR_MIN dB, <= $OVER8_MAX% of pixels off by > 8/255)"
+for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2; do
+    f="$OUT/$s-fixed.png" d="$OUT/$s-double.png"
+    if "$RT" scenes/spd/$s.nff -o "$f" --size $SIZE --fixed --quiet 2>"$OUT/$s.err" &&
+       "$RT" scenes/spd/$s.nff -o "$d" --size $SIZE --double --quiet 2>>"$OUT/$s.err"; then
+        check "$s" "$RT" compare "$f" "$d" --psnr-min $PSNR_MIN --max-over8 $OVER8_MAX
+    else
+        fail=$((fail + 1)); printf '  FAIL  %-28s render failed: %s\n' "$s" "$(cat "$OUT/$s.err")"
+    fi
+done
+
+# RGB565 framebuffer: the same render through the 16-bit format may only
+# differ by the 5/6-bit quantisation (at most 255/31/2 -> 5 levels).
+if "$RT" scenes/spd/balls-1.nff -o "$OUT/balls-1-565.png" --size 64x48 --format rgb565 --quiet &&
+   "$RT" scenes/spd/balls-1.nff -o "$OUT/balls-1-888.png" --size 64x48 --quiet; then
+    check "rgb565 vs rgb888" "$RT" compare "$OUT/balls-1-565.png" "$OUT/balls-1-888.png" --max-error 5
+else
+    fail=$((fail + 1)); echo "  FAIL  rgb565 render failed"
+fi
+# Every SPD scene, the "default" sizes included, loads within the hosted
+# capacities and renders (tiny, to keep the brute-force time down).
+for f in scenes/spd/*.nff; do
+    s=$(basename "$f" .nff)
+    case $s in *-default) ;; *) continue ;; esac
+    check "$s renders (16x16)" "$RT" "$f" -o "$OUT/$s.png" --size 16x16 --quiet
+done
+echo "image-tests: $pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,26 @@
+#!/bin/sh
+# Runs every test suite against one build variant (default build/asan) and
+# closes with the totals: "N passed, M failed".
+B=${1:-build/asan}
+total_pass=0 total_fail=0
+run() {
+    log=$("$@" 2>&1)
+    printf '%s\n' "$log"
+    line=$(printf '%s\n' "$log" | grep -E '^[a-z_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
+    if [ -z "$line" ]; then
+        echo "  FAIL  $* printed no summary (crashed?)"
+        total_fail=$((total_fail + 1))
+        return
+    fi
+    p=$(echo "$line" | sed -E 's/.*: ([0-9]+) passed.*/\1/')
+    f=$(echo "$line" | sed -E 's/.* ([0-9]+) failed$/\1/')
+    total_pass=$((total_pass + p))
+    total_fail=$((total_fail + f))
+}
+run "$B/test_fx"
+run "$B/test_geometry"
+run tests/image-tests.sh "$B/rt" "$B/test-images"
+run tests/cli-tests.sh "$B/rt" "$B/test-cli"
+echo
+echo "$total_pass passed, $total_fail failed"
+[ $total_fail -eq 0 ]
