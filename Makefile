@@ -75,7 +75,8 @@ build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
 
-run: build/host/rt
+run: deps
+	$(MAKE) build/host/rt
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE))).png --fixed --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --stats
 	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE)))-double.png --double --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --quiet
@@ -83,7 +84,7 @@ run: build/host/rt
 	@build/host/rt compare out/$(basename $(notdir $(SCENE))).png out/$(basename $(notdir $(SCENE)))-double.png
 
 deps:
-	@tests/ensure-deps.sh
+	@sh platform/ensure-deps.sh
 
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/rt
 
