@@ -1,16 +1,22 @@
-# Fixed-point Whitted ray tracer: host build, tests, and the default render.
+# Fixed-point Whitted ray tracer: host build, board firmware, tests.
 #
 #   make            build the hosted CLI (build/host/rt)
-#   make run        render the default scene and report its error vs double
+#   make run        render SCENE on the emulated board (QEMU mps2-an385),
+#                   write out/<scene>.png, print instructions per pixel and
+#                   the error against the host's double build
+#   make host-run   the same render on the host, fixed and double
+#   make size       flash/RAM by section and stack use of the firmware
 #   make test       install missing packages, build, run every test
+#   make bench      board instructions per pixel, fixed vs soft-float double
 #
 # The core (src/) is compiled once per numeric backend; each copy is
 # partially linked with platform/hosted/backend.c into one object that
 # exports only its rt_backend_t, so `rt` carries both builds.
 
 SCENE ?= scenes/spd/balls-2.nff
-SIZE  ?=
+SIZE  ?= 128x128
 DEPTH ?= 5
+FORMAT ?= rgb888
 
 CC      ?= cc
 LD      ?= ld
@@ -22,7 +28,6 @@ HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 
 
 WARN      = -std=c11 -Wall -Wextra -Werror
 CORE_SRC  = $(wildcard src/*.c)
-HOST_SRC  = platform/hosted/main.c platform/hosted/image.c
 HOST_INC  = -Isrc -Iplatform/hosted
 
 # Two host variants: optimised, and sanitised (what the tests run).
@@ -32,7 +37,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run test clean deps
+.PHONY: all run host-run test clean deps size bench firmware
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) RT_BACKEND_DOUBLE value
@@ -59,7 +64,7 @@ build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard s
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/core-fixed.o build/$(1)/core-double.o
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lz -lm
 
 build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o tests/testlib.h
@@ -75,13 +80,17 @@ build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
 
-run: deps
+NAME := $(basename $(notdir $(SCENE)))
+
+host-run: deps
 	$(MAKE) build/host/rt
 	@mkdir -p out
-	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE))).png --fixed --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --stats
-	build/host/rt $(SCENE) -o out/$(basename $(notdir $(SCENE)))-double.png --double --depth $(DEPTH) $(if $(SIZE),--size $(SIZE)) --quiet
+	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
+	build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
 	@printf 'fixed vs double: '
-	@build/host/rt compare out/$(basename $(notdir $(SCENE))).png out/$(basename $(notdir $(SCENE)))-double.png
+	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
+
+include platform/mps2-an385/board.mk
 
 deps:
 	@sh platform/ensure-deps.sh

@@ -56,6 +56,14 @@
 #define RT_MAX_HEIGHT 4096
 #endif
 
+/* Keeps a helper's locals out of the recursive trace_ray frame, which is
+ * what bounds the stack (RT_MAX_DEPTH frames of it). */
+#if defined(__GNUC__)
+#define RT_NOINLINE __attribute__((noinline))
+#else
+#define RT_NOINLINE
+#endif
+
 _Static_assert(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16, "RT_MAX_DEPTH out of 1..16");
 _Static_assert(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24, "FX_FRAC_BITS out of 8..24");
 _Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POLY_VERTS out of 3..65535");

@@ -11,7 +11,7 @@ typedef struct {
     const material_t *m;
 } surface_t;
 
-static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
+RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
 {
     surface_t s;
     vec3_t ng, n;
@@ -41,7 +41,7 @@ static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
     return s;
 }
 
-static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
+RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
 {
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;

@@ -11,12 +11,14 @@
 
 #include "backend.h"
 #include "image.h"
+#include "receive.h"
 
 #define EXIT_BAD_INPUT 2
 
 static const char usage_text[] =
     "usage: rt SCENE.nff -o OUT.png|OUT.ppm [options]\n"
     "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N]\n"
+    "       rt receive [STREAM] -o OUT.png   (the board's UART stream, stdin by default)\n"
     "\n"
     "render options:\n"
     "  -o, --output FILE   output image; the format follows the extension\n"
@@ -343,5 +345,7 @@ int main(int argc, char **argv)
     }
     if (argc >= 2 && !strcmp(argv[1], "compare"))
         return cmd_compare(argc, argv);
+    if (argc >= 2 && !strcmp(argv[1], "receive"))
+        return cmd_receive(argc, argv);
     return cmd_render(argc, argv);
 }

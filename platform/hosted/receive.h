@@ -1,0 +1,7 @@
+/* receive.h - `rt receive`: the board's framed UART stream to an image. */
+#ifndef RECEIVE_H
+#define RECEIVE_H
+
+int cmd_receive(int argc, char **argv);
+
+#endif

@@ -1,0 +1,262 @@
+/*
+ * scenec.c - the scene compiler: NFF in, C out, for firmware that carries
+ * its scene in flash.
+ *
+ *   rt-scenec SCENE.nff -o scene_data.c --header scene_data.h [--text]
+ *
+ * It reads the scene with the same reader and capacities as the firmware's
+ * core (so over-capacity scenes fail here, with the same message), and
+ * writes the tables already converted to the fixed format, with every
+ * per-primitive constant precomputed. The header says what the scene
+ * contains, so the firmware can be built for exactly that scene.
+ * --text instead embeds the NFF text, for builds that read it at boot.
+ */
+#include <errno.h>
+#include <inttypes.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "nff.h"
+
+#if RT_BACKEND_DOUBLE
+#error "the scene compiler emits fixed-point tables: build it with RT_BACKEND_DOUBLE=0"
+#endif
+
+static scene_store_t store;
+
+static void emit_vec(FILE *f, vec3_t v) { fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }", v.x, v.y, v.z); }
+
+static void emit_wide(FILE *f, real_wide_t w) { fprintf(f, "INT64_C(%" PRId64 ")", w); }
+
+static void emit_tables(FILE *f, const scene_t *sc)
+{
+    fprintf(f, "#define TABLE __attribute__((section(\".scene.tables\")))\n\n");
+    if (sc->n_materials) {
+        fprintf(f, "static const material_t materials[%" PRIu32 "] TABLE = {\n", sc->n_materials);
+        for (uint32_t i = 0; i < sc->n_materials; i++) {
+            const material_t *m = &sc->materials[i];
+            fprintf(f, "    { .colour = ");
+            emit_vec(f, m->colour);
+            fprintf(f, ", .kd = %" PRId32 ", .ks = %" PRId32 ", .t = %" PRId32 ", .ior = %" PRId32
+                       ", .shine = %" PRIu32 "u },\n",
+                    m->kd, m->ks, m->t, m->ior, m->shine);
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_lights) {
+        fprintf(f, "static const light_t lights[%" PRIu32 "] TABLE = {\n", sc->n_lights);
+        for (uint32_t i = 0; i < sc->n_lights; i++) {
+            fprintf(f, "    { .pos = ");
+            emit_vec(f, sc->lights[i].pos);
+            fprintf(f, ", .colour = ");
+            emit_vec(f, sc->lights[i].colour);
+            fprintf(f, " },\n");
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_spheres) {
+        fprintf(f, "static const sphere_t spheres[%" PRIu32 "] TABLE = {\n", sc->n_spheres);
+        for (uint32_t i = 0; i < sc->n_spheres; i++) {
+            const sphere_t *s = &sc->spheres[i];
+            fprintf(f, "    { .centre = ");
+            emit_vec(f, s->centre);
+            fprintf(f, ", .radius = %" PRId32 ", .radius2 = ", s->radius);
+            emit_wide(f, s->radius2);
+            fprintf(f, ", .material = %u },\n", (unsigned)s->material);
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_cones) {
+        fprintf(f, "static const cone_t cones[%" PRIu32 "] TABLE = {\n", sc->n_cones);
+        for (uint32_t i = 0; i < sc->n_cones; i++) {
+            const cone_t *c = &sc->cones[i];
+            fprintf(f, "    { .base = ");
+            emit_vec(f, c->base);
+            fprintf(f, ", .axis = ");
+            emit_vec(f, c->axis);
+            fprintf(f, ", .height = %" PRId32 ", .r0 = %" PRId32 ", .slope = %" PRId32 ", .material = %u },\n",
+                    c->height, c->r0, c->slope, (unsigned)c->material);
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_polygons) {
+        fprintf(f, "static const polygon_t polygons[%" PRIu32 "] TABLE = {\n", sc->n_polygons);
+        for (uint32_t i = 0; i < sc->n_polygons; i++) {
+            const polygon_t *p = &sc->polygons[i];
+            fprintf(f, "    { .normal = ");
+            emit_vec(f, p->normal);
+            fprintf(f, ", .offset = %" PRId32 ", .box_min = ", p->offset);
+            emit_vec(f, p->box_min);
+            fprintf(f, ", .box_max = ");
+            emit_vec(f, p->box_max);
+            fprintf(f, ",\n      .first = %" PRIu32 ", .normals = %" PRIu32 "u, .count = %u, .material = %u, .drop_axis = %u },\n",
+                    p->first, p->normals, (unsigned)p->count, (unsigned)p->material, (unsigned)p->drop_axis);
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_vertices) {
+        fprintf(f, "static const vec3_t vertices[%" PRIu32 "] TABLE = {\n", sc->n_vertices);
+        for (uint32_t i = 0; i < sc->n_vertices; i++) {
+            fprintf(f, "    ");
+            emit_vec(f, sc->vertices[i]);
+            fprintf(f, ",\n");
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_normals) {
+        fprintf(f, "static const vec3_t normals[%" PRIu32 "] TABLE = {\n", sc->n_normals);
+        for (uint32_t i = 0; i < sc->n_normals; i++) {
+            fprintf(f, "    ");
+            emit_vec(f, sc->normals[i]);
+            fprintf(f, ",\n");
+        }
+        fprintf(f, "};\n\n");
+    }
+
+    const view_t *v = &sc->view;
+    fprintf(f, "const scene_t rt_scene TABLE = {\n    .view = { .from = ");
+    emit_vec(f, v->from);
+    fprintf(f, ", .at = ");
+    emit_vec(f, v->at);
+    fprintf(f, ", .up = ");
+    emit_vec(f, v->up);
+    fprintf(f, ", .angle = %" PRId32 " },\n    .background = ", v->angle);
+    emit_vec(f, sc->background);
+    fprintf(f, ",\n    .width = %u, .height = %u, .light_intensity = %" PRId32 ",\n", (unsigned)sc->width,
+            (unsigned)sc->height, sc->light_intensity);
+    fprintf(f, "    .materials = %s, .lights = %s, .spheres = %s, .cones = %s,\n",
+            sc->n_materials ? "materials" : "0", sc->n_lights ? "lights" : "0",
+            sc->n_spheres ? "spheres" : "0", sc->n_cones ? "cones" : "0");
+    fprintf(f, "    .polygons = %s, .vertices = %s, .normals = %s,\n", sc->n_polygons ? "polygons" : "0",
+            sc->n_vertices ? "vertices" : "0", sc->n_normals ? "normals" : "0");
+    fprintf(f, "    .n_materials = %" PRIu32 ", .n_lights = %" PRIu32 ", .n_spheres = %" PRIu32
+               ", .n_cones = %" PRIu32 ", .n_polygons = %" PRIu32 ",\n",
+            sc->n_materials, sc->n_lights, sc->n_spheres, sc->n_cones, sc->n_polygons);
+    fprintf(f, "    .n_vertices = %" PRIu32 ", .n_normals = %" PRIu32 ", .n_flat_skipped = %" PRIu32 ",\n};\n",
+            sc->n_vertices, sc->n_normals, sc->n_flat_skipped);
+}
+
+static void emit_text(FILE *f, const char *text, size_t len)
+{
+    fprintf(f, "#include <stddef.h>\n\nconst char rt_scene_text[] = {");
+    for (size_t i = 0; i < len; i++)
+        fprintf(f, "%s%d,", i % 20 ? " " : "\n    ", (unsigned char)text[i]);
+    fprintf(f, "\n};\nconst size_t rt_scene_text_len = %zu;\n", len);
+}
+
+/* What the scene uses, for building firmware for exactly that scene. */
+static void emit_header(FILE *f, const scene_t *sc, const char *src)
+{
+    bool refraction = false, reflection = false, specular = false, patches = false;
+    for (uint32_t i = 0; i < sc->n_materials; i++) {
+        refraction |= sc->materials[i].t > 0;
+        reflection |= sc->materials[i].ks > 0;
+        specular |= sc->materials[i].ks > 0 && sc->n_lights > 0;
+    }
+    for (uint32_t i = 0; i < sc->n_polygons; i++)
+        patches |= sc->polygons[i].normals != POLY_NO_NORMALS;
+    fprintf(f, "/* Generated by rt-scenec from %s: do not edit. */\n", src);
+    fprintf(f, "#ifndef SCENE_DATA_H\n#define SCENE_DATA_H\n\n");
+    fprintf(f, "#define SCENE_WIDTH %u\n#define SCENE_HEIGHT %u\n", (unsigned)sc->width, (unsigned)sc->height);
+    fprintf(f, "#define SCENE_N_MATERIALS %" PRIu32 "\n#define SCENE_N_LIGHTS %" PRIu32 "\n", sc->n_materials,
+            sc->n_lights);
+    fprintf(f, "#define SCENE_N_SPHERES %" PRIu32 "\n#define SCENE_N_CONES %" PRIu32 "\n", sc->n_spheres,
+            sc->n_cones);
+    fprintf(f, "#define SCENE_N_POLYGONS %" PRIu32 "\n#define SCENE_N_VERTICES %" PRIu32 "\n\n",
+            sc->n_polygons, sc->n_vertices);
+    fprintf(f, "#define SCENE_USES_SPHERES %d\n", sc->n_spheres > 0);
+    fprintf(f, "#define SCENE_USES_CONES %d\n", sc->n_cones > 0);
+    fprintf(f, "#define SCENE_USES_POLYGONS %d\n", sc->n_polygons > 0);
+    fprintf(f, "#define SCENE_USES_PATCHES %d\n", patches);
+    fprintf(f, "#define SCENE_USES_SHADOWS %d\n", sc->n_lights > 0);
+    fprintf(f, "#define SCENE_USES_SPECULAR %d\n", specular);
+    fprintf(f, "#define SCENE_USES_REFLECTION %d\n", reflection);
+    fprintf(f, "#define SCENE_USES_REFRACTION %d\n\n#endif\n", refraction);
+}
+
+static FILE *open_out(const char *path)
+{
+    FILE *f = fopen(path, "w");
+    if (!f)
+        fprintf(stderr, "rt-scenec: cannot open '%s' for writing: %s\n", path, strerror(errno));
+    return f;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL, *hdr = NULL;
+    bool text_mode = false;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "-o") && i + 1 < argc)
+            out = argv[++i];
+        else if (!strcmp(argv[i], "--header") && i + 1 < argc)
+            hdr = argv[++i];
+        else if (!strcmp(argv[i], "--text"))
+            text_mode = true;
+        else if (argv[i][0] != '-' && !in)
+            in = argv[i];
+        else {
+            fprintf(stderr, "rt-scenec: unexpected argument '%s'\n"
+                            "usage: rt-scenec SCENE.nff -o OUT.c [--header OUT.h] [--text]\n", argv[i]);
+            return 2;
+        }
+    }
+    if (!in || !out) {
+        fprintf(stderr, "usage: rt-scenec SCENE.nff -o OUT.c [--header OUT.h] [--text]\n");
+        return 2;
+    }
+    FILE *fin = fopen(in, "rb");
+    if (!fin) {
+        fprintf(stderr, "%s: cannot open: %s\n", in, strerror(errno));
+        return 2;
+    }
+    size_t cap = 1 << 16, len = 0;
+    char *text = malloc(cap);
+    size_t got;
+    while (text && (got = fread(text + len, 1, cap - len, fin)) > 0) {
+        len += got;
+        if (len == cap)
+            text = realloc(text, cap *= 2);
+    }
+    int read_failed = ferror(fin);
+    fclose(fin);
+    if (!text || read_failed) {
+        fprintf(stderr, "%s: cannot read\n", in);
+        return 2;
+    }
+    rt_error_t err;
+    if (!nff_read(text, len, &store, &err)) {
+        if (err.line)
+            fprintf(stderr, "%s:%u: %s\n", in, (unsigned)err.line, err.msg);
+        else
+            fprintf(stderr, "%s: %s\n", in, err.msg);
+        free(text);
+        return 2;
+    }
+    FILE *f = open_out(out);
+    if (!f)
+        return 1;
+    fprintf(f, "/* Generated by rt-scenec from %s: do not edit. */\n", in);
+    if (text_mode) {
+        emit_text(f, text, len);
+    } else {
+        fprintf(f, "#include <stdint.h>\n\n#include \"scene.h\"\n\n");
+        fprintf(f, "#if RT_BACKEND_DOUBLE || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
+        fprintf(f, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",
+                FX_FRAC_BITS);
+        emit_tables(f, &store.scene);
+    }
+    free(text);
+    if (fclose(f) != 0)
+        return 1;
+    if (hdr) {
+        FILE *h = open_out(hdr);
+        if (!h)
+            return 1;
+        emit_header(h, &store.scene, in);
+        if (fclose(h) != 0)
+            return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,98 @@
+# board.mk - firmware for the ARM MPS2 AN385 (Cortex-M3, no FPU) under
+# QEMU. Included by the top-level Makefile; SCENE, SIZE, DEPTH, FORMAT
+# and NAME come from there.
+#
+# Each (scene, size, depth, format) gets its own build folder: the scene
+# compiler turns the NFF into const tables in flash plus a header saying
+# what the scene uses, and the firmware is built for exactly that.
+
+ARM_CC    ?= arm-none-eabi-gcc
+ARM_NM    ?= arm-none-eabi-nm
+ARM_SIZE  ?= arm-none-eabi-size
+BOARD_DIR := platform/mps2-an385
+
+# Flash tables make these limits of the scene compiler, not of RAM.
+BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
+             -DRT_MAX_VERTICES=32768 -DRT_MAX_LIGHTS=16 -DRT_MAX_MATERIALS=128
+
+W := $(word 1,$(subst x, ,$(SIZE)))
+H := $(word 2,$(subst x, ,$(SIZE)))
+FMT_MACRO := $(if $(filter rgb565,$(FORMAT)),FB_RGB565,FB_RGB888)
+FW_DIR := build/board/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)
+
+ARM_ARCH = -mcpu=cortex-m3 -mthumb
+BOARD_CFLAGS = $(WARN) -ffreestanding $(ARM_ARCH) -O2 -g -ffunction-sections -fdata-sections \
+               -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
+               $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
+               -DBOARD_FORMAT=$(FMT_MACRO) -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
+BOARD_LDFLAGS = $(ARM_ARCH) -nostdlib -nostartfiles -T linker/mps2-an385.ld -Wl,--gc-sections
+
+PORT_SRC  = startup.c uart.c icount.c semihost.c libc_min.c fb_uart.c main.c
+CORE_NAMES = $(notdir $(CORE_SRC:.c=))
+PORT_NAMES = $(PORT_SRC:.c=)
+
+QEMU_FLAGS = -M mps2-an385 -nographic -monitor none \
+             -semihosting-config enable=on,target=native -icount shift=0
+
+# ---- scene compiler (a host tool, with the firmware's capacities) -------
+
+build/scenec/%.o: src/%.c $(wildcard src/*.h) $(BOARD_DIR)/board.mk
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) -DRT_BACKEND_DOUBLE=0 -Isrc -c $< -o $@
+
+build/scenec/rt-scenec: platform/hosted/scenec.c $(patsubst %,build/scenec/%.o,$(CORE_NAMES))
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) -Isrc -o $@ $^
+
+# ---- firmware ------------------------------------------------------------
+
+$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h: $(SCENE) build/scenec/rt-scenec
+	@mkdir -p $(@D)
+	build/scenec/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
+
+$(FW_DIR)/scene_text_data.c: $(SCENE) build/scenec/rt-scenec
+	@mkdir -p $(@D)
+	build/scenec/rt-scenec $(SCENE) -o $@ --text
+
+# $(1) backend name, $(2) RT_BACKEND_DOUBLE
+define firmware_objs
+$(FW_DIR)/$(1)/%.o: src/%.c $(wildcard src/*.h) $(FW_DIR)/scene_data.h
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+
+$(FW_DIR)/$(1)/%.o: $(BOARD_DIR)/%.c $(wildcard $(BOARD_DIR)/*.h) $(wildcard src/*.h) $(FW_DIR)/scene_data.h
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+
+$(FW_DIR)/$(1)/%.o: $(FW_DIR)/%.c $(wildcard src/*.h)
+	@mkdir -p $$(@D)
+	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+endef
+$(eval $(call firmware_objs,fixed,0))
+$(eval $(call firmware_objs,double,1))
+
+FIXED_OBJS = $(patsubst %,$(FW_DIR)/fixed/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_flash scene_data)
+DOUBLE_OBJS = $(patsubst %,$(FW_DIR)/double/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_text scene_text_data)
+
+$(FW_DIR)/fixed.elf: $(FIXED_OBJS) linker/mps2-an385.ld
+	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,-Map=$(FW_DIR)/fixed.map -o $@ $(FIXED_OBJS) -lgcc
+
+# The same core with the double backend, as soft-float: what a user
+# without this project would run. It reads the embedded NFF text at boot.
+$(FW_DIR)/double.elf: $(DOUBLE_OBJS) linker/mps2-an385.ld
+	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,-Map=$(FW_DIR)/double.map -o $@ $(DOUBLE_OBJS) -lm -lc -lgcc
+
+firmware: $(FW_DIR)/fixed.elf
+
+# ---- running it ------------------------------------------------------------
+
+run: deps
+	$(MAKE) build/host/rt $(FW_DIR)/fixed.elf
+	@mkdir -p out
+	@$(BOARD_DIR)/qemu-run.sh $(FW_DIR)/fixed.elf out/$(NAME).png build/host/rt | tee $(FW_DIR)/report.txt
+	@build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board (fixed) vs host double: '
+	@build/host/rt compare out/$(NAME).png out/$(NAME)-double.png
+	@echo "image: out/$(NAME).png"
+
+size: $(FW_DIR)/fixed.elf
+	@$(BOARD_DIR)/footprint.sh $(FW_DIR)/fixed.elf $(FW_DIR)/fixed $(FW_DIR)/report.txt

@@ -1,0 +1,100 @@
+/* fb_uart.c - framed scanline stream over UART0 (format in fb_uart.h). */
+#include "fb_uart.h"
+
+#include "board.h"
+
+static uint32_t frame_adler;
+static uint16_t frame_width;
+static uint64_t io_instructions;
+
+static uint32_t adler32(uint32_t adler, const uint8_t *p, size_t n)
+{
+    uint32_t a = adler & 0xFFFF, b = adler >> 16;
+    for (size_t i = 0; i < n; i++) {
+        a += p[i];
+        if (a >= 65521)
+            a -= 65521;
+        b += a;
+        if (b >= 65521)
+            b -= 65521;
+    }
+    return b << 16 | a;
+}
+
+static void put_u16(uint8_t *p, uint16_t v)
+{
+    p[0] = (uint8_t)v;
+    p[1] = (uint8_t)(v >> 8);
+}
+
+static void put_u32(uint8_t *p, uint32_t v)
+{
+    put_u16(p, (uint16_t)v);
+    put_u16(p + 2, (uint16_t)(v >> 16));
+}
+
+static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
+{
+    uint64_t t0 = icount_read();
+    uint8_t hdr[9] = { 'R', 'T', 'F', '1', (uint8_t)s->format };
+    put_u16(hdr + 5, w);
+    put_u16(hdr + 7, h);
+    uart_write(hdr, sizeof hdr);
+    frame_adler = 1;
+    frame_width = w;
+    io_instructions += icount_read() - t0;
+    return 0;
+}
+
+static void uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+{
+    uint64_t t0 = icount_read();
+    uint16_t lines = (uint16_t)(a->y2 - a->y1 + 1);
+    size_t n = (size_t)lines * frame_width * fb_bytes_per_pixel(s->format);
+    uint8_t hdr[5] = { 'B' }, tail[4];
+    put_u16(hdr + 1, a->y1);
+    put_u16(hdr + 3, lines);
+    uart_write(hdr, sizeof hdr);
+    uart_write(px, n);
+    put_u32(tail, adler32(1, px, n));
+    uart_write(tail, sizeof tail);
+    frame_adler = adler32(frame_adler, px, n);
+    fb_flush_ready(s); /* UART writes are synchronous */
+    io_instructions += icount_read() - t0;
+}
+
+static int uart_end(fb_sink_t *s)
+{
+    (void)s;
+    uint8_t rec[5] = { 'E' };
+    put_u32(rec + 1, frame_adler);
+    uart_write(rec, sizeof rec);
+    return 0;
+}
+
+void fb_uart_init(fb_sink_t *sink, fb_format_t format, uint8_t *band, size_t bytes)
+{
+    sink->format = format;
+    sink->band[0] = band;
+    sink->band[1] = 0;
+    sink->band_bytes = bytes;
+    sink->begin = uart_begin;
+    sink->flush = uart_flush;
+    sink->wait = 0;
+    sink->end = uart_end;
+    sink->user = 0;
+    sink->flushing = false;
+}
+
+uint64_t fb_uart_io_instructions(void) { return io_instructions; }
+
+void uart_report(const char *text)
+{
+    uint16_t n = 0;
+    while (text[n] != '\0')
+        n++;
+    uint8_t hdr[3] = { 'T' };
+    put_u16(hdr + 1, n);
+    uart_write(hdr, sizeof hdr);
+    uart_write(text, n);
+}

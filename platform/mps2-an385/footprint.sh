@@ -1,0 +1,20 @@
+#!/bin/sh
+# footprint.sh FIRMWARE.elf OBJDIR [REPORT]: flash and RAM by section, the
+# worst-case stack from the call graph, and (when a run report exists)
+# the measured stack high-water mark.
+elf=$1 objdir=$2 report=$3
+here=$(dirname "$0")
+arm-none-eabi-size -A "$elf" | awk '
+    $1 ~ /^\./ && $2 ~ /^[0-9]+$/ && $1 !~ /^\.(debug|comment|ARM\.attributes)/ { printf "  %-12s %8d bytes\n", $1, $2; s[$1] = $2 }
+    END {
+        code = s[".vectors"] + s[".text"] + s[".ARM.exidx"]
+        printf "flash: code %d bytes, scene tables %d bytes, data image %d bytes\n", code, s[".scene"], s[".data"]
+        printf "ram:   data+bss %d bytes (stack region %d bytes separate)\n", s[".data"] + s[".bss"], s[".stack"]
+    }'
+hex=$(arm-none-eabi-nm -S "$elf" | awk '$4 == "band" { print $2 }')
+echo "ram:   of which band buffer $((0x${hex:-0})) bytes"
+python3 "$here/stack_usage.py" "$objdir" --root main --depth "${DEPTH:-5}" \
+    --indirect uart_begin,uart_flush,uart_end
+if [ -n "$report" ] && [ -f "$report" ]; then
+    grep -E '^stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'
+fi

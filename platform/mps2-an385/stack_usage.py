@@ -1,0 +1,91 @@
+#!/usr/bin/env python3
+"""Worst-case stack depth of the firmware from GCC's -fcallgraph-info=su.
+
+Reads the .ci files of a build, follows the call graph from a root, and
+prints the deepest path. Self-recursion (trace_ray) counts --depth frames;
+indirect calls go to the --indirect targets; functions without a known
+frame (libgcc helpers) count --unknown bytes and are listed.
+"""
+import argparse
+import glob
+import os
+import re
+import sys
+
+NODE = re.compile(r'node: \{ title: "([^"]+)" label: "([^"]*)"')
+EDGE = re.compile(r'edge: \{ sourcename: "([^"]+)" targetname: "([^"]+)"')
+
+
+def load(folder):
+    frames, edges = {}, {}
+    for path in glob.glob(os.path.join(folder, "*.ci")):
+        with open(path) as f:
+            text = f.read()
+        for title, label in NODE.findall(text):
+            m = re.search(r"(\d+) bytes", label)
+            if m:
+                frames[title] = int(m.group(1))
+        for src, dst in EDGE.findall(text):
+            edges.setdefault(src, set()).add(dst)
+    # static functions are titled "file:name"; calls from other files use "name"
+    return frames, edges
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("folder")
+    ap.add_argument("--root", default="main")
+    ap.add_argument("--depth", type=int, default=5, help="frames of a self-recursive function")
+    ap.add_argument("--indirect", default="", help="comma-separated targets of indirect calls")
+    ap.add_argument("--unknown", type=int, default=64, help="bytes assumed for functions without .su data")
+    args = ap.parse_args()
+
+    frames, edges = load(args.folder)
+    indirect = [t for t in args.indirect.split(",") if t]
+    unknown = set()
+    memo = {}
+
+    def resolve(name):
+        if name in frames or name in edges:
+            return name
+        for title in frames:
+            if title.endswith(":" + name):
+                return title
+        return name
+
+    def worst(fn, stack):
+        if fn in memo:
+            return memo[fn]
+        if fn in stack:
+            sys.exit("stack_usage: call cycle through %s (only self-recursion is bounded)" % fn)
+        if fn not in frames:
+            unknown.add(fn)
+            return args.unknown, [fn + " (unknown, assumed)"]
+        callees = set()
+        for c in edges.get(fn, ()):
+            if c == "__indirect_call":
+                callees.update(resolve(t) for t in indirect)
+            else:
+                callees.add(resolve(c))
+        recursive = fn in callees
+        callees.discard(fn)
+        best, path = 0, []
+        for c in sorted(callees):
+            d, p = worst(c, stack | {fn})
+            if d > best:
+                best, path = d, p
+        n = args.depth if recursive else 1
+        result = (n * frames[fn] + best, ["%s %d bytes%s" % (fn, frames[fn], " x %d" % n if n > 1 else "")] + path)
+        memo[fn] = result
+        return result
+
+    total, path = worst(resolve(args.root), frozenset())
+    print("worst-case stack from %s: %d bytes" % (args.root, total))
+    for step in path:
+        print("    " + step)
+    if unknown:
+        print("    (assumed %d bytes for: %s)" % (args.unknown, ", ".join(sorted(unknown))))
+
+
+if __name__ == "__main__":
+    main()
