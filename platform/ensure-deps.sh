@@ -6,6 +6,11 @@ command -v cc >/dev/null 2>&1 || need="$need gcc"
 command -v make >/dev/null 2>&1 || need="$need make"
 command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
+command -v python3 >/dev/null 2>&1 || need="$need python3"
+# the board: cross compiler, newlib (libm for the soft-float comparison), QEMU
+command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
+[ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"
+command -v qemu-system-arm >/dev/null 2>&1 || need="$need qemu-system-arm"
 # The sanitiser runtimes come with gcc's libasan/libubsan on Debian.
 if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
     need="$need libasan8 libubsan1"

@@ -21,6 +21,7 @@ run "$B/test_fx"
 run "$B/test_geometry"
 run tests/image-tests.sh "$B/rt" "$B/test-images"
 run tests/cli-tests.sh "$B/rt" "$B/test-cli"
+run tests/board-tests.sh "$B/rt"
 echo
 echo "$total_pass passed, $total_fail failed"
 [ $total_fail -eq 0 ]

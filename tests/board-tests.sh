@@ -1,0 +1,95 @@
+#!/bin/sh
+# Board tests (QEMU mps2-an385):
+#  - the board's image is byte-identical to the hosted fixed build's, for
+#    every SPD size-1 scene and the size-2 scenes, at 64x64, depth 5;
+#  - the fixed firmware links no heap and no soft-float helper;
+#  - footprint budgets of the default scene (balls-2, 128x128, depth 5);
+#  - a scene over a capacity fails to build with a clear message.
+RT=${1:-build/host/rt}
+OUT=build/test-board
+mkdir -p "$OUT"
+pass=0 fail=0
+ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
+bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
+fwdir() { echo "build/board/$1-$2-d5-rgb888"; }
+
+echo "board tests: QEMU mps2-an385 against the hosted fixed build"
+for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2; do
+    d=$(fwdir $s 64x64)
+    if ! make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
+        bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
+        continue
+    fi
+    if ! platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$s-board.png" "$RT" >"$OUT/$s.report" 2>&1; then
+        bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
+        continue
+    fi
+    "$RT" scenes/spd/$s.nff -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --quiet 2>/dev/null
+    ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
+    if cmp=$("$RT" compare "$OUT/$s-board.png" "$OUT/$s-host.png" --max-error 0); then
+        ok "$s: board == host fixed ($cmp), $ipp instructions/pixel"
+    else
+        bad "$s: board and host fixed differ: $cmp"
+    fi
+done
+
+# Linked-symbol checks on the default scene's firmware (and, as a control
+# that the check can fail, the soft-float build must show its helpers).
+make -s firmware SCENE=scenes/spd/balls-2.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
+d=$(fwdir balls-2 128x128)
+bad_syms=$(arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|__aeabi_f.*|__aeabi_d.*|__aeabi_[fd]2.*)$')
+[ -z "$bad_syms" ] && ok "fixed firmware links no heap or soft-float symbol" || bad "fixed firmware links: $bad_syms"
+make -s "$d/double.elf" SCENE=scenes/spd/balls-2.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
+arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
+    ok "control: the soft-float build does link __aeabi_dmul" ||
+    bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"
+
+# Footprint budgets of the default scene at depth 5.
+if platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/default.png" "$RT" >"$OUT/default.report" 2>&1; then
+    eval "$(arm-none-eabi-size -A "$d/fixed.elf" | awk '
+        $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" { code += $2 }
+        $1 == ".data" || $1 == ".bss" { ram += $2 }
+        END { printf "code=%d ram=%d\n", code, ram }')"
+    band=$((0x$(arm-none-eabi-nm -S "$d/fixed.elf" | awk '$4 == "band" { print $2 }')))
+    hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/default.report")
+    guard=$(awk '$1 == "stack_guard_intact" { print $2 }' "$OUT/default.report")
+    [ "$code" -le 24576 ] && ok "code $code bytes <= 24 KiB (scene tables excluded)" || bad "code $code bytes > 24 KiB"
+    [ $((ram - band)) -le 4096 ] && ok "RAM $((ram - band)) bytes + band $band bytes (<= 4 KiB + band)" ||
+        bad "RAM $((ram - band)) bytes (+ band $band) > 4 KiB"
+    [ "${hw:-99999}" -le 2048 ] && ok "stack high-water $hw bytes <= 2 KiB" || bad "stack high-water ${hw:-?} bytes > 2 KiB"
+    [ "$guard" = 1 ] && ok "stack guard intact" || bad "stack guard overwritten"
+else
+    bad "default scene board run failed: $(tail -3 "$OUT/default.report")"
+fi
+
+# The host receiver rejects damaged streams instead of writing an image.
+st="$d/fixed.stream"
+if [ -f "$st" ]; then
+    n=$(wc -c <"$st")
+    head -c $((n / 2)) "$st" >"$OUT/half.stream"
+    msg=$("$RT" receive "$OUT/half.stream" -o "$OUT/half.png" 2>&1 >/dev/null); status=$?
+    [ $status -eq 2 ] && [ ! -e "$OUT/half.png" ] && echo "$msg" | grep -q "truncated" &&
+        ok "truncated stream rejected: $msg" || bad "truncated stream: status $status, '$msg'"
+    # flip one pixel byte inside the first band (after the 9-byte header and 5-byte band header)
+    python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[20]^=0x10; open(sys.argv[2],'wb').write(d)" "$st" "$OUT/flip.stream"
+    msg=$("$RT" receive "$OUT/flip.stream" -o "$OUT/flip.png" 2>&1 >/dev/null); status=$?
+    [ $status -eq 2 ] && [ ! -e "$OUT/flip.png" ] && echo "$msg" | grep -q "checksum mismatch" &&
+        ok "corrupted stream rejected: $msg" || bad "corrupted stream: status $status, '$msg'"
+fi
+
+# Over capacity: 1025 spheres against RT_MAX_SPHERES = 1024 of the board build.
+big="$OUT/too-many-spheres.nff"
+{
+    printf 'v\nfrom 0 -40 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 16 16\nl 0 -40 40\nf 1 1 1 1 0 1 0 1\n'
+    i=0
+    while [ $i -lt 1025 ]; do echo "s $((i % 32)) 0 $((i / 32)) 0.4"; i=$((i + 1)); done
+} >"$big"
+if make -s firmware SCENE="$big" SIZE=16x16 >"$OUT/big.build" 2>&1; then
+    bad "a 1025-sphere scene built (capacity not enforced)"
+elif grep -q "too-many-spheres.nff:1034: too many spheres: capacity RT_MAX_SPHERES = 1024 (raise it with -DRT_MAX_SPHERES=N)" "$OUT/big.build"; then
+    ok "over capacity: $(grep 'too many' "$OUT/big.build")"
+else
+    bad "over-capacity build failed without the expected message: $(tail -2 "$OUT/big.build")"
+fi
+echo "board-tests: $pass passed, $fail failed"
+[ $fail -eq 0 ]
