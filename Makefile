@@ -95,6 +95,10 @@ include platform/mps2-an385/board.mk
 deps:
 	@sh platform/ensure-deps.sh
 
+bench: deps
+	$(MAKE) build/host/rt build/scenec/rt-scenec
+	@sh bench/board-bench.sh
+
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/rt
 
 test: deps

@@ -15,6 +15,11 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
     if (c->r0 == 0 && r_apex == 0)
         return "cone radii are both zero";
     c->slope = r_div(r_abs(r_apex) - c->r0, c->height);
+    real_t half = c->height / 2, rmax = r_max(c->r0, r_abs(r_apex));
+    c->bound_centre = v3_madd(base, half, c->axis);
+    /* one ulp of slack so rounding cannot cut the cone */
+    c->bound_radius = r_wsqrt(r_wmul(half, half) + r_wmul(rmax, rmax)) + R_RATIO(1, 4096);
+    c->bound_radius2 = r_wmul(c->bound_radius, c->bound_radius);
     return 0;
 }
 
@@ -39,6 +44,15 @@ static real_t refine_root(vec3_t op, vec3_t dp, real_t rr, real_t kdv, real_t t)
  * a quadratic a t^2 + 2 b t + c = 0 in the ray parameter. */
 bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
 {
+    /* early rejection against the bounding sphere, as for spheres */
+    vec3_t l = v3_sub(c->bound_centre, r->origin);
+    real_t v = v3_dot(l, r->dir);
+    if (v - c->bound_radius >= *t || v + c->bound_radius <= tmin)
+        return false;
+    vec3_t perp = v3_madd(l, -v, r->dir);
+    if (v3_wdot(perp, perp) > c->bound_radius2)
+        return false;
+
     vec3_t ob = v3_sub(r->origin, c->base);
     real_t ov = v3_dot(ob, c->axis);
     real_t dv = v3_dot(r->dir, c->axis);

@@ -42,6 +42,11 @@ const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint1
         p->box_max = v3(r_max(p->box_max.x, v[i].x), r_max(p->box_max.y, v[i].y),
                         r_max(p->box_max.z, v[i].z));
     }
+    /* Slack so the exact box test never rejects a hit that the rounded
+     * inside test (or a neighbour sharing the edge) would accept. */
+    const real_t slack = R_RATIO(1, 4096);
+    p->box_min = v3(p->box_min.x - slack, p->box_min.y - slack, p->box_min.z - slack);
+    p->box_max = v3(p->box_max.x + slack, p->box_max.y + slack, p->box_max.z + slack);
     return 0;
 }
 
@@ -50,10 +55,10 @@ typedef struct {
     real_t u, v;
 } pt2_t;
 
-static pt2_t project(const polygon_t *p, vec3_t a)
+static inline pt2_t project_axis(unsigned drop_axis, vec3_t a)
 {
     pt2_t r;
-    switch (p->drop_axis) {
+    switch (drop_axis) {
     case 0: r.u = a.y; r.v = a.z; break;
     case 1: r.u = a.z; r.v = a.x; break;
     default: r.u = a.x; r.v = a.y; break;
@@ -61,20 +66,23 @@ static pt2_t project(const polygon_t *p, vec3_t a)
     return r;
 }
 
+static pt2_t project(const polygon_t *p, vec3_t a) { return project_axis(p->drop_axis, a); }
+
 /* Twice the signed area of (a, b, c): > 0 when c is left of a->b. Exact. */
 static real_wide_t edge_fn(pt2_t a, pt2_t b, pt2_t c)
 {
     return r_wmul(b.u - a.u, c.v - a.v) - r_wmul(b.v - a.v, c.u - a.u);
 }
 
-/* Even-odd rule: count edges crossed by the ray from q towards +u. */
-static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
+/* Even-odd rule: count edges crossed by the ray from q towards +u. Inline
+ * with a constant axis, so each of the three copies loads just the two
+ * coordinates it needs (this loop is most of the time on the gears). */
+static inline bool even_odd_axis(const vec3_t *v, uint32_t count, pt2_t q, unsigned axis)
 {
-    const vec3_t *v = &sc->vertices[p->first];
     bool inside = false;
-    pt2_t a = project(p, v[p->count - 1]);
-    for (uint32_t i = 0; i < p->count; i++) {
-        pt2_t b = project(p, v[i]);
+    pt2_t a = project_axis(axis, v[count - 1]);
+    for (uint32_t i = 0; i < count; i++) {
+        pt2_t b = project_axis(axis, v[i]);
         if ((b.v > q.v) != (a.v > q.v)) {
             /* q is left of the edge's crossing point when edge_fn has the
              * sign of the edge's direction in v */
@@ -85,6 +93,16 @@ static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
         a = b;
     }
     return inside;
+}
+
+static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
+{
+    const vec3_t *v = &sc->vertices[p->first];
+    switch (p->drop_axis) {
+    case 0: return even_odd_axis(v, p->count, q, 0);
+    case 1: return even_odd_axis(v, p->count, q, 1);
+    default: return even_odd_axis(v, p->count, q, 2);
+    }
 }
 
 /* Index i of the fan triangle (0, i, i+1) holding q, or 0 when none. */
@@ -112,13 +130,20 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     real_wide_t wn = r_to_wide(num), lo = r_wmul(tmin, denom), hi = r_wmul(*t, denom);
     if (denom > 0 ? (wn <= lo || wn >= hi) : (wn >= lo || wn <= hi))
         return false;
+    /* Bounding-box test of the hit point in the plane's two axes, still
+     * without dividing: lo <= o + (num / denom) d <= hi, times denom. */
+    pt2_t o = project(p, r->origin), d = project(p, r->dir);
+    pt2_t lo2 = project(p, p->box_min), hi2 = project(p, p->box_max);
+    real_wide_t wu = r_wmul(num, d.u), wv = r_wmul(num, d.v);
+    real_wide_t ulo = r_wmul(lo2.u - o.u, denom), uhi = r_wmul(hi2.u - o.u, denom);
+    real_wide_t vlo = r_wmul(lo2.v - o.v, denom), vhi = r_wmul(hi2.v - o.v, denom);
+    if (denom > 0 ? (wu < ulo || wu > uhi || wv < vlo || wv > vhi)
+                  : (wu > ulo || wu < uhi || wv > vlo || wv < vhi))
+        return false;
     real_t th = r_div(num, denom);
     if (th <= tmin || th >= *t)
         return false;
     pt2_t q = project(p, ray_at(r, th));
-    pt2_t lo2 = project(p, p->box_min), hi2 = project(p, p->box_max);
-    if (q.u < lo2.u || q.u > hi2.u || q.v < lo2.v || q.v > hi2.v)
-        return false;
     bool inside = p->normals == POLY_NO_NORMALS ? inside_even_odd(sc, p, q)
                                                 : fan_triangle(sc, p, q) != 0;
     if (!inside)

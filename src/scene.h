@@ -38,6 +38,9 @@ typedef struct {
 typedef struct {
     vec3_t base, axis;
     real_t height, r0, slope;
+    vec3_t bound_centre;      /* bounding sphere, for early rejection */
+    real_t bound_radius;
+    real_wide_t bound_radius2;
     uint16_t material;
 } cone_t;
 

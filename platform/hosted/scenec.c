@@ -75,8 +75,12 @@ static void emit_tables(FILE *f, const scene_t *sc)
             emit_vec(f, c->base);
             fprintf(f, ", .axis = ");
             emit_vec(f, c->axis);
-            fprintf(f, ", .height = %" PRId32 ", .r0 = %" PRId32 ", .slope = %" PRId32 ", .material = %u },\n",
-                    c->height, c->r0, c->slope, (unsigned)c->material);
+            fprintf(f, ", .height = %" PRId32 ", .r0 = %" PRId32 ", .slope = %" PRId32 ",\n      .bound_centre = ",
+                    c->height, c->r0, c->slope);
+            emit_vec(f, c->bound_centre);
+            fprintf(f, ", .bound_radius = %" PRId32 ", .bound_radius2 = ", c->bound_radius);
+            emit_wide(f, c->bound_radius2);
+            fprintf(f, ", .material = %u },\n", (unsigned)c->material);
         }
         fprintf(f, "};\n\n");
     }
