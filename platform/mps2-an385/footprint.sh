@@ -13,7 +13,7 @@ arm-none-eabi-size -A "$elf" | awk '
     }'
 hex=$(arm-none-eabi-nm -S "$elf" | awk '$4 == "band" { print $2 }')
 echo "ram:   of which band buffer $((0x${hex:-0})) bytes"
-python3 "$here/stack_usage.py" "$objdir" --root main --depth "${DEPTH:-5}" \
+python3 "$here/stack_usage.py" "$objdir" --root Reset_Handler --depth "${DEPTH:-5}" \
     --indirect uart_begin,uart_flush,uart_end
 if [ -n "$report" ] && [ -f "$report" ]; then
     grep -E '^stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'
