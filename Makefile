@@ -99,7 +99,7 @@ bench: deps
 	$(MAKE) build/host/rt build/scenec/rt-scenec
 	@sh bench/board-bench.sh
 
-TESTS = build/asan/test_fx build/asan/test_geometry build/asan/rt
+TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt
 
 test: deps
 	$(MAKE) $(TESTS)

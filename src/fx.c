@@ -73,6 +73,31 @@ fx_t fx_div(fx_t a, fx_t b)
     return fx_sat64((n >= 0 ? n + h : n - h) / d);
 }
 
+fx_t fx_recip(fx_t b)
+{
+#if FX_FRAC_BITS <= 16
+    /* round(2^2F / |b|) from one 32-bit divide of 2^32 - 1 (the M3's UDIV
+     * takes 2..12 cycles; a 64-bit divide is a long library call) */
+    if (b == 0 || b == INT32_MIN)
+        return fx_div(FX_ONE, b);
+    uint32_t d = (uint32_t)(b < 0 ? -b : b);
+    const unsigned sh = 32 - 2 * FX_FRAC_BITS; /* 2^2F = 2^32 >> sh */
+    uint64_t num = (uint64_t)1 << (32 - sh);
+    uint64_t q = (uint32_t)(0xFFFFFFFFu >> sh) / d; /* floor((2^2F - 1) / d) */
+    uint64_t rem = num - q * d;                      /* in [1, d] */
+    if (rem >= d) {
+        q++;
+        rem -= d;
+    }
+    if (2 * rem >= d)
+        q++;
+    int64_t r = b < 0 ? -(int64_t)q : (int64_t)q;
+    return fx_sat64(r);
+#else
+    return fx_div(FX_ONE, b);
+#endif
+}
+
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
 {
     const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);

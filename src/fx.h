@@ -9,6 +9,7 @@
  * Accuracy (measured by tests/test_fx.c over dense input sweeps; "ulp" is
  * one unit of the last place, 2^-F):
  *   fx_mul, fx_div        correctly rounded (<= 0.5 ulp)
+ *   fx_recip              correctly rounded (<= 0.5 ulp)
  *   fx_wdiv               correctly rounded while |a| < 2^(62-F), else
  *                         both operands lose low bits first
  *   fx_wdiv_fx            truncated to 2^-2F while |w| < 2^(62-F)
@@ -74,6 +75,13 @@ static inline fx_t fx_from_wide(fx_wide_t w) { return fx_sat64(fx_round_shift(w,
 static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
+fx_t fx_recip(fx_t b);                /* 1 / b; one 32-bit divide when F <= 16 */
+
+/* (a - b) * c with the difference kept exact (|c| < 2^30 assumed). */
+static inline fx_t fx_mul_diff(fx_t a, fx_t b, fx_t c)
+{
+    return fx_sat64(fx_round_shift(((int64_t)a - b) * c, FX_FRAC_BITS));
+}
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b); /* a / b of two Q.2F values, as Q.F */
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a); /* w / a, as Q.2F; a == 0 saturates */
 fx_t fx_sqrt(fx_t a);                 /* a < 0 gives 0 */

@@ -8,6 +8,7 @@
  */
 #include "nff.h"
 
+#include "bvh.h"
 #include "camera.h"
 #include "geometry.h"
 
@@ -506,5 +507,8 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
         return fail(&r, r.tok_line, "no 'v' viewpoint in the file");
     uint32_t n = sc->n_lights;
     sc->light_intensity = n ? r_div(r_sqrt(r_from_int((int32_t)n)), r_from_int(2 * (int32_t)n)) : 0;
+    const char *why = bvh_build(store);
+    if (why)
+        return fail(&r, r.tok_line, why);
     return true;
 }

@@ -8,8 +8,8 @@
 #include "rt_error.h"
 #include "scene.h"
 
-/* Parses `len` bytes of NFF text into `store` and points store->scene at
- * its tables. On failure returns false with err->line and err->msg set
+/* Parses `len` bytes of NFF text into `store`, builds its BVH and points
+ * store->scene at its tables. On failure returns false with err->line and err->msg set
  * ("file:line: msg" is for the caller to print). */
 bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *err);
 

@@ -33,6 +33,8 @@ typedef double shine_t;
 static inline real_t r_from_int(int32_t i) { return (double)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
+static inline real_t r_recip(real_t b) { return 1.0 / b; }
+static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
 static inline real_t r_sqrt(real_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return a * b; }
 static inline real_wide_t r_to_wide(real_t a) { return a; }
@@ -40,6 +42,10 @@ static inline real_t r_from_wide(real_wide_t w) { return w; }
 static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? __builtin_sqrt(w) : 0.0; }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
+static inline int32_t r_floor_int(real_t a) { return (int32_t)__builtin_floor(a); }
+static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
+/* the next value above a (a > 0) */
+static inline real_t r_next_up(real_t a) { return a + a * 0x1p-52; }
 static inline real_t r_pow_unit(real_t x, shine_t s)
 {
     return x <= 0 ? 0.0 : __builtin_pow(x, s);
@@ -86,6 +92,8 @@ typedef fx_shine_t shine_t;
 static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
 static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
+static inline real_t r_recip(real_t b) { return fx_recip(b); }
+static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return fx_mul_diff(a, b, c); }
 static inline real_t r_sqrt(real_t a) { return fx_sqrt(a); }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return fx_wmul(a, b); }
 static inline real_wide_t r_to_wide(real_t a) { return fx_to_wide(a); }
@@ -93,6 +101,9 @@ static inline real_t r_from_wide(real_wide_t w) { return fx_from_wide(w); }
 static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
+static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
+static inline real_t r_add_sat(real_t a, real_t b) { return fx_sat64((int64_t)a + b); }
+static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])

@@ -27,6 +27,28 @@ static void wait_flushed(fb_sink_t *sink)
     }
 }
 
+static void flush_band(fb_sink_t *sink, unsigned *cur, uint16_t w, uint16_t y1, uint16_t y2)
+{
+    fb_area_t area = { 0, y1, (uint16_t)(w - 1), y2 };
+    wait_flushed(sink); /* the other buffer's flush */
+    sink->flushing = true;
+    sink->flush(sink, &area, sink->band[*cur]);
+    if (sink->band[1])
+        *cur ^= 1u;
+    else
+        wait_flushed(sink);
+}
+
+/* One row of SPD corner samples (w + 1 of them). */
+static void corner_row(const tracer_t *tr, const camera_t *cam, int32_t j, uint16_t w, colour_t *row)
+{
+    for (int32_t i = 0; i <= w; i++) {
+        ray_t ray = camera_ray(cam, i, j);
+        tr->stats->eye_rays++;
+        row[i] = trace_ray(tr, &ray, 1, R_ONE);
+    }
+}
+
 int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err)
 {
@@ -45,43 +67,59 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
         rt_error_append_int(err, RT_MAX_DEPTH);
         return -1;
     }
-    size_t line_bytes = (size_t)w * fb_bytes_per_pixel(sink->format);
+    size_t bpp = fb_bytes_per_pixel(sink->format);
+    size_t line_bytes = (size_t)w * bpp;
     size_t band_lines = sink->band_bytes / line_bytes;
     if (band_lines == 0 || sink->band[0] == 0) {
         rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
         return -1;
     }
+    colour_t *rows[2] = { 0, 0 };
+    if (opts->spd) {
+        if (opts->scratch == 0 || opts->scratch_bytes < RENDER_SPD_SCRATCH(w)) {
+            rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
+            return -1;
+        }
+        rows[0] = opts->scratch;
+        rows[1] = rows[0] + w + 1;
+    }
     camera_t cam;
-    const char *why = camera_init(&cam, &sc->view, w, h);
+    const char *why = opts->spd ? camera_init(&cam, &sc->view, w + 1, h + 1) : camera_init(&cam, &sc->view, w, h);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;
     }
-    tracer_t tr = { sc, depth, stats };
+    tracer_t tr = { sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;
     if (status != 0)
         return status;
+    if (opts->spd)
+        corner_row(&tr, &cam, 0, w, rows[0]);
     unsigned cur = 0;
     uint16_t band_y = 0;
     for (uint16_t y = 0; y < h; y++) {
         uint8_t *line = sink->band[cur] + (size_t)(y - band_y) * line_bytes;
-        for (uint16_t x = 0; x < w; x++) {
-            ray_t ray = camera_ray(&cam, x, y);
-            stats->eye_rays++;
-            colour_t c = trace_ray(&tr, &ray, 1);
-            put_pixel(line + (size_t)x * fb_bytes_per_pixel(sink->format), sink->format, c);
+        if (opts->spd) {
+            /* pixel = mean of its four corners; rows[0] holds the top ones */
+            corner_row(&tr, &cam, y + 1, w, rows[1]);
+            for (uint16_t x = 0; x < w; x++) {
+                colour_t sum = v3_add(v3_add(rows[0][x], rows[0][x + 1]), v3_add(rows[1][x], rows[1][x + 1]));
+                put_pixel(line + x * bpp, sink->format, v3_scale(sum, R_RATIO(1, 4)));
+            }
+            colour_t *t = rows[0];
+            rows[0] = rows[1];
+            rows[1] = t;
+        } else {
+            for (uint16_t x = 0; x < w; x++) {
+                ray_t ray = camera_ray(&cam, x, y);
+                stats->eye_rays++;
+                put_pixel(line + x * bpp, sink->format, trace_ray(&tr, &ray, 1, R_ONE));
+            }
         }
         if ((size_t)(y - band_y + 1) == band_lines || y + 1 == h) {
-            fb_area_t area = { 0, band_y, (uint16_t)(w - 1), y };
-            wait_flushed(sink); /* the other buffer's flush */
-            sink->flushing = true;
-            sink->flush(sink, &area, sink->band[cur]);
-            if (sink->band[1])
-                cur ^= 1u;
-            else
-                wait_flushed(sink);
+            flush_band(sink, &cur, w, band_y, y);
             band_y = (uint16_t)(y + 1);
         }
     }

@@ -48,6 +48,48 @@
 #define RT_MAX_MATERIALS 64
 #endif
 
+/* Bounding volume hierarchy: nodes (at most 2 per primitive) and the
+ * depth of the tree, which bounds the traversal stack. */
+#define RT_MAX_PRIMITIVES (RT_MAX_SPHERES + RT_MAX_CONES + RT_MAX_POLYGONS)
+#ifndef RT_MAX_BVH_NODES
+#define RT_MAX_BVH_NODES (2 * RT_MAX_PRIMITIVES)
+#endif
+#ifndef RT_BVH_MAX_DEPTH
+#define RT_BVH_MAX_DEPTH 32
+#endif
+#ifndef RT_BVH_LEAF_SIZE            /* the builder stops splitting at this many */
+#define RT_BVH_LEAF_SIZE 2
+#endif
+
+/* Compile-time pruning: code for what a scene does not use is left out.
+ * All on by default; a board build gets them from the scene compiler's
+ * header (scene_data.h). Turning one off for a scene that needs it gives
+ * a wrong image, so only generated values should turn them off. */
+#ifndef RT_USE_SPHERES
+#define RT_USE_SPHERES 1
+#endif
+#ifndef RT_USE_CONES
+#define RT_USE_CONES 1
+#endif
+#ifndef RT_USE_POLYGONS
+#define RT_USE_POLYGONS 1
+#endif
+#ifndef RT_USE_PATCHES
+#define RT_USE_PATCHES 1
+#endif
+#ifndef RT_USE_SHADOWS
+#define RT_USE_SHADOWS 1
+#endif
+#ifndef RT_USE_SPECULAR
+#define RT_USE_SPECULAR 1
+#endif
+#ifndef RT_USE_REFLECTION
+#define RT_USE_REFLECTION 1
+#endif
+#ifndef RT_USE_REFRACTION
+#define RT_USE_REFRACTION 1
+#endif
+
 /* Largest image side accepted (bounds the per-line work buffers). */
 #ifndef RT_MAX_WIDTH
 #define RT_MAX_WIDTH 4096
@@ -70,6 +112,8 @@ _Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POL
 _Static_assert(RT_MAX_POLYGONS <= 0xFFFFFF && RT_MAX_SPHERES <= 0xFFFFFF && RT_MAX_CONES <= 0xFFFFFF,
                "primitive indices are 24-bit");
 _Static_assert(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535, "materials are indexed by uint16_t");
+_Static_assert(RT_BVH_MAX_DEPTH >= 8 && RT_BVH_MAX_DEPTH <= 64, "RT_BVH_MAX_DEPTH out of 8..64");
+_Static_assert(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16, "RT_BVH_LEAF_SIZE out of 1..16");
 _Static_assert(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255, "RT_MAX_LIGHTS out of 1..255");
 
 #endif

@@ -60,6 +60,24 @@ typedef struct {
     uint8_t drop_axis;
 } polygon_t;
 
+/* A primitive of any kind: kind in the top 8 bits, table index below. */
+typedef uint32_t prim_ref_t;
+#define PRIM_REF(kind, index) ((prim_ref_t)(kind) << 24 | (prim_ref_t)(index))
+#define PRIM_KIND(ref) ((ref) >> 24)
+#define PRIM_INDEX(ref) ((ref) & 0xFFFFFFu)
+enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON };
+
+/* BVH node, depth-first order: an interior node's left child follows it,
+ * `index` is its right child; a leaf's primitives are
+ * bvh_prims[index .. index + count). Boxes are conservative: they hold
+ * their primitives whatever the rounding. */
+typedef struct {
+    vec3_t min, max;
+    uint32_t index;
+    uint16_t count;   /* 0 for an interior node */
+    uint8_t axis;     /* interior: the split axis (near child first) */
+} bvh_node_t;
+
 /* The NFF viewpoint; the camera basis is derived per render resolution. */
 typedef struct {
     vec3_t from, at, up;
@@ -79,10 +97,13 @@ typedef struct {
     const polygon_t *polygons;
     const vec3_t *vertices;
     const vec3_t *normals;    /* per-vertex normals of patches (unit) */
+    const bvh_node_t *bvh_nodes;
+    const prim_ref_t *bvh_prims;
 
     uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
     uint32_t n_vertices, n_normals;
     uint32_t n_flat_skipped;  /* zero-area polygons dropped by the reader */
+    uint32_t n_bvh_nodes;
 } scene_t;
 
 /* RAM tables at the configured capacities, for scenes read at run time. */
@@ -95,6 +116,8 @@ typedef struct {
     polygon_t polygons[RT_MAX_POLYGONS];
     vec3_t vertices[RT_MAX_VERTICES];
     vec3_t normals[RT_MAX_VERTICES];
+    bvh_node_t bvh_nodes[RT_MAX_BVH_NODES];
+    prim_ref_t bvh_prims[RT_MAX_PRIMITIVES];
 } scene_store_t;
 
 #endif

@@ -1,53 +1,221 @@
-/* scene_hit.c - brute-force traversal: every primitive of every kind. */
+/*
+ * scene_hit.c - a ray against the whole scene.
+ *
+ * BVH traversal: nearest-first with a bounded stack for eye, reflection
+ * and refraction rays; any-hit with an early exit for shadow rays. The
+ * slab tests are conservative: each interval is widened by more than its
+ * rounding error, so a box is never missed because of rounding (it may be
+ * entered needlessly, which costs time, not correctness). The brute-force
+ * versions are the reference the BVH is tested against.
+ */
 #include "scene_hit.h"
+
+/* Relative and absolute widening of every slab interval. A Q16.16
+ * reciprocal is good to 2^-17 relative and each product to half a unit. */
+#define SLAB_EPS_REL R_RATIO(1, 16384)
+#define SLAB_EPS_ABS R_RATIO(4, 65536)
+/* Axes where |d| is below this have a reciprocal beyond the fixed range;
+ * they are handled as parallel plus the drift d * tmax. */
+#define SLAB_PARALLEL R_RATIO(1, 8192)
+
+typedef struct {
+    vec3_t origin;
+    real_t inv[3], dir_abs[3];
+    bool parallel[3];
+} slab_ray_t;
+
+static void slab_init(slab_ray_t *s, const ray_t *r)
+{
+    const real_t d[3] = { r->dir.x, r->dir.y, r->dir.z };
+    s->origin = r->origin;
+    for (int a = 0; a < 3; a++) {
+        s->dir_abs[a] = r_abs(d[a]);
+        s->parallel[a] = s->dir_abs[a] < SLAB_PARALLEL;
+        s->inv[a] = s->parallel[a] ? 0 : r_recip(d[a]);
+    }
+}
+
+static bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t bmax, real_t tmax,
+                      real_t *lo, real_t *hi)
+{
+    if (s->parallel[a]) {
+        real_t drift = r_mul(s->dir_abs[a], tmax) + SLAB_EPS_ABS;
+        return o >= r_add_sat(bmin, -drift) && o <= r_add_sat(bmax, drift);
+    }
+    real_t t0 = r_mul_diff(bmin, o, s->inv[a]), t1 = r_mul_diff(bmax, o, s->inv[a]);
+    if (t0 > t1) {
+        real_t tmp = t0;
+        t0 = t1;
+        t1 = tmp;
+    }
+    *lo = r_max(*lo, t0);
+    *hi = r_min(*hi, t1);
+    return true;
+}
+
+/* Whether the ray meets the node's box within [tmin, tmax]; *entry is
+ * where it enters (for nearest-first ordering). */
+static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, real_t tmax, real_t *entry)
+{
+    real_t lo = R_RATIO(-32767, 1), hi = R_RATIO(32767, 1);
+    if (!slab_axis(s, 0, s->origin.x, n->min.x, n->max.x, tmax, &lo, &hi) ||
+        !slab_axis(s, 1, s->origin.y, n->min.y, n->max.y, tmax, &lo, &hi) ||
+        !slab_axis(s, 2, s->origin.z, n->min.z, n->max.z, tmax, &lo, &hi))
+        return false;
+    /* widen once by more than the rounding of the products */
+    lo = r_add_sat(lo, -(r_mul(r_abs(lo), SLAB_EPS_REL) + SLAB_EPS_ABS));
+    hi = r_add_sat(hi, r_mul(r_abs(hi), SLAB_EPS_REL) + SLAB_EPS_ABS);
+    if (lo > hi || hi < tmin || lo > tmax)
+        return false;
+    *entry = r_max(lo, tmin);
+    return true;
+}
+
+static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
+                     rt_stats_t *st)
+{
+    uint32_t i = PRIM_INDEX(ref);
+    switch (PRIM_KIND(ref)) {
+#if RT_USE_SPHERES
+    case PRIM_SPHERE:
+        st->tests_sphere++;
+        return ray_hit_sphere(&sc->spheres[i], r, tmin, t);
+#endif
+#if RT_USE_CONES
+    case PRIM_CONE:
+        st->tests_cone++;
+        return ray_hit_cone(&sc->cones[i], r, tmin, t);
+#endif
+#if RT_USE_POLYGONS
+    case PRIM_POLYGON:
+        st->tests_polygon++;
+        return ray_hit_polygon(sc, &sc->polygons[i], r, tmin, t);
+#endif
+    default:
+        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st;
+        return false;
+    }
+}
+
+typedef struct {
+    uint32_t node;
+    real_t entry;
+} bvh_stack_t;
 
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
+    const bvh_node_t *nodes = sc->bvh_nodes;
+    slab_ray_t s;
+    real_t entry, ea, eb;
+    if (sc->n_bvh_nodes == 0)
+        return false;
+    slab_init(&s, r);
+    if (!slab_test(&nodes[0], &s, tmin, h->t, &entry))
+        return false;
+    bvh_stack_t stack[RT_BVH_MAX_DEPTH];
+    unsigned sp = 0;
+    uint32_t node = 0;
     bool found = false;
-    for (uint32_t i = 0; i < sc->n_spheres; i++) {
-        if (ray_hit_sphere(&sc->spheres[i], r, tmin, &h->t)) {
-            h->kind = PRIM_SPHERE;
-            h->index = i;
-            found = true;
+    for (;;) {
+        const bvh_node_t *n = &nodes[node];
+        st->bvh_nodes++;
+        if (n->count) {
+            for (uint32_t k = n->index; k < n->index + n->count; k++) {
+                /* Ties go to the lowest reference, as in table order: a
+                 * lower one may also take a hit at exactly the best t. */
+                prim_ref_t ref = sc->bvh_prims[k];
+                bool lower = !found || ref < PRIM_REF(h->kind, h->index);
+                real_t t = lower ? r_next_up(h->t) : h->t;
+                if (hit_prim(sc, ref, r, tmin, &t, st) && (t < h->t || lower)) {
+                    h->t = t;
+                    h->kind = (uint8_t)PRIM_KIND(ref);
+                    h->index = PRIM_INDEX(ref);
+                    found = true;
+                }
+            }
+        } else {
+            uint32_t a = node + 1, b = n->index;
+            bool ha = slab_test(&nodes[a], &s, tmin, h->t, &ea);
+            bool hb = slab_test(&nodes[b], &s, tmin, h->t, &eb);
+            if (ha && hb) {
+                if (eb < ea) { /* nearer child first, the other waits */
+                    uint32_t tn = a;
+                    a = b;
+                    b = tn;
+                    eb = ea;
+                }
+                stack[sp].node = b;
+                stack[sp].entry = eb;
+                sp++;
+                node = a;
+                continue;
+            }
+            if (ha || hb) {
+                node = ha ? a : b;
+                continue;
+            }
         }
+        /* next waiting node that can still beat the best hit */
+        do {
+            if (sp == 0)
+                return found;
+            sp--;
+        } while (stack[sp].entry > h->t);
+        node = stack[sp].node;
     }
-    for (uint32_t i = 0; i < sc->n_cones; i++) {
-        if (ray_hit_cone(&sc->cones[i], r, tmin, &h->t)) {
-            h->kind = PRIM_CONE;
-            h->index = i;
-            found = true;
-        }
-    }
-    for (uint32_t i = 0; i < sc->n_polygons; i++) {
-        if (ray_hit_polygon(sc, &sc->polygons[i], r, tmin, &h->t)) {
-            h->kind = PRIM_POLYGON;
-            h->index = i;
-            found = true;
-        }
-    }
-    st->tests_sphere += sc->n_spheres;
-    st->tests_cone += sc->n_cones;
-    st->tests_polygon += sc->n_polygons;
-    return found;
 }
 
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, rt_stats_t *st)
 {
-    real_t t = tmax;
-    for (uint32_t i = 0; i < sc->n_spheres; i++) {
-        st->tests_sphere++;
-        if (ray_hit_sphere(&sc->spheres[i], r, tmin, &t))
-            return true;
+    const bvh_node_t *nodes = sc->bvh_nodes;
+    slab_ray_t s;
+    real_t entry;
+    if (sc->n_bvh_nodes == 0)
+        return false;
+    slab_init(&s, r);
+    uint32_t stack[RT_BVH_MAX_DEPTH];
+    unsigned sp = 0;
+    uint32_t node = 0;
+    if (!slab_test(&nodes[0], &s, tmin, tmax, &entry))
+        return false;
+    for (;;) {
+        const bvh_node_t *n = &nodes[node];
+        st->bvh_nodes++;
+        if (n->count) {
+            for (uint32_t k = n->index; k < n->index + n->count; k++) {
+                real_t t = tmax;
+                if (hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st))
+                    return true; /* any blocker will do */
+            }
+        } else {
+            uint32_t a = node + 1, b = n->index;
+            bool ha = slab_test(&nodes[a], &s, tmin, tmax, &entry);
+            bool hb = slab_test(&nodes[b], &s, tmin, tmax, &entry);
+            if (ha && hb)
+                stack[sp++] = b;
+            if (ha || hb) {
+                node = ha ? a : b;
+                continue;
+            }
+        }
+        if (sp == 0)
+            return false;
+        node = stack[--sp];
     }
-    for (uint32_t i = 0; i < sc->n_cones; i++) {
-        st->tests_cone++;
-        if (ray_hit_cone(&sc->cones[i], r, tmin, &t))
-            return true;
+}
+
+bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
+{
+    bool found = false;
+    uint32_t counts[3] = { sc->n_spheres, sc->n_cones, sc->n_polygons };
+    for (uint32_t kind = 0; kind < 3; kind++) {
+        for (uint32_t i = 0; i < counts[kind]; i++) {
+            if (hit_prim(sc, PRIM_REF(kind, i), r, tmin, &h->t, st)) {
+                h->kind = (uint8_t)kind;
+                h->index = i;
+                found = true;
+            }
+        }
     }
-    for (uint32_t i = 0; i < sc->n_polygons; i++) {
-        st->tests_polygon++;
-        if (ray_hit_polygon(sc, &sc->polygons[i], r, tmin, &t))
-            return true;
-    }
-    return false;
+    return found;
 }

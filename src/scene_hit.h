@@ -1,4 +1,5 @@
-/* scene_hit.h - a ray against the whole scene: nearest hit and any hit. */
+/* scene_hit.h - a ray against the whole scene (through its BVH): nearest
+ * hit and any hit. */
 #ifndef SCENE_HIT_H
 #define SCENE_HIT_H
 
@@ -6,8 +7,6 @@
 
 #include "geometry.h"
 #include "stats.h"
-
-enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON };
 
 typedef struct {
     real_t t;
@@ -20,5 +19,9 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
 
 /* Whether anything lies on the ray with tmin < t < tmax (shadow rays). */
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, rt_stats_t *st);
+
+/* scene_nearest without the BVH: every primitive, in table order (the
+ * reference the traversal is tested against). */
+bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);
 
 #endif

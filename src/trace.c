@@ -18,14 +18,18 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     uint16_t mat;
     s.point = ray_at(ray, h->t);
     switch (h->kind) {
+#if RT_USE_SPHERES
     case PRIM_SPHERE:
         ng = n = sphere_normal(&sc->spheres[h->index], s.point);
         mat = sc->spheres[h->index].material;
         break;
+#endif
+#if RT_USE_CONES
     case PRIM_CONE:
         ng = n = cone_normal(&sc->cones[h->index], s.point);
         mat = sc->cones[h->index].material;
         break;
+#endif
     default: {
         const polygon_t *p = &sc->polygons[h->index];
         ng = p->normal;
@@ -48,8 +52,8 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     real_t I = sc->light_intensity;
     colour_t kdc = v3_scale(m->colour, m->kd);
     colour_t c = v3_scale(kdc, I); /* ambient */
+#if RT_USE_SHADOWS
     vec3_t from = v3_madd(s->point, RT_SURFACE_OFFSET, s->n_out);
-
     for (uint32_t i = 0; i < sc->n_lights; i++) {
         const light_t *l = &sc->lights[i];
         vec3_t to_light = v3_sub(l->pos, s->point);
@@ -62,6 +66,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, from)), tr->stats))
             continue;
         colour_t lit = v3_scale(kdc, ndl);
+#if RT_USE_SPECULAR
         if (m->ks > 0) {
             /* Phong: R = 2 (N.L) N - L against V = -D */
             vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
@@ -69,12 +74,22 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
             real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
             lit = v3_add(lit, v3(spec, spec, spec));
         }
+#endif
         c = v3_add(c, v3_scale(v3_mul(lit, l->colour), I));
     }
+#else
+    (void)ray;
+#endif
     return c;
 }
 
-colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth)
+/* Whether a child ray of this weight is worth tracing. */
+static bool worth_tracing(const tracer_t *tr, real_t weight)
+{
+    return tr->min_weight == 0 || weight >= tr->min_weight;
+}
+
+colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
 {
     const scene_t *sc = tr->scene;
     hit_t h;
@@ -91,14 +106,21 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth)
 
     const material_t *m = s.m;
     real_t cos_i = -v3_dot(ray->dir, s.n); /* > 0 */
-    if (m->ks > 0) {
+    (void)weight, (void)cos_i, (void)m;
+#if RT_USE_REFLECTION
+    /* SPD rule 8: a transmitting surface also spawns its reflection ray */
+    if ((m->ks > 0 || (tr->spd_rules && m->t > 0)) && worth_tracing(tr, r_mul(weight, m->ks))) {
         ray_t refl;
         refl.origin = v3_madd(s.point, RT_SURFACE_OFFSET, s.n_out);
         refl.dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s.n));
         tr->stats->reflect_rays++;
-        c = v3_add(c, v3_scale(trace_ray(tr, &refl, depth + 1), m->ks));
+        colour_t rc = trace_ray(tr, &refl, depth + 1, r_mul(weight, m->ks));
+        if (m->ks > 0)
+            c = v3_add(c, v3_scale(rc, m->ks));
     }
-    if (m->t > 0) {
+#endif
+#if RT_USE_REFRACTION
+    if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t))) {
         /* Snell: eta = n1 / n2; no ray on total internal reflection */
         real_t eta = s.entering ? r_div(R_ONE, m->ior) : m->ior;
         real_t sin2_t = r_mul(r_mul(eta, eta), R_ONE - r_mul(cos_i, cos_i));
@@ -108,8 +130,9 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth)
             refr.origin = v3_madd(s.point, -RT_SURFACE_OFFSET, s.n_out);
             refr.dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s.n));
             tr->stats->refract_rays++;
-            c = v3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1), m->t));
+            c = v3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1, r_mul(weight, m->t)), m->t));
         }
     }
+#endif
     return c;
 }

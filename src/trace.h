@@ -9,6 +9,9 @@ typedef struct {
     const scene_t *scene;
     int max_depth;      /* 1..RT_MAX_DEPTH; the eye ray has depth 1 */
     rt_stats_t *stats;
+    bool spd_rules;     /* SPD rule 8: reflect off transmitting surfaces too */
+    real_t min_weight;  /* adaptive depth: skip child rays whose share of
+                         * the pixel falls below this; 0 = off */
 } tracer_t;
 
 /* Secondary rays start this far off the surface, on the side they leave
@@ -19,6 +22,8 @@ typedef struct {
 /* Farthest hit distance (the fixed range). */
 #define RT_T_FAR R_RATIO(32767, 1)
 
-colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth);
+/* Colour seen along `ray`; `weight` is its share of the pixel (1 for an
+ * eye ray, times Ks or T at each bounce). */
+colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight);
 
 #endif

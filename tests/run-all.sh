@@ -19,6 +19,7 @@ run() {
 }
 run "$B/test_fx"
 run "$B/test_geometry"
+run "$B/test_bvh"
 run tests/image-tests.sh "$B/rt" "$B/test-images"
 run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/board-tests.sh "$B/rt"

@@ -30,6 +30,18 @@ static void test_mul_div(void)
           worst_mul / ULP);
     CHECK(worst_div <= 0.5 * ULP, "fx_div: max error %.3f ulp over 2e6 random pairs (bound 0.5)",
           worst_div / ULP);
+    double worst_recip = 0;
+    for (fx_t b = 1; b < (1 << 22); b += 1 + (b >> 12)) {
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            double exact = 1.0 / d(sgn * b);
+            if (fabs(exact) > 32767)
+                continue;
+            double e = fabs(d(fx_recip(sgn * b)) - exact);
+            worst_recip = e > worst_recip ? e : worst_recip;
+        }
+    }
+    CHECK(worst_recip <= 0.5 * ULP, "fx_recip: max error %.3f ulp over |b| up to 64 (bound 0.5)",
+          worst_recip / ULP);
     CHECK(fx_mul(FX_MAX, FX_ONE * 2) == FX_MAX && fx_mul(FX_MAX, -FX_ONE * 2) == FX_MIN,
           "fx_mul saturates instead of wrapping");
     CHECK(fx_div(FX_ONE, 0) == FX_MAX && fx_div(-FX_ONE, 0) == FX_MIN && fx_div(0, 0) == 0,

@@ -95,12 +95,12 @@ static void random_ray(double extent, bool inside, double o[3], double dir[3])
 static bool near_discontinuity(const double o[3], const double dir[3], double eps, double dt)
 {
     probe_hit_t h0, h;
-    bool base = rt_backend_double.probe(o, dir, &h0);
+    bool base = rt_backend_double.probe(o, dir, false, &h0);
     for (int k = 0; k < 3; k++) {
         for (int sgn = -1; sgn <= 1; sgn += 2) {
             double o2[3] = { o[0], o[1], o[2] };
             o2[k] += sgn * eps;
-            bool hit = rt_backend_double.probe(o2, dir, &h);
+            bool hit = rt_backend_double.probe(o2, dir, false, &h);
             if (hit != base || (hit && fabs(h.t - h0.t) > dt))
                 return true;
             for (int m = 0; hit && m < 3; m++)
@@ -124,8 +124,8 @@ static void test_shape(const shape_t *s)
         double o[3], dir[3];
         random_ray(s->extent, i % 4 == 3, o, dir);
         probe_hit_t hf, hd;
-        bool f = rt_backend_fixed.probe(o, dir, &hf);
-        bool dd = rt_backend_double.probe(o, dir, &hd);
+        bool f = rt_backend_fixed.probe(o, dir, false, &hf);
+        bool dd = rt_backend_double.probe(o, dir, false, &hd);
         bool far_apart = f && fabs(hf.t - hd.t) > 0.05 * s->extent;
         for (int k = 0; f && dd && k < 3; k++)
             far_apart |= fabs(hf.normal[k] - hd.normal[k]) > 0.1;

@@ -41,12 +41,25 @@ static uint32_t primitive_count(void)
 
 static uint32_t flat_skipped(void) { return store.scene.n_flat_skipped; }
 
+static void bvh_stats(bvh_stats_t *out) { bvh_tree_stats(&store.scene, out); }
+
 static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     return rt_render(&store.scene, opts, sink, stats, err);
 }
 
-static bool probe(const double o[3], const double d[3], probe_hit_t *out)
+static bool bounds(double mn[3], double mx[3])
+{
+    const scene_t *sc = &store.scene;
+    if (sc->n_bvh_nodes == 0)
+        return false;
+    const bvh_node_t *n = &sc->bvh_nodes[0];
+    mn[0] = to_double(n->min.x), mn[1] = to_double(n->min.y), mn[2] = to_double(n->min.z);
+    mx[0] = to_double(n->max.x), mx[1] = to_double(n->max.y), mx[2] = to_double(n->max.z);
+    return true;
+}
+
+static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t *out)
 {
     const scene_t *sc = &store.scene;
     ray_t r;
@@ -55,7 +68,7 @@ static bool probe(const double o[3], const double d[3], probe_hit_t *out)
     rt_stats_t st = { 0 };
     hit_t h;
     h.t = RT_T_FAR;
-    if (!scene_nearest(sc, &r, RT_T_MIN, &h, &st))
+    if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
         return false;
     vec3_t p = ray_at(&r, h.t), n;
     switch (h.kind) {
@@ -64,6 +77,7 @@ static bool probe(const double o[3], const double d[3], probe_hit_t *out)
     default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;
     }
     out->t = to_double(h.t);
+    out->t_raw = (int64_t)h.t;
     out->normal[0] = to_double(n.x);
     out->normal[1] = to_double(n.y);
     out->normal[2] = to_double(n.z);
@@ -85,5 +99,5 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, render, probe, eye_dir,
+    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, bvh_stats, render, probe, bounds, eye_dir,
 };

@@ -13,6 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "bvh.h"
 #include "fb.h"
 #include "render.h"
 #include "rt_error.h"
@@ -20,6 +21,7 @@
 
 typedef struct {
     double t;
+    int64_t t_raw;      /* t exactly as the backend holds it (fixed: Q16.16 units) */
     double normal[3];   /* shading normal as the tracer uses it (unit, not flipped) */
     int kind;           /* 0 sphere, 1 cone, 2 polygon/patch */
     uint32_t index;
@@ -32,9 +34,13 @@ typedef struct {
     void (*resolution)(uint16_t *width, uint16_t *height);
     uint32_t (*primitive_count)(void);
     uint32_t (*flat_skipped)(void); /* zero-area polygons the reader dropped */
+    void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
-    /* Nearest hit of one ray against the loaded scene (for tests). */
-    bool (*probe)(const double origin[3], const double dir[3], probe_hit_t *hit);
+    /* Nearest hit of one ray against the loaded scene (for tests), through
+     * the BVH or, with `brute`, by testing every primitive. */
+    bool (*probe)(const double origin[3], const double dir[3], bool brute, probe_hit_t *hit);
+    /* The scene's bounds (root box of the BVH); false for an empty scene. */
+    bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */
     bool (*eye_dir)(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3]);
 } rt_backend_t;

@@ -27,7 +27,11 @@ static const char usage_text[] =
     "  --double            double-precision reference build\n"
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
     "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
-    "  --stats             print ray counts and render time on stderr\n"
+    "  --stats             print ray counts, BVH statistics and render time on stderr\n"
+    "  --spd               SPD test procedure: 512x512 pixels (or --size) from corner\n"
+    "                      rays, four averaged per pixel, depth 5, SPD rule 8\n"
+    "  --adaptive W        skip child rays whose share of the pixel is below W\n"
+    "                      (0.001..1; off by default)\n"
     "  --quiet             no progress indicator\n"
     "compare options:\n"
     "  --psnr-min DB       exit 1 if PSNR is below DB\n"
@@ -153,6 +157,14 @@ static double now_seconds(void)
 
 static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int h, double secs)
 {
+    bvh_stats_t bs;
+    be->bvh_stats(&bs);
+    fprintf(stderr,
+            "primitives       %u\n"
+            "bvh nodes        %u (%u leaves, depth %u, largest leaf %u)\n"
+            "bvh SAH estimate %.2f node visits, %.2f primitive tests per ray\n",
+            (unsigned)bs.primitives, (unsigned)bs.nodes, (unsigned)bs.leaves, (unsigned)bs.max_depth,
+            (unsigned)bs.max_leaf_size, bs.sah_nodes_milli / 1000.0, bs.sah_tests_milli / 1000.0);
     fprintf(stderr,
             "backend          %s\n"
             "image            %dx%d\n"
@@ -164,18 +176,20 @@ static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int
             "sphere tests     %llu\n"
             "cone tests       %llu\n"
             "polygon tests    %llu\n"
+            "bvh nodes visited %llu\n"
             "render time      %.3f s\n",
             be->name, w, h, (unsigned long long)st->eye_rays, (unsigned long long)st->eye_hits,
             (unsigned long long)st->reflect_rays, (unsigned long long)st->refract_rays,
             (unsigned long long)st->shadow_rays, (unsigned long long)st->tests_sphere,
-            (unsigned long long)st->tests_cone, (unsigned long long)st->tests_polygon, secs);
+            (unsigned long long)st->tests_cone, (unsigned long long)st->tests_polygon,
+            (unsigned long long)st->bvh_nodes, secs);
 }
 
 static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
     const rt_backend_t *be = &rt_backend_fixed;
-    render_opts_t opts = { 0, 0, 0 };
+    render_opts_t opts = { 0 };
     fb_format_t format = FB_RGB888;
     bool stats = false, quiet = false;
 
@@ -222,6 +236,15 @@ static int cmd_render(int argc, char **argv)
                 format = FB_RGB565;
             else
                 return usage_error("--format: expected rgb888 or rgb565, got '%s'", f);
+        } else if (!strcmp(a, "--spd")) {
+            opts.spd = true;
+        } else if (!strcmp(a, "--adaptive")) {
+            double v;
+            if (!has_value)
+                return usage_error("%s needs a number", a);
+            if (!parse_double(argv[++i], &v) || v < 0.001 || v > 1)
+                return usage_error("--adaptive: expected a number from 0.001 to 1, got '%s'", argv[i]);
+            opts.adaptive_milli = (uint16_t)(v * 1000 + 0.5);
         } else if (!strcmp(a, "--stats")) {
             stats = true;
         } else if (!strcmp(a, "--quiet")) {
@@ -258,6 +281,15 @@ static int cmd_render(int argc, char **argv)
         fprintf(stderr, "%s: note: skipped %u zero-area polygon(s)\n", scene_path,
                 (unsigned)be->flat_skipped());
 
+    if (opts.spd && !opts.width) {
+        opts.width = opts.height = 512;
+    }
+    /* two rows of corner colours, sized for the wider (double) backend */
+    size_t scratch_bytes = 2 * ((size_t)(opts.width ? opts.width : RT_MAX_WIDTH) + 1) * 3 * sizeof(double);
+    void *scratch = opts.spd ? malloc(scratch_bytes) : NULL;
+    opts.scratch = scratch;
+    opts.scratch_bytes = scratch ? scratch_bytes : 0;
+
     static host_sink_t hs;
     hs.sink = (fb_sink_t){ .format = format,
                            .band = { hs.band_a, hs.band_b },
@@ -270,6 +302,7 @@ static int cmd_render(int argc, char **argv)
     double t0 = now_seconds();
     int status = be->render(&opts, &hs.sink, &st, &err);
     double secs = now_seconds() - t0;
+    free(scratch);
     if (hs.progress)
         fprintf(stderr, "\r                \r");
     if (status != 0) {

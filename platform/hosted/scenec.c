@@ -17,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bvh.h"
 #include "nff.h"
 
 #if RT_BACKEND_DOUBLE
@@ -118,6 +119,24 @@ static void emit_tables(FILE *f, const scene_t *sc)
         fprintf(f, "};\n\n");
     }
 
+    if (sc->n_bvh_nodes) {
+        fprintf(f, "static const bvh_node_t bvh_nodes[%" PRIu32 "] TABLE = {\n", sc->n_bvh_nodes);
+        for (uint32_t i = 0; i < sc->n_bvh_nodes; i++) {
+            const bvh_node_t *n = &sc->bvh_nodes[i];
+            fprintf(f, "    { ");
+            emit_vec(f, n->min);
+            fprintf(f, ", ");
+            emit_vec(f, n->max);
+            fprintf(f, ", %" PRIu32 ", %u, %u },\n", n->index, (unsigned)n->count, (unsigned)n->axis);
+        }
+        fprintf(f, "};\n\n");
+        uint32_t n_prims = sc->n_spheres + sc->n_cones + sc->n_polygons;
+        fprintf(f, "static const prim_ref_t bvh_prims[%" PRIu32 "] TABLE = {", n_prims);
+        for (uint32_t i = 0; i < n_prims; i++)
+            fprintf(f, "%s0x%08" PRIx32 "u,", i % 8 ? " " : "\n    ", sc->bvh_prims[i]);
+        fprintf(f, "\n};\n\n");
+    }
+
     const view_t *v = &sc->view;
     fprintf(f, "const scene_t rt_scene TABLE = {\n    .view = { .from = ");
     emit_vec(f, v->from);
@@ -134,6 +153,8 @@ static void emit_tables(FILE *f, const scene_t *sc)
             sc->n_spheres ? "spheres" : "0", sc->n_cones ? "cones" : "0");
     fprintf(f, "    .polygons = %s, .vertices = %s, .normals = %s,\n", sc->n_polygons ? "polygons" : "0",
             sc->n_vertices ? "vertices" : "0", sc->n_normals ? "normals" : "0");
+    fprintf(f, "    .bvh_nodes = %s, .bvh_prims = %s, .n_bvh_nodes = %" PRIu32 ",\n",
+            sc->n_bvh_nodes ? "bvh_nodes" : "0", sc->n_bvh_nodes ? "bvh_prims" : "0", sc->n_bvh_nodes);
     fprintf(f, "    .n_materials = %" PRIu32 ", .n_lights = %" PRIu32 ", .n_spheres = %" PRIu32
                ", .n_cones = %" PRIu32 ", .n_polygons = %" PRIu32 ",\n",
             sc->n_materials, sc->n_lights, sc->n_spheres, sc->n_cones, sc->n_polygons);
@@ -155,7 +176,8 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
     bool refraction = false, reflection = false, specular = false, patches = false;
     for (uint32_t i = 0; i < sc->n_materials; i++) {
         refraction |= sc->materials[i].t > 0;
-        reflection |= sc->materials[i].ks > 0;
+        /* SPD rule 8 traces reflections off transmitting surfaces too */
+        reflection |= sc->materials[i].ks > 0 || sc->materials[i].t > 0;
         specular |= sc->materials[i].ks > 0 && sc->n_lights > 0;
     }
     for (uint32_t i = 0; i < sc->n_polygons; i++)
@@ -169,6 +191,15 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
             sc->n_cones);
     fprintf(f, "#define SCENE_N_POLYGONS %" PRIu32 "\n#define SCENE_N_VERTICES %" PRIu32 "\n\n",
             sc->n_polygons, sc->n_vertices);
+    bvh_stats_t bs;
+    bvh_tree_stats(sc, &bs);
+    fprintf(f, "/* BVH: %" PRIu32 " nodes, %" PRIu32 " leaves, depth %" PRIu32 ", largest leaf %" PRIu32
+               ";\n * SAH estimate per ray: %.2f node visits, %.2f primitive tests */\n",
+            bs.nodes, bs.leaves, bs.max_depth, bs.max_leaf_size, bs.sah_nodes_milli / 1000.0,
+            bs.sah_tests_milli / 1000.0);
+    fprintf(f, "#define SCENE_N_BVH_NODES %" PRIu32 "\n\n", bs.nodes);
+    fprintf(f, "/* What the scene uses; with PRUNE=1 the firmware is built with these\n"
+               " * as its RT_USE_* switches (src/rt_config.h). */\n");
     fprintf(f, "#define SCENE_USES_SPHERES %d\n", sc->n_spheres > 0);
     fprintf(f, "#define SCENE_USES_CONES %d\n", sc->n_cones > 0);
     fprintf(f, "#define SCENE_USES_POLYGONS %d\n", sc->n_polygons > 0);
@@ -176,7 +207,12 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
     fprintf(f, "#define SCENE_USES_SHADOWS %d\n", sc->n_lights > 0);
     fprintf(f, "#define SCENE_USES_SPECULAR %d\n", specular);
     fprintf(f, "#define SCENE_USES_REFLECTION %d\n", reflection);
-    fprintf(f, "#define SCENE_USES_REFRACTION %d\n\n#endif\n", refraction);
+    fprintf(f, "#define SCENE_USES_REFRACTION %d\n\n", refraction);
+    fprintf(f, "#if SCENE_PRUNE\n");
+    static const char *const names[] = { "SPHERES", "CONES", "POLYGONS", "PATCHES", "SHADOWS", "SPECULAR", "REFLECTION", "REFRACTION" };
+    for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
+        fprintf(f, "#define RT_USE_%s SCENE_USES_%s\n", names[i], names[i]);
+    fprintf(f, "#endif\n\n#endif\n");
 }
 
 static FILE *open_out(const char *path)

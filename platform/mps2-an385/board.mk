@@ -18,13 +18,17 @@ BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
 FMT_MACRO := $(if $(filter rgb565,$(FORMAT)),FB_RGB565,FB_RGB888)
-FW_DIR := build/board/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)
+# PRUNE=1 (default): code for primitive kinds and shading features the
+# scene does not use is compiled out (RT_USE_* from scene_data.h).
+PRUNE ?= 1
+FW_DIR := build/board/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)
 
 ARM_ARCH = -mcpu=cortex-m3 -mthumb
 BOARD_CFLAGS = $(WARN) -ffreestanding $(ARM_ARCH) -O2 -g -ffunction-sections -fdata-sections \
                -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
                $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-               -DBOARD_FORMAT=$(FMT_MACRO) -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
+               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -include $(FW_DIR)/scene_data.h \
+               -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
 BOARD_LDFLAGS = $(ARM_ARCH) -nostdlib -nostartfiles -T linker/mps2-an385.ld -Wl,--gc-sections
 
 PORT_SRC  = startup.c uart.c icount.c semihost.c libc_min.c fb_uart.c main.c
@@ -45,12 +49,11 @@ build/scenec/rt-scenec: platform/hosted/scenec.c $(patsubst %,build/scenec/%.o,$
 
 # ---- firmware ------------------------------------------------------------
 
-$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h: $(SCENE) build/scenec/rt-scenec
+$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) build/scenec/rt-scenec
 	@mkdir -p $(@D)
 	build/scenec/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
 
-$(FW_DIR)/scene_text_data.c: $(SCENE) build/scenec/rt-scenec
-	@mkdir -p $(@D)
+$(FW_DIR)/scene_text_data.c: $(SCENE) build/scenec/rt-scenec $(FW_DIR)/scene_data.h
 	build/scenec/rt-scenec $(SCENE) -o $@ --text
 
 # $(1) backend name, $(2) RT_BACKEND_DOUBLE

@@ -18,6 +18,9 @@
 #define BOARD_FORMAT FB_RGB888
 #endif
 #define BOARD_BPP (BOARD_FORMAT == FB_RGB565 ? 2 : 3)
+#ifndef BOARD_ADAPTIVE_MILLI /* adaptive depth threshold in 1/1000; 0 = off */
+#define BOARD_ADAPTIVE_MILLI 0
+#endif
 
 _Static_assert(BOARD_WIDTH >= 1 && BOARD_WIDTH <= RT_MAX_WIDTH, "BOARD_WIDTH out of range");
 _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT out of range");
@@ -55,7 +58,8 @@ int main(void)
         uart_report(err.msg);
         return 2;
     }
-    render_opts_t opts = { BOARD_WIDTH, BOARD_HEIGHT, BOARD_DEPTH };
+    render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
+                           .adaptive_milli = BOARD_ADAPTIVE_MILLI };
     static rt_stats_t st;
     static fb_sink_t sink;
     fb_uart_init(&sink, BOARD_FORMAT, band, sizeof band);
@@ -79,6 +83,7 @@ int main(void)
     report("sphere_tests", st.tests_sphere);
     report("cone_tests", st.tests_cone);
     report("polygon_tests", st.tests_polygon);
+    report("bvh_nodes_visited", st.bvh_nodes);
     report("stack_high_water", stack_high_water());
     report("stack_size", stack_size());
     int guard = stack_guard_intact();

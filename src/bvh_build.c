@@ -1,0 +1,246 @@
+/*
+ * bvh_build.c - binned surface-area-heuristic BVH builder (host side).
+ *
+ * Top down: at each node the primitives' centroids are dropped into
+ * BVH_BINS bins along each axis and the split with the lowest
+ * area(left) * count(left) + area(right) * count(right) wins. Recursion
+ * stops at RT_BVH_LEAF_SIZE primitives, when no split beats a leaf, or
+ * at RT_BVH_MAX_DEPTH (which bounds the traversal stack).
+ */
+#include "bvh.h"
+
+#define BVH_BINS 12
+
+/* Rounding slack added around every primitive's box. */
+#define BOX_SLACK R_RATIO(1, 4096)
+
+typedef struct {
+    vec3_t min, max;
+} box_t;
+
+static box_t box_empty(void)
+{
+    const real_t big = R_RATIO(32767, 1);
+    box_t b = { { big, big, big }, { -big, -big, -big } };
+    return b;
+}
+
+static void box_grow(box_t *b, vec3_t lo, vec3_t hi)
+{
+    b->min = v3(r_min(b->min.x, lo.x), r_min(b->min.y, lo.y), r_min(b->min.z, lo.z));
+    b->max = v3(r_max(b->max.x, hi.x), r_max(b->max.y, hi.y), r_max(b->max.z, hi.z));
+}
+
+/* Half the surface area (exact in the wide type); 0 for an empty box. */
+static real_wide_t box_half_area(const box_t *b)
+{
+    if (b->max.x < b->min.x)
+        return 0;
+    vec3_t d = v3_sub(b->max, b->min);
+    return r_wmul(d.x, d.y) + r_wmul(d.y, d.z) + r_wmul(d.z, d.x);
+}
+
+void prim_box(const scene_t *sc, prim_ref_t ref, vec3_t *min, vec3_t *max)
+{
+    uint32_t i = PRIM_INDEX(ref);
+    vec3_t lo, hi;
+    real_t pad = BOX_SLACK;
+    switch (PRIM_KIND(ref)) {
+    case PRIM_SPHERE: {
+        const sphere_t *s = &sc->spheres[i];
+        lo = hi = s->centre;
+        pad += s->radius;
+        break;
+    }
+    case PRIM_CONE: {
+        /* both end discs fit in boxes of their larger radius */
+        const cone_t *c = &sc->cones[i];
+        vec3_t apex = v3_madd(c->base, c->height, c->axis);
+        lo = v3(r_min(c->base.x, apex.x), r_min(c->base.y, apex.y), r_min(c->base.z, apex.z));
+        hi = v3(r_max(c->base.x, apex.x), r_max(c->base.y, apex.y), r_max(c->base.z, apex.z));
+        pad += r_max(c->r0, c->r0 + r_mul(c->slope, c->height));
+        break;
+    }
+    default:
+        lo = sc->polygons[i].box_min; /* already padded */
+        hi = sc->polygons[i].box_max;
+        break;
+    }
+    *min = v3(lo.x - pad, lo.y - pad, lo.z - pad);
+    *max = v3(hi.x + pad, hi.y + pad, hi.z + pad);
+}
+
+typedef struct {
+    scene_store_t *st;
+    uint32_t n_nodes;
+    const char *error;
+} builder_t;
+
+static real_t centroid(const scene_t *sc, prim_ref_t ref, unsigned axis)
+{
+    vec3_t lo, hi;
+    prim_box(sc, ref, &lo, &hi);
+    return v3_axis(&lo, axis) / 2 + v3_axis(&hi, axis) / 2;
+}
+
+static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t depth)
+{
+    const scene_t *sc = &b->st->scene;
+    prim_ref_t *prims = b->st->bvh_prims;
+    uint32_t node = b->n_nodes++;
+    bvh_node_t *n = &b->st->bvh_nodes[node];
+
+    box_t box = box_empty(), cbox = box_empty();
+    for (uint32_t i = first; i < first + count; i++) {
+        vec3_t lo, hi;
+        prim_box(sc, prims[i], &lo, &hi);
+        box_grow(&box, lo, hi);
+        vec3_t c = v3(lo.x / 2 + hi.x / 2, lo.y / 2 + hi.y / 2, lo.z / 2 + hi.z / 2);
+        box_grow(&cbox, c, c);
+    }
+    n->min = box.min;
+    n->max = box.max;
+    n->axis = 0;
+
+    /* best binned split over the three axes */
+    int best_axis = -1, best_split = 0;
+    real_wide_t best_cost = 0;
+    real_t best_lo = 0, best_scale = 0;
+    for (unsigned axis = 0; axis < 3 && count > RT_BVH_LEAF_SIZE; axis++) {
+        real_t lo = v3_axis(&cbox.min, axis), extent = v3_axis(&cbox.max, axis) - lo;
+        if (extent <= 0)
+            continue;
+        real_t scale = r_div(r_from_int(BVH_BINS), extent);
+        box_t bins[BVH_BINS];
+        uint32_t counts[BVH_BINS] = { 0 };
+        for (unsigned k = 0; k < BVH_BINS; k++)
+            bins[k] = box_empty();
+        for (uint32_t i = first; i < first + count; i++) {
+            int32_t k = r_floor_int(r_mul(centroid(sc, prims[i], axis) - lo, scale));
+            k = k < 0 ? 0 : k >= BVH_BINS ? BVH_BINS - 1 : k;
+            vec3_t plo, phi;
+            prim_box(sc, prims[i], &plo, &phi);
+            box_grow(&bins[k], plo, phi);
+            counts[k]++;
+        }
+        /* cost of splitting after bin s: sweep from the right, then the left */
+        real_wide_t right_cost[BVH_BINS];
+        box_t acc = box_empty();
+        uint32_t acc_n = 0;
+        for (int k = BVH_BINS - 1; k > 0; k--) {
+            box_grow(&acc, bins[k].min, bins[k].max);
+            acc_n += counts[k];
+            right_cost[k - 1] = box_half_area(&acc) * (int64_t)acc_n;
+        }
+        acc = box_empty();
+        acc_n = 0;
+        for (int s = 0; s < BVH_BINS - 1; s++) {
+            box_grow(&acc, bins[s].min, bins[s].max);
+            acc_n += counts[s];
+            if (acc_n == 0 || acc_n == count)
+                continue;
+            real_wide_t cost = box_half_area(&acc) * (int64_t)acc_n + right_cost[s];
+            if (best_axis < 0 || cost < best_cost) {
+                best_axis = (int)axis;
+                best_split = s;
+                best_cost = cost;
+                best_lo = lo;
+                best_scale = scale;
+            }
+        }
+    }
+    /* a leaf when small, too deep, or when no split beats testing all */
+    bool leaf = best_axis < 0 || depth + 1 >= RT_BVH_MAX_DEPTH ||
+                (count <= 4 * RT_BVH_LEAF_SIZE && best_cost >= box_half_area(&box) * (int64_t)count);
+    if (leaf) {
+        if (count > 0xFFFF) {
+            b->error = "BVH leaf over 65535 primitives (raise RT_BVH_MAX_DEPTH)";
+            count = 0xFFFF;
+        }
+        n->index = first;
+        n->count = (uint16_t)count;
+        return node;
+    }
+    /* partition in place: bins <= best_split go left */
+    uint32_t i = first, j = first + count;
+    while (i < j) {
+        int32_t k = r_floor_int(r_mul(centroid(sc, prims[i], (unsigned)best_axis) - best_lo, best_scale));
+        if (k <= best_split) {
+            i++;
+        } else {
+            prim_ref_t tmp = prims[i];
+            prims[i] = prims[--j];
+            prims[j] = tmp;
+        }
+    }
+    uint32_t left_n = i - first;
+    if (left_n == 0 || left_n == count)
+        left_n = count / 2; /* rounding put everything on one side */
+    n->axis = (uint8_t)best_axis;
+    n->count = 0;
+    build(b, first, left_n, depth + 1); /* left child is node + 1 */
+    uint32_t right = build(b, first + left_n, count - left_n, depth + 1);
+    b->st->bvh_nodes[node].index = right;
+    return node;
+}
+
+const char *bvh_build(scene_store_t *st)
+{
+    scene_t *sc = &st->scene;
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < sc->n_spheres; i++)
+        st->bvh_prims[n++] = PRIM_REF(PRIM_SPHERE, i);
+    for (uint32_t i = 0; i < sc->n_cones; i++)
+        st->bvh_prims[n++] = PRIM_REF(PRIM_CONE, i);
+    for (uint32_t i = 0; i < sc->n_polygons; i++)
+        st->bvh_prims[n++] = PRIM_REF(PRIM_POLYGON, i);
+    builder_t b = { st, 0, 0 };
+    if (n > 0)
+        build(&b, 0, n, 0);
+    sc->bvh_nodes = st->bvh_nodes;
+    sc->bvh_prims = st->bvh_prims;
+    sc->n_bvh_nodes = b.n_nodes;
+    return b.error;
+}
+
+static void walk(const scene_t *sc, uint32_t node, uint32_t depth, real_wide_t root_area,
+                 bvh_stats_t *out, real_t *visits, real_t *tests)
+{
+    const bvh_node_t *n = &sc->bvh_nodes[node];
+    box_t box = { n->min, n->max };
+    real_wide_t area = box_half_area(&box);
+    out->nodes++;
+    out->max_depth = depth > out->max_depth ? depth : out->max_depth;
+    /* a random ray through the root meets this node with odds area/root */
+    *visits += r_wdiv(area, root_area);
+    if (n->count) {
+        out->leaves++;
+        out->max_leaf_size = n->count > out->max_leaf_size ? n->count : out->max_leaf_size;
+        *tests += r_wdiv(area, root_area) * (int32_t)n->count;
+        return;
+    }
+    walk(sc, node + 1, depth + 1, root_area, out, visits, tests);
+    walk(sc, n->index, depth + 1, root_area, out, visits, tests);
+}
+
+static uint32_t to_milli(real_t v)
+{
+    int32_t whole = r_floor_int(v);
+    return (uint32_t)(whole * 1000 + r_floor_int(r_mul(v - r_from_int(whole), r_from_int(1000))));
+}
+
+void bvh_tree_stats(const scene_t *sc, bvh_stats_t *out)
+{
+    *out = (bvh_stats_t){ 0 };
+    out->primitives = sc->n_spheres + sc->n_cones + sc->n_polygons;
+    if (sc->n_bvh_nodes == 0)
+        return;
+    box_t root = { sc->bvh_nodes[0].min, sc->bvh_nodes[0].max };
+    real_wide_t root_area = box_half_area(&root);
+    real_t visits = 0, tests = 0;
+    if (root_area <= 0)
+        return;
+    walk(sc, 0, 1, root_area, out, &visits, &tests);
+    out->sah_nodes_milli = to_milli(visits);
+    out->sah_tests_milli = to_milli(tests);
+}
