@@ -105,6 +105,7 @@ static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
     }
 }
 
+#if RT_USE_PATCHES
 /* Index i of the fan triangle (0, i, i+1) holding q, or 0 when none. */
 static uint32_t fan_triangle(const scene_t *sc, const polygon_t *p, pt2_t q)
 {
@@ -118,6 +119,8 @@ static uint32_t fan_triangle(const scene_t *sc, const polygon_t *p, pt2_t q)
     }
     return 0;
 }
+
+#endif
 
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
                      real_t *t)
@@ -144,8 +147,12 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     if (th <= tmin || th >= *t)
         return false;
     pt2_t q = project(p, ray_at(r, th));
+#if RT_USE_PATCHES
     bool inside = p->normals == POLY_NO_NORMALS ? inside_even_odd(sc, p, q)
                                                 : fan_triangle(sc, p, q) != 0;
+#else
+    bool inside = inside_even_odd(sc, p, q);
+#endif
     if (!inside)
         return false;
     *t = th;
@@ -154,6 +161,10 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
 
 vec3_t polygon_shading_normal(const scene_t *sc, const polygon_t *p, vec3_t point)
 {
+#if !RT_USE_PATCHES
+    (void)sc, (void)point;
+    return p->normal;
+#else
     if (p->normals == POLY_NO_NORMALS)
         return p->normal;
     pt2_t q = project(p, point);
@@ -169,4 +180,5 @@ vec3_t polygon_shading_normal(const scene_t *sc, const polygon_t *p, vec3_t poin
     real_t wa = R_ONE - wb - wc;
     vec3_t s = v3_add(v3_add(v3_scale(n[0], wa), v3_scale(n[i], wb)), v3_scale(n[i + 1], wc));
     return v3_unit(s);
+#endif
 }

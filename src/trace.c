@@ -50,6 +50,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
+    (void)ray; /* only the specular term looks at it */
     colour_t kdc = v3_scale(m->colour, m->kd);
     colour_t c = v3_scale(kdc, I); /* ambient */
 #if RT_USE_SHADOWS
@@ -77,14 +78,12 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
 #endif
         c = v3_add(c, v3_scale(v3_mul(lit, l->colour), I));
     }
-#else
-    (void)ray;
 #endif
     return c;
 }
 
 /* Whether a child ray of this weight is worth tracing. */
-static bool worth_tracing(const tracer_t *tr, real_t weight)
+static inline bool worth_tracing(const tracer_t *tr, real_t weight)
 {
     return tr->min_weight == 0 || weight >= tr->min_weight;
 }

@@ -33,6 +33,20 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
     fi
 done
 
+# Compile-time pruning changes code size, never pixels: unpruned firmware
+# (every primitive kind and feature compiled in) must give the same image.
+code_of() { arm-none-eabi-size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
+for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
+    p=$(fwdir $s 64x64) u="$(fwdir $s 64x64)-noprune"
+    if make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 >"$OUT/$s-noprune.build" 2>&1 &&
+       platform/mps2-an385/qemu-run.sh "$u/fixed.elf" "$OUT/$s-noprune.png" "$RT" >"$OUT/$s-noprune.report" 2>&1 &&
+       [ -f "$OUT/$s-board.png" ] && "$RT" compare "$OUT/$s-noprune.png" "$OUT/$s-board.png" --max-error 0 >/dev/null; then
+        ok "$s: pruned == unpruned image; code $(code_of "$p/fixed.elf") vs $(code_of "$u/fixed.elf") bytes"
+    else
+        bad "$s: pruned and unpruned firmware differ or failed"
+    fi
+done
+
 # The RGB565 framebuffer path on the board against the host's.
 d=build/board/rings-1-48x32-d3-rgb565
 if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=48x32 DEPTH=3 FORMAT=rgb565 >"$OUT/565.build" 2>&1 &&

@@ -22,6 +22,7 @@ run "$B/test_geometry"
 run "$B/test_bvh"
 run tests/image-tests.sh "$B/rt" "$B/test-images"
 run tests/cli-tests.sh "$B/rt" "$B/test-cli"
+run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
 echo
 echo "$total_pass passed, $total_fail failed"

@@ -1,0 +1,31 @@
+#!/bin/sh
+# SPD mode: every SPD size-2 scene rendered by the SPD procedure (512x512
+# from 513x513 corner rays, depth 5, rule 8) in the fixed and the double
+# build; their ray statistics must agree within 1%, and the images must
+# meet the image-test tolerance.
+RT=${1:-build/asan/rt}
+OUT=${2:-build/test-spd}
+mkdir -p "$OUT"
+pass=0 fail=0
+echo "SPD-mode tests: ray statistics, fixed vs double, within 1%"
+stat() { awk -v k="$1" 'index($0, k) == 1 { print $NF }' "$2"; }
+for s in balls-2 rings-2 teapot-2 tetra-2; do
+    "$RT" scenes/spd/$s.nff -o "$OUT/$s-fixed.png" --spd --fixed --stats --quiet 2>"$OUT/$s-fixed.stats" &&
+    "$RT" scenes/spd/$s.nff -o "$OUT/$s-double.png" --spd --double --stats --quiet 2>"$OUT/$s-double.stats" || {
+        fail=$((fail + 1)); echo "  FAIL  $s: render failed"; continue; }
+    line="" bad=0
+    for k in "eye rays" "eye hits" "reflect rays" "refract rays" "shadow rays"; do
+        f=$(stat "$k" "$OUT/$s-fixed.stats") d=$(stat "$k" "$OUT/$s-double.stats")
+        dev=$(awk -v f="$f" -v d="$d" 'BEGIN { x = f - d; if (x < 0) x = -x; y = (d > 0) ? 100 * x / d : ((x > 0) ? 100 : 0); printf "%.3f", y }')
+        line="$line $k $f/$d ($dev%);"
+        awk -v v="$dev" 'BEGIN { exit !(v > 1.0) }' && bad=1
+    done
+    if [ $bad -eq 0 ]; then pass=$((pass + 1)); echo "  ok    $s:$line"; else fail=$((fail + 1)); echo "  FAIL  $s:$line"; fi
+    if cmp=$("$RT" compare "$OUT/$s-fixed.png" "$OUT/$s-double.png" --psnr-min 40 --max-over8 0.5); then
+        pass=$((pass + 1)); echo "  ok    $s SPD image: $cmp"
+    else
+        fail=$((fail + 1)); echo "  FAIL  $s SPD image: $cmp"
+    fi
+done
+echo "spd-tests: $pass passed, $fail failed"
+[ $fail -eq 0 ]
