@@ -98,6 +98,8 @@ deps:
 bench: deps
 	$(MAKE) build/host/rt build/scenec/rt-scenec
 	@sh bench/board-bench.sh
+	@echo
+	@sh bench/bvh-bench.sh
 
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt
 

@@ -10,6 +10,10 @@
 #include "bvh.h"
 
 #define BVH_BINS 12
+/* Cost of visiting a node (two box tests) in units of one primitive test:
+ * about what a fixed-point box test costs against a sphere test on the
+ * Cortex-M3. It is what makes small groups end as leaves. */
+#define BVH_TRAVERSAL_COST 2
 
 /* Rounding slack added around every primitive's box. */
 #define BOX_SLACK R_RATIO(1, 4096)
@@ -149,9 +153,12 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
             }
         }
     }
-    /* a leaf when small, too deep, or when no split beats testing all */
+    /* a leaf when small, too deep, or when no split beats testing all
+     * (SAH: traversal + area-weighted tests of the children) */
+    real_wide_t area = box_half_area(&box);
     bool leaf = best_axis < 0 || depth + 1 >= RT_BVH_MAX_DEPTH ||
-                (count <= 4 * RT_BVH_LEAF_SIZE && best_cost >= box_half_area(&box) * (int64_t)count);
+                (depth == 0 && count < RT_BVH_MIN_PRIMITIVES) ||
+                (count <= 16 && area * BVH_TRAVERSAL_COST + best_cost >= area * (int64_t)count);
     if (leaf) {
         if (count > 0xFFFF) {
             b->error = "BVH leaf over 65535 primitives (raise RT_BVH_MAX_DEPTH)";

@@ -60,6 +60,9 @@
 #ifndef RT_BVH_LEAF_SIZE            /* the builder stops splitting at this many */
 #define RT_BVH_LEAF_SIZE 2
 #endif
+#ifndef RT_BVH_MIN_PRIMITIVES       /* below this many, one leaf: testing them all */
+#define RT_BVH_MIN_PRIMITIVES 16    /* beats any box test on the M3 */
+#endif
 
 /* Compile-time pruning: code for what a scene does not use is left out.
  * All on by default; a board build gets them from the scene compiler's

@@ -109,9 +109,11 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
     real_t entry, ea, eb;
     if (sc->n_bvh_nodes == 0)
         return false;
-    slab_init(&s, r);
-    if (!slab_test(&nodes[0], &s, tmin, h->t, &entry))
-        return false;
+    if (nodes[0].count == 0) { /* a one-leaf tree skips the box tests */
+        slab_init(&s, r);
+        if (!slab_test(&nodes[0], &s, tmin, h->t, &entry))
+            return false;
+    }
     bvh_stack_t stack[RT_BVH_MAX_DEPTH];
     unsigned sp = 0;
     uint32_t node = 0;
@@ -172,12 +174,14 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     real_t entry;
     if (sc->n_bvh_nodes == 0)
         return false;
-    slab_init(&s, r);
+    if (nodes[0].count == 0) {
+        slab_init(&s, r);
+        if (!slab_test(&nodes[0], &s, tmin, tmax, &entry))
+            return false;
+    }
     uint32_t stack[RT_BVH_MAX_DEPTH];
     unsigned sp = 0;
     uint32_t node = 0;
-    if (!slab_test(&nodes[0], &s, tmin, tmax, &entry))
-        return false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
         st->bvh_nodes++;

@@ -80,9 +80,11 @@ $(FW_DIR)/fixed.elf: $(FIXED_OBJS) linker/mps2-an385.ld
 	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,-Map=$(FW_DIR)/fixed.map -o $@ $(FIXED_OBJS) -lgcc
 
 # The same core with the double backend, as soft-float: what a user
-# without this project would run. It reads the embedded NFF text at boot.
+# without this project would run. It reads the embedded NFF text at boot
+# and builds its BVH there, hence the larger stack.
 $(FW_DIR)/double.elf: $(DOUBLE_OBJS) linker/mps2-an385.ld
-	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,-Map=$(FW_DIR)/double.map -o $@ $(DOUBLE_OBJS) -lm -lc -lgcc
+	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/double.map \
+	    -o $@ $(DOUBLE_OBJS) -lm -lc -lgcc
 
 firmware: $(FW_DIR)/fixed.elf
 
