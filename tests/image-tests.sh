@@ -37,6 +37,19 @@ if "$RT" scenes/spd/balls-1.nff -o "$OUT/balls-1-565.png" --size 64x48 --format 
 else
     fail=$((fail + 1)); echo "  FAIL  rgb565 render failed"
 fi
+# Adaptive depth: off by default; on, it must trace fewer reflection rays
+# and stay within the image tolerance of the full tree.
+"$RT" scenes/spd/rings-2.nff -o "$OUT/rings-2-full.png" --size 96x96 --stats --quiet 2>"$OUT/full.stats"
+"$RT" scenes/spd/rings-2.nff -o "$OUT/rings-2-adaptive.png" --size 96x96 --adaptive 0.1 --stats --quiet 2>"$OUT/adaptive.stats"
+full=$(awk '/^reflect rays/ { print $3 }' "$OUT/full.stats")
+adap=$(awk '/^reflect rays/ { print $3 }' "$OUT/adaptive.stats")
+if [ -n "$full" ] && [ -n "$adap" ] && [ "$adap" -lt "$full" ] &&
+   cmp=$("$RT" compare "$OUT/rings-2-adaptive.png" "$OUT/rings-2-full.png" --psnr-min 40); then
+    pass=$((pass + 1)); printf '  ok    %-28s reflect rays %s -> %s, %s\n' "adaptive depth 0.1" "$full" "$adap" "$cmp"
+else
+    fail=$((fail + 1)); printf '  FAIL  %-28s reflect rays %s -> %s %s\n' "adaptive depth 0.1" "$full" "$adap" "$cmp"
+fi
+
 # Every SPD scene, the "default" sizes included, loads within the hosted
 # capacities and renders (tiny, to keep the brute-force time down).
 for f in scenes/spd/*.nff; do
