@@ -40,15 +40,15 @@ asan_LDFLAGS = -fsanitize=address,undefined
 .PHONY: all run host-run test clean deps size bench firmware
 all: build/host/rt
 
-# $(1) variant, $(2) backend name, $(3) RT_BACKEND_DOUBLE value
+# $(1) variant, $(2) backend name, $(3) backend flags
 define core_rules
 build/$(1)/$(2)/%.o: src/%.c $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) -DRT_BACKEND_DOUBLE=$(3) -Isrc -c $$< -o $$@
+	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Isrc -c $$< -o $$@
 
 build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) -DRT_BACKEND_DOUBLE=$(3) $(HOST_INC) -c $$< -o $$@
+	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) $(HOST_INC) -c $$< -o $$@
 
 build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) build/$(1)/$(2)/backend.o
 	$$(LD) -r -o $$@.tmp $$^
@@ -57,23 +57,35 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 endef
 
 define host_rules
-$(call core_rules,$(1),fixed,0)
-$(call core_rules,$(1),double,1)
+$(call core_rules,$(1),fixed,)
+$(call core_rules,$(1),double,-DRT_BACKEND_DOUBLE=1)
+$(call core_rules,$(1),float,-DRT_BACKEND_FLOAT=1)
 
 build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lz -lm
 
-build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o tests/testlib.h
+build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o tests/testlib.h
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
-	    -o $$@ $$< build/$(1)/core-fixed.o build/$(1)/core-double.o -lm
+	    -o $$@ $$< build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o -lm
 endef
 
 $(eval $(call host_rules,host))
 $(eval $(call host_rules,asan))
+
+# Numeric configurations for the benchmark: the host tools again, with the
+# fixed backend built with other fraction bits or fast operations.
+CONFIGS = q20 q20fast q16 q16fast q12 q24
+CFG_q20 =
+CFG_q20fast = -DFX_FAST_MATH=1
+CFG_q16 = -DFX_FRAC_BITS=16
+CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
+CFG_q12 = -DFX_FRAC_BITS=12
+CFG_q24 = -DFX_FRAC_BITS=24
+$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
 
 # The fixed-point unit test links the fixed scalar layer alone.
 build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile

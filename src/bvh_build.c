@@ -24,7 +24,7 @@ typedef struct {
 
 static box_t box_empty(void)
 {
-    const real_t big = R_RATIO(32767, 1);
+    const real_t big = R_BIG;
     box_t b = { { big, big, big }, { -big, -big, -big } };
     return b;
 }
@@ -42,6 +42,17 @@ static real_wide_t box_half_area(const box_t *b)
         return 0;
     vec3_t d = v3_sub(b->max, b->min);
     return r_wmul(d.x, d.y) + r_wmul(d.y, d.z) + r_wmul(d.z, d.x);
+}
+
+/* area * count for the SAH; the fixed build drops the area's extra F
+ * fraction bits first so the product stays inside 64 bits. */
+static real_wide_t sah_cost(real_wide_t half_area, uint32_t count)
+{
+#if RT_BACKEND_FIXED
+    return (half_area >> FX_FRAC_BITS) * (int64_t)count;
+#else
+    return half_area * (real_wide_t)count;
+#endif
 }
 
 void prim_box(const scene_t *sc, prim_ref_t ref, vec3_t *min, vec3_t *max)
@@ -134,7 +145,7 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
         for (int k = BVH_BINS - 1; k > 0; k--) {
             box_grow(&acc, bins[k].min, bins[k].max);
             acc_n += counts[k];
-            right_cost[k - 1] = box_half_area(&acc) * (int64_t)acc_n;
+            right_cost[k - 1] = sah_cost(box_half_area(&acc), acc_n);
         }
         acc = box_empty();
         acc_n = 0;
@@ -143,7 +154,7 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
             acc_n += counts[s];
             if (acc_n == 0 || acc_n == count)
                 continue;
-            real_wide_t cost = box_half_area(&acc) * (int64_t)acc_n + right_cost[s];
+            real_wide_t cost = sah_cost(box_half_area(&acc), acc_n) + right_cost[s];
             if (best_axis < 0 || cost < best_cost) {
                 best_axis = (int)axis;
                 best_split = s;
@@ -158,7 +169,7 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
     real_wide_t area = box_half_area(&box);
     bool leaf = best_axis < 0 || depth + 1 >= RT_BVH_MAX_DEPTH ||
                 (depth == 0 && count < RT_BVH_MIN_PRIMITIVES) ||
-                (count <= 16 && area * BVH_TRAVERSAL_COST + best_cost >= area * (int64_t)count);
+                (count <= 16 && sah_cost(area, BVH_TRAVERSAL_COST) + best_cost >= sah_cost(area, count));
     if (leaf) {
         if (count > 0xFFFF) {
             b->error = "BVH leaf over 65535 primitives (raise RT_BVH_MAX_DEPTH)";

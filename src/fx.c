@@ -1,6 +1,20 @@
 /* fx.c - the out-of-line fixed-point operations (see fx.h for accuracy). */
 #include "fx.h"
 
+/* FX_FAST_MATH trades exactness for instructions: one Newton step less
+ * in the reciprocal square root (relative error 2^-20 instead of 2^-29),
+ * no exact last-unit fix of square roots, 16 instead of 24 log2 bits and
+ * a degree-6 exp2 in powers, and division by reciprocal multiplication. */
+#if FX_FAST_MATH
+#define RSQRT_STEPS 2
+#define POW_LOG_BITS 16
+#define EXP2_DEGREE 6
+#else
+#define RSQRT_STEPS 3
+#define POW_LOG_BITS 24
+#define EXP2_DEGREE 9
+#endif
+
 /* Leading zero bits of a non-zero 64-bit value (CLZ on the M3). */
 static int clz64(uint64_t v)
 {
@@ -28,7 +42,7 @@ static uint32_t rsqrt_q31(uint32_t x)
         1179918260u, 1158266544u, 1137764631u, 1118314230u, 1099828424u, 1082230034u,
     };
     uint64_t y = seed[(x >> 27) - 8];
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < RSQRT_STEPS; i++) {
         uint64_t y2 = (y * y) >> 31;                /* Q.31 */
         uint64_t xy2 = ((uint64_t)x * y2) >> 30;    /* Q.31, close to 1 */
         y = (y * (((uint64_t)3 << 31) - xy2)) >> 32;
@@ -53,16 +67,28 @@ static uint64_t isqrt64_round(uint64_t v)
     uint32_t x = normalise_even(v, &s);
     /* sqrt(v) = (x / 2^30) (y / 2^31) 2^((62 - s) / 2) */
     uint64_t r = ((uint64_t)x * rsqrt_q31(x)) >> (30 + s / 2);
+#if FX_FAST_MATH
+    if (r > 0xFFFFFFFFu)
+        r = 0xFFFFFFFFu;
+    if (r * r > v)
+        r--;
+#else
     while (r * r > v)
         r--;
     while (r < 0xFFFFFFFFu && (r + 1) * (r + 1) <= v)
         r++;
+#endif
     /* (r + 1/2)^2 = r^2 + r + 1/4: round up when v - r^2 > r */
     return v - r * r > r ? r + 1 : r;
 }
 
 fx_t fx_div(fx_t a, fx_t b)
 {
+#if FX_FAST_MATH && FX_FRAC_BITS <= 16
+    /* a * (1 / b): one 32-bit divide; a few ulps off for large a */
+    if (b >= FX_ONE / 256 || b <= -FX_ONE / 256)
+        return fx_mul(a, fx_recip(b));
+#endif
     if (b == 0) {
         FX_ON_SATURATE();
         return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
@@ -182,7 +208,7 @@ static int32_t log2_q24(fx_t x)
     /* x = (m / 2^30) * 2^(30 - s - F), with m/2^30 in [1, 2). */
     int32_t result = (30 - s - FX_FRAC_BITS) * ((int32_t)1 << 24);
     uint64_t mm = m;
-    for (int bit = 23; bit >= 0; bit--) {
+    for (int bit = 23; bit >= 24 - POW_LOG_BITS; bit--) {
         mm = (mm * mm) >> 30;
         if (mm >= ((uint64_t)2 << 30)) {
             mm >>= 1;
@@ -202,8 +228,8 @@ static uint64_t exp2_frac_q30(int32_t f_q24)
         1431680u, 165394u, 16377u, 1419u, 109u,
     };
     uint64_t z = (uint64_t)f_q24 << 6; /* Q.30 */
-    uint64_t p = coef[9];
-    for (int k = 8; k >= 0; k--)
+    uint64_t p = coef[EXP2_DEGREE];
+    for (int k = EXP2_DEGREE - 1; k >= 0; k--)
         p = coef[k] + ((p * z) >> 30);
     return p;
 }
@@ -257,10 +283,11 @@ fx_wide_t fx_tan_deg_wide(fx_t deg)
     if (c <= 0)
         return INT64_MAX;
     int64_t t30 = (s * ((int64_t)1 << 30)) / c; /* tan in Q.30 (s < 2^30, fits) */
-    const int sh = 2 * FX_FRAC_BITS - 30;
-    if (sh >= 0)
-        return t30 * ((int64_t)1 << sh);
-    return fx_round_shift(t30, (unsigned)-sh);
+#if 2 * FX_FRAC_BITS >= 30
+    return t30 * ((int64_t)1 << (2 * FX_FRAC_BITS - 30));
+#else
+    return fx_round_shift(t30, 30 - 2 * FX_FRAC_BITS);
+#endif
 }
 
 bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits, uint32_t max, int32_t *out)

@@ -3,14 +3,16 @@
  *
  * The tracer source uses real_t with the ordinary + - < > operators and
  * the r_* functions below for everything else, so the same code builds as
- *   fixed point (RT_BACKEND_DOUBLE == 0): real_t = fx_t, Q(31-F).F, and
- *   double      (RT_BACKEND_DOUBLE == 1): the reference the fixed build is
- *               measured against.
+ *   fixed point (the default): real_t = fx_t, Q(31-F).F, the product;
+ *   double      (RT_BACKEND_DOUBLE=1): the reference the fixed build is
+ *               measured against;
+ *   float       (RT_BACKEND_FLOAT=1): single precision, for comparison.
  * real_wide_t holds exact products (Q.2F in the fixed build) so that
  * discriminants and dot products lose nothing before the final rounding.
  *
- * The double backend uses the compiler's sqrt/pow/tan builtins; it is the
- * reference for the host and the soft-float benchmark, not the product.
+ * The floating-point backends use the compiler's sqrt/pow/tan builtins;
+ * they are references for the host and the soft-float benchmark, not the
+ * product.
  */
 #ifndef REAL_H
 #define REAL_H
@@ -20,43 +22,53 @@
 
 #include "rt_config.h"
 
-#if RT_BACKEND_DOUBLE
+#if RT_BACKEND_DOUBLE || RT_BACKEND_FLOAT
 
+/* Floating point: double (the reference) or float (what a user of single
+ * precision would run); the same code with the type and builtins swapped. */
+#if RT_BACKEND_FLOAT
+typedef float real_t;
+#define R_BACKEND_NAME "float"
+#define R_FN(name) __builtin_##name##f
+#define R_EPSILON 0x1p-23f
+#else
 typedef double real_t;
-typedef double real_wide_t;
-typedef double shine_t;
-
-#define R_RATIO(n, d) ((double)(n) / (double)(d))
-#define R_ONE 1.0
 #define R_BACKEND_NAME "double"
+#define R_FN(name) __builtin_##name
+#define R_EPSILON 0x1p-52
+#endif
+typedef real_t real_wide_t;
+typedef real_t shine_t;
 
-static inline real_t r_from_int(int32_t i) { return (double)i; }
+#define R_RATIO(n, d) ((real_t)(n) / (real_t)(d))
+#define R_ONE ((real_t)1)
+#define R_BIG ((real_t)1e30)                   /* "no hit yet" distance */
+#define R_ULPS(n) ((real_t)(n) * (real_t)0x1p-16) /* n units of Q16.16, for margins */
+
+static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
-static inline real_t r_recip(real_t b) { return 1.0 / b; }
+static inline real_t r_recip(real_t b) { return R_ONE / b; }
 static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
-static inline real_t r_sqrt(real_t a) { return a > 0 ? __builtin_sqrt(a) : 0.0; }
+static inline real_t r_sqrt(real_t a) { return a > 0 ? R_FN(sqrt)(a) : 0; }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return a * b; }
 static inline real_wide_t r_to_wide(real_t a) { return a; }
 static inline real_t r_from_wide(real_wide_t w) { return w; }
-static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? __builtin_sqrt(w) : 0.0; }
+static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? R_FN(sqrt)(w) : 0; }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
-static inline int32_t r_floor_int(real_t a) { return (int32_t)__builtin_floor(a); }
+static inline int32_t r_floor_int(real_t a) { return (int32_t)R_FN(floor)(a); }
 static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
 /* the next value above a (a > 0) */
-static inline real_t r_next_up(real_t a) { return a + a * 0x1p-52; }
-static inline real_t r_pow_unit(real_t x, shine_t s)
-{
-    return x <= 0 ? 0.0 : __builtin_pow(x, s);
-}
+static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
+static inline real_t r_pow_unit(real_t x, shine_t s) { return x <= 0 ? 0 : R_FN(pow)(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg)
 {
-    return __builtin_tan(deg * (3.14159265358979323846 / 180.0));
+    return R_FN(tan)(deg * (real_t)(3.14159265358979323846 / 180.0));
 }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
 {
-    double l = __builtin_sqrt(x * x + y * y + z * z);
+    real_t l = R_FN(sqrt)(x * x + y * y + z * z);
     if (l == 0) {
         out[0] = out[1] = out[2] = 0;
         return;
@@ -72,7 +84,7 @@ static inline uint8_t r_to_u8(real_t c)
         return 0;
     if (c >= 1)
         return 255;
-    return (uint8_t)(c * 255.0 + 0.5);
+    return (uint8_t)(c * 255 + (real_t)0.5);
 }
 bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out);
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out);
@@ -87,6 +99,8 @@ typedef fx_shine_t shine_t;
 
 #define R_RATIO(n, d) FX_RATIO(n, d)
 #define R_ONE FX_ONE
+#define R_BIG FX_MAX
+#define R_ULPS(n) ((fx_t)(n))
 #define R_BACKEND_NAME "fixed"
 
 static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }

@@ -1,7 +1,7 @@
-/* real_double.c - decimal conversion for the double (reference) backend. */
+/* real_double.c - decimal conversion for the floating-point backends. */
 #include "real.h"
 
-#if RT_BACKEND_DOUBLE
+#if RT_BACKEND_DOUBLE || RT_BACKEND_FLOAT
 
 /* mant * 10^exp10 to within a few ulps; the reference need not be exact. */
 static bool decimal_to_double(bool neg, uint64_t mant, int32_t exp10, double *out)
@@ -24,12 +24,20 @@ static bool decimal_to_double(bool neg, uint64_t mant, int32_t exp10, double *ou
 
 bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
 {
-    return decimal_to_double(neg, mant, exp10, out);
+    double v;
+    if (!decimal_to_double(neg, mant, exp10, &v) || v > 1e30 || v < -1e30)
+        return false;
+    *out = (real_t)v;
+    return true;
 }
 
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
 {
-    return !neg && decimal_to_double(false, mant, exp10, out) && *out <= 1048575.0;
+    double v;
+    if (neg || !decimal_to_double(false, mant, exp10, &v) || v > 524287.0)
+        return false;
+    *out = (shine_t)v;
+    return true;
 }
 
 #else

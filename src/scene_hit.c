@@ -10,13 +10,19 @@
  */
 #include "scene_hit.h"
 
-/* Relative and absolute widening of every slab interval. A Q16.16
- * reciprocal is good to 2^-17 relative and each product to half a unit. */
-#define SLAB_EPS_REL R_RATIO(1, 16384)
-#define SLAB_EPS_ABS R_RATIO(4, 65536)
-/* Axes where |d| is below this have a reciprocal beyond the fixed range;
- * they are handled as parallel plus the drift d * tmax. */
+/* Relative and absolute widening of every slab interval: 4 units of the
+ * last place. A reciprocal of magnitude >= 1 is good to half a unit,
+ * relative, and each product to half a unit. */
+#define SLAB_EPS_REL R_ULPS(4)
+#define SLAB_EPS_ABS R_ULPS(4)
+/* Axes where |d| is below this would have a reciprocal too large for the
+ * 64-bit products (|1/d| < 2^(29-F)); they are handled as parallel plus
+ * the drift d * tmax. */
+#if !RT_BACKEND_FIXED
 #define SLAB_PARALLEL R_RATIO(1, 8192)
+#else
+#define SLAB_PARALLEL R_RATIO(1, (int64_t)1 << (29 - FX_FRAC_BITS))
+#endif
 
 typedef struct {
     vec3_t origin;
@@ -57,7 +63,7 @@ static bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t 
  * where it enters (for nearest-first ordering). */
 static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, real_t tmax, real_t *entry)
 {
-    real_t lo = R_RATIO(-32767, 1), hi = R_RATIO(32767, 1);
+    real_t lo = -R_BIG, hi = R_BIG;
     if (!slab_axis(s, 0, s->origin.x, n->min.x, n->max.x, tmax, &lo, &hi) ||
         !slab_axis(s, 1, s->origin.y, n->min.y, n->max.y, tmax, &lo, &hi) ||
         !slab_axis(s, 2, s->origin.z, n->min.z, n->max.z, tmax, &lo, &hi))

@@ -17,10 +17,10 @@ typedef struct {
 /* Secondary rays start this far off the surface, on the side they leave
  * by, so rounding cannot make them hit their own surface. */
 #define RT_SURFACE_OFFSET R_RATIO(1, 2048)
-/* Nearest accepted hit distance. */
-#define RT_T_MIN R_RATIO(1, 65536)
-/* Farthest hit distance (the fixed range). */
-#define RT_T_FAR R_RATIO(32767, 1)
+/* Nearest accepted hit distance: one unit of the last place. */
+#define RT_T_MIN R_ULPS(1)
+/* Farthest hit distance (the end of the fixed range). */
+#define RT_T_FAR R_BIG
 
 /* Colour seen along `ray`; `weight` is its share of the pixel (1 for an
  * eye ray, times Ks or T at each bounce). */

@@ -10,6 +10,10 @@
 #define BACKEND_SYMBOL rt_backend_double
 static real_t to_real(double v) { return v; }
 static double to_double(real_t v) { return v; }
+#elif RT_BACKEND_FLOAT
+#define BACKEND_SYMBOL rt_backend_float
+static real_t to_real(double v) { return (float)v; }
+static double to_double(real_t v) { return v; }
 #else
 #define BACKEND_SYMBOL rt_backend_fixed
 static real_t to_real(double v)
@@ -77,7 +81,11 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;
     }
     out->t = to_double(h.t);
+#if RT_BACKEND_FIXED
     out->t_raw = (int64_t)h.t;
+#else
+    out->t_raw = 0;
+#endif
     out->normal[0] = to_double(n.x);
     out->normal[1] = to_double(n.y);
     out->normal[2] = to_double(n.z);

@@ -47,5 +47,6 @@ typedef struct {
 
 extern const rt_backend_t rt_backend_fixed;
 extern const rt_backend_t rt_backend_double;
+extern const rt_backend_t rt_backend_float;
 
 #endif

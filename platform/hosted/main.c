@@ -25,6 +25,7 @@ static const char usage_text[] =
     "  --size WxH          image size (default: the scene's resolution)\n"
     "  --fixed             fixed-point build of the core (default)\n"
     "  --double            double-precision reference build\n"
+    "  --float             single-precision build (for comparison)\n"
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
     "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
     "  --stats             print ray counts, BVH statistics and render time on stderr\n"
@@ -219,6 +220,8 @@ static int cmd_render(int argc, char **argv)
             be = &rt_backend_fixed;
         } else if (!strcmp(a, "--double")) {
             be = &rt_backend_double;
+        } else if (!strcmp(a, "--float")) {
+            be = &rt_backend_float;
         } else if (!strcmp(a, "--depth")) {
             long d;
             if (!has_value)

@@ -20,8 +20,8 @@
 #include "bvh.h"
 #include "nff.h"
 
-#if RT_BACKEND_DOUBLE
-#error "the scene compiler emits fixed-point tables: build it with RT_BACKEND_DOUBLE=0"
+#if !RT_BACKEND_FIXED
+#error "the scene compiler emits fixed-point tables: build it for the fixed backend"
 #endif
 
 static scene_store_t store;
@@ -282,7 +282,7 @@ int main(int argc, char **argv)
         emit_text(f, text, len);
     } else {
         fprintf(f, "#include <stdint.h>\n\n#include \"scene.h\"\n\n");
-        fprintf(f, "#if RT_BACKEND_DOUBLE || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
+        fprintf(f, "#if !RT_BACKEND_FIXED || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
         fprintf(f, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",
                 FX_FRAC_BITS);
         emit_tables(f, &store.scene);

@@ -21,13 +21,18 @@ FMT_MACRO := $(if $(filter rgb565,$(FORMAT)),FB_RGB565,FB_RGB888)
 # PRUNE=1 (default): code for primitive kinds and shading features the
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
 PRUNE ?= 1
-FW_DIR := build/board/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)
+# CONFIG picks a numeric configuration of the fixed backend (CFG_* in the
+# Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12, q24.
+CONFIG ?= q20
+CFG_FLAGS := $(CFG_$(CONFIG))
+FW_DIR := build/board/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
+SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 ARM_ARCH = -mcpu=cortex-m3 -mthumb
 BOARD_CFLAGS = $(WARN) -ffreestanding $(ARM_ARCH) -O2 -g -ffunction-sections -fdata-sections \
                -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
                $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -include $(FW_DIR)/scene_data.h \
+               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) $(CFG_FLAGS) -include $(FW_DIR)/scene_data.h \
                -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
 BOARD_LDFLAGS = $(ARM_ARCH) -nostdlib -nostartfiles -T linker/mps2-an385.ld -Wl,--gc-sections
 
@@ -40,41 +45,43 @@ QEMU_FLAGS = -M mps2-an385 -nographic -monitor none \
 
 # ---- scene compiler (a host tool, with the firmware's capacities) -------
 
-build/scenec/%.o: src/%.c $(wildcard src/*.h) $(BOARD_DIR)/board.mk
+$(SCENEC_DIR)/%.o: src/%.c $(wildcard src/*.h) $(BOARD_DIR)/board.mk
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) -DRT_BACKEND_DOUBLE=0 -Isrc -c $< -o $@
+	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -c $< -o $@
 
-build/scenec/rt-scenec: platform/hosted/scenec.c $(patsubst %,build/scenec/%.o,$(CORE_NAMES))
-	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) -Isrc -o $@ $^
+$(SCENEC_DIR)/rt-scenec: platform/hosted/scenec.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES))
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -o $@ $^
 
 # ---- firmware ------------------------------------------------------------
 
-$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) build/scenec/rt-scenec
+$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scenec
 	@mkdir -p $(@D)
-	build/scenec/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
+	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
 
-$(FW_DIR)/scene_text_data.c: $(SCENE) build/scenec/rt-scenec $(FW_DIR)/scene_data.h
-	build/scenec/rt-scenec $(SCENE) -o $@ --text
+$(FW_DIR)/scene_text_data.c: $(SCENE) $(SCENEC_DIR)/rt-scenec $(FW_DIR)/scene_data.h
+	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $@ --text
 
-# $(1) backend name, $(2) RT_BACKEND_DOUBLE
+# $(1) backend name, $(2) backend flags
 define firmware_objs
 $(FW_DIR)/$(1)/%.o: src/%.c $(wildcard src/*.h) $(FW_DIR)/scene_data.h
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+	$$(ARM_CC) $$(BOARD_CFLAGS) $(2) -c $$< -o $$@
 
 $(FW_DIR)/$(1)/%.o: $(BOARD_DIR)/%.c $(wildcard $(BOARD_DIR)/*.h) $(wildcard src/*.h) $(FW_DIR)/scene_data.h
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+	$$(ARM_CC) $$(BOARD_CFLAGS) $(2) -c $$< -o $$@
 
 $(FW_DIR)/$(1)/%.o: $(FW_DIR)/%.c $(wildcard src/*.h)
 	@mkdir -p $$(@D)
-	$$(ARM_CC) $$(BOARD_CFLAGS) -DRT_BACKEND_DOUBLE=$(2) -c $$< -o $$@
+	$$(ARM_CC) $$(BOARD_CFLAGS) $(2) -c $$< -o $$@
 endef
-$(eval $(call firmware_objs,fixed,0))
-$(eval $(call firmware_objs,double,1))
+$(eval $(call firmware_objs,fixed,))
+$(eval $(call firmware_objs,double,-DRT_BACKEND_DOUBLE=1))
+$(eval $(call firmware_objs,float,-DRT_BACKEND_FLOAT=1))
 
 FIXED_OBJS = $(patsubst %,$(FW_DIR)/fixed/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_flash scene_data)
 DOUBLE_OBJS = $(patsubst %,$(FW_DIR)/double/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_text scene_text_data)
+FLOAT_OBJS = $(patsubst %,$(FW_DIR)/float/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_text scene_text_data)
 
 $(FW_DIR)/fixed.elf: $(FIXED_OBJS) linker/mps2-an385.ld
 	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,-Map=$(FW_DIR)/fixed.map -o $@ $(FIXED_OBJS) -lgcc
@@ -85,6 +92,11 @@ $(FW_DIR)/fixed.elf: $(FIXED_OBJS) linker/mps2-an385.ld
 $(FW_DIR)/double.elf: $(DOUBLE_OBJS) linker/mps2-an385.ld
 	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/double.map \
 	    -o $@ $(DOUBLE_OBJS) -lm -lc -lgcc
+
+# ... and as single-precision soft-float (__aeabi_f*).
+$(FW_DIR)/float.elf: $(FLOAT_OBJS) linker/mps2-an385.ld
+	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/float.map \
+	    -o $@ $(FLOAT_OBJS) -lm -lc -lgcc
 
 firmware: $(FW_DIR)/fixed.elf
 
