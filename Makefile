@@ -7,7 +7,9 @@
 #   make host-run   the same render on the host, fixed and double
 #   make size       flash/RAM by section and stack use of the firmware
 #   make test       install missing packages, build, run every test
-#   make bench      board instructions per pixel, fixed vs soft-float double
+#   make bench      run time against error over numeric configurations, BVH
+#                   scaling, code size with and without pruning (< 15 min)
+#   make bench-quick  a subset of the first (< 2 min)
 #
 # The core (src/) is compiled once per numeric backend; each copy is
 # partially linked with platform/hosted/backend.c into one object that
@@ -37,7 +39,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps size bench firmware
+.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) backend flags
@@ -107,11 +109,17 @@ include platform/mps2-an385/board.mk
 deps:
 	@sh platform/ensure-deps.sh
 
+# Run time against error over the numeric configurations (bench/results.md,
+# results.csv, plot.svg), then the BVH and pruning figures.
 bench: deps
-	$(MAKE) build/host/rt build/scenec/rt-scenec
-	@sh bench/board-bench.sh
+	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
+	python3 bench/run_bench.py
 	@echo
 	@sh bench/bvh-bench.sh
+
+bench-quick: deps
+	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
+	python3 bench/run_bench.py --quick
 
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt
 

@@ -7,6 +7,7 @@ command -v make >/dev/null 2>&1 || need="$need make"
 command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
 command -v python3 >/dev/null 2>&1 || need="$need python3"
+command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
 # the board: cross compiler, newlib (libm for the soft-float comparison), QEMU
 command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
 [ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"

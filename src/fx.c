@@ -4,7 +4,7 @@
 /* FX_FAST_MATH trades exactness for instructions: one Newton step less
  * in the reciprocal square root (relative error 2^-20 instead of 2^-29),
  * no exact last-unit fix of square roots, 16 instead of 24 log2 bits and
- * a degree-6 exp2 in powers, and division by reciprocal multiplication. */
+ * a degree-6 exp2 in powers, and no exact last-unit fix of quotients. */
 #if FX_FAST_MATH
 #define RSQRT_STEPS 2
 #define POW_LOG_BITS 16
@@ -82,47 +82,52 @@ static uint64_t isqrt64_round(uint64_t v)
     return v - r * r > r ? r + 1 : r;
 }
 
+/* 2^62 / x in Q.31 for x in [2^31, 2^32): a 16-bit estimate from one
+ * 32-bit hardware divide (UDIV, 2..12 cycles on the M3), then one Newton
+ * step y' = y (2 - x y); relative error below 2^-29. */
+static uint32_t recip_q31(uint32_t x)
+{
+    uint32_t y = (0xFFFFFFFFu / (x >> 16)) << 14;          /* within 2^-15 */
+    uint32_t two_minus_xy = 0u - (uint32_t)(((uint64_t)x * y) >> 31); /* 2^32 - x y */
+    return (uint32_t)(((uint64_t)y * two_minus_xy) >> 31);
+}
+
 fx_t fx_div(fx_t a, fx_t b)
 {
-#if FX_FAST_MATH && FX_FRAC_BITS <= 16
-    /* a * (1 / b): one 32-bit divide; a few ulps off for large a */
-    if (b >= FX_ONE / 256 || b <= -FX_ONE / 256)
-        return fx_mul(a, fx_recip(b));
-#endif
     if (b == 0) {
         FX_ON_SATURATE();
         return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
     }
-    int64_t n = (int64_t)a * FX_ONE;
-    int64_t d = b;
-    int64_t h = (d < 0 ? -d : d) / 2;
-    return fx_sat64((n >= 0 ? n + h : n - h) / d);
+    /* q = |a| 2^F / |b| from the reciprocal of |b| normalised to
+     * [2^31, 2^32): an estimate within 2 of the truth, then fixed exactly
+     * with the integer remainder (no 64-bit divide, which the M3 lacks). */
+    uint64_t n = (uint64_t)(a < 0 ? -(int64_t)a : a);
+    uint64_t d = (uint64_t)(b < 0 ? -(int64_t)b : b);
+    int s = clz64(d) - 32;
+    uint64_t y = recip_q31((uint32_t)(d << s));   /* 2^62 / (d 2^s) */
+    int shift = 62 - FX_FRAC_BITS - s;            /* q = n y 2^-shift */
+    uint64_t ny = n * y;                          /* < 2^62 */
+    uint64_t q = shift >= 0 ? ny >> shift : (shift > -8 ? ny << -shift : UINT64_MAX);
+    bool neg = (a < 0) != (b < 0);
+    if (q > ((uint64_t)1 << 32))
+        return fx_sat64(neg ? -((int64_t)1 << 32) : (int64_t)1 << 32);
+    int64_t r = (int64_t)(n << FX_FRAC_BITS) - (int64_t)(q * d);
+#if !FX_FAST_MATH
+    while (r < 0) {
+        q--;
+        r += (int64_t)d;
+    }
+    while (r >= (int64_t)d) {
+        q++;
+        r -= (int64_t)d;
+    }
+#endif
+    if (2 * r >= (int64_t)d) /* round half away from zero */
+        q++;
+    return fx_sat64(neg ? -(int64_t)q : (int64_t)q);
 }
 
-fx_t fx_recip(fx_t b)
-{
-#if FX_FRAC_BITS <= 16
-    /* round(2^2F / |b|) from one 32-bit divide of 2^32 - 1 (the M3's UDIV
-     * takes 2..12 cycles; a 64-bit divide is a long library call) */
-    if (b == 0 || b == INT32_MIN)
-        return fx_div(FX_ONE, b);
-    uint32_t d = (uint32_t)(b < 0 ? -b : b);
-    const unsigned sh = 32 - 2 * FX_FRAC_BITS; /* 2^2F = 2^32 >> sh */
-    uint64_t num = (uint64_t)1 << (32 - sh);
-    uint64_t q = (uint32_t)(0xFFFFFFFFu >> sh) / d; /* floor((2^2F - 1) / d) */
-    uint64_t rem = num - q * d;                      /* in [1, d] */
-    if (rem >= d) {
-        q++;
-        rem -= d;
-    }
-    if (2 * rem >= d)
-        q++;
-    int64_t r = b < 0 ? -(int64_t)q : (int64_t)q;
-    return fx_sat64(r);
-#else
-    return fx_div(FX_ONE, b);
-#endif
-}
+fx_t fx_recip(fx_t b) { return fx_div(FX_ONE, b); }
 
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
 {

@@ -114,6 +114,13 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_MAX_HEIGHT 4096
 #endif
 
+/* For the few small helpers in the innermost loops. */
+#if defined(__GNUC__)
+#define RT_INLINE __attribute__((always_inline)) inline
+#else
+#define RT_INLINE inline
+#endif
+
 /* Keeps a helper's locals out of the recursive trace_ray frame, which is
  * what bounds the stack (RT_MAX_DEPTH frames of it). */
 #if defined(__GNUC__)

@@ -10,10 +10,9 @@
  */
 #include "scene_hit.h"
 
-/* Relative and absolute widening of every slab interval: 4 units of the
- * last place. A reciprocal of magnitude >= 1 is good to half a unit,
- * relative, and each product to half a unit. */
-#define SLAB_EPS_REL R_ULPS(4)
+/* Every slab interval is widened by 4 units of the last place per unit
+ * of t plus 4 units (r_widen_down/up): a reciprocal of magnitude >= 1 is
+ * good to half a unit, relative, and each product to one unit. */
 #define SLAB_EPS_ABS R_ULPS(4)
 /* Axes where |d| is below this would have a reciprocal too large for the
  * 64-bit products (|1/d| < 2^(29-F)); they are handled as parallel plus
@@ -28,6 +27,7 @@ typedef struct {
     vec3_t origin;
     real_t inv[3], dir_abs[3];
     bool parallel[3];
+    bool negative[3];   /* the ray enters a slab at its max side */
 } slab_ray_t;
 
 static void slab_init(slab_ray_t *s, const ray_t *r)
@@ -37,25 +37,24 @@ static void slab_init(slab_ray_t *s, const ray_t *r)
     for (int a = 0; a < 3; a++) {
         s->dir_abs[a] = r_abs(d[a]);
         s->parallel[a] = s->dir_abs[a] < SLAB_PARALLEL;
+        s->negative[a] = d[a] < 0;
         s->inv[a] = s->parallel[a] ? 0 : r_recip(d[a]);
     }
 }
 
-static bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t bmax, real_t tmax,
-                      real_t *lo, real_t *hi)
+/* One axis of the slab test, in the wide type: t = (bound - o) / d as an
+ * exact product with the reciprocal, so no rounding or saturation here. */
+static RT_INLINE bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t bmax,
+                                 real_t tmax, real_wide_t *lo, real_wide_t *hi)
 {
     if (s->parallel[a]) {
         real_t drift = r_mul(s->dir_abs[a], tmax) + SLAB_EPS_ABS;
         return o >= r_add_sat(bmin, -drift) && o <= r_add_sat(bmax, drift);
     }
-    real_t t0 = r_mul_diff(bmin, o, s->inv[a]), t1 = r_mul_diff(bmax, o, s->inv[a]);
-    if (t0 > t1) {
-        real_t tmp = t0;
-        t0 = t1;
-        t1 = tmp;
-    }
-    *lo = r_max(*lo, t0);
-    *hi = r_min(*hi, t1);
+    real_t near = s->negative[a] ? bmax : bmin, far = s->negative[a] ? bmin : bmax;
+    real_wide_t t0 = r_wmul_diff(near, o, s->inv[a]), t1 = r_wmul_diff(far, o, s->inv[a]);
+    *lo = t0 > *lo ? t0 : *lo;
+    *hi = t1 < *hi ? t1 : *hi;
     return true;
 }
 
@@ -63,17 +62,17 @@ static bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t 
  * where it enters (for nearest-first ordering). */
 static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, real_t tmax, real_t *entry)
 {
-    real_t lo = -R_BIG, hi = R_BIG;
+    real_wide_t lo = r_to_wide(-R_BIG), hi = r_to_wide(R_BIG);
     if (!slab_axis(s, 0, s->origin.x, n->min.x, n->max.x, tmax, &lo, &hi) ||
         !slab_axis(s, 1, s->origin.y, n->min.y, n->max.y, tmax, &lo, &hi) ||
         !slab_axis(s, 2, s->origin.z, n->min.z, n->max.z, tmax, &lo, &hi))
         return false;
-    /* widen once by more than the rounding of the products */
-    lo = r_add_sat(lo, -(r_mul(r_abs(lo), SLAB_EPS_REL) + SLAB_EPS_ABS));
-    hi = r_add_sat(hi, r_mul(r_abs(hi), SLAB_EPS_REL) + SLAB_EPS_ABS);
-    if (lo > hi || hi < tmin || lo > tmax)
+    /* widen once by more than the rounding of the reciprocals */
+    lo = r_wwiden_down(lo);
+    hi = r_wwiden_up(hi);
+    if (lo > hi || hi < r_to_wide(tmin) || lo > r_to_wide(tmax))
         return false;
-    *entry = r_max(lo, tmin);
+    *entry = lo > r_to_wide(tmin) ? r_from_wide(lo) : tmin;
     return true;
 }
 

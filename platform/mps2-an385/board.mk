@@ -113,3 +113,6 @@ run: deps
 
 size: $(FW_DIR)/fixed.elf
 	@$(BOARD_DIR)/footprint.sh $(FW_DIR)/fixed.elf $(FW_DIR)/fixed $(FW_DIR)/report.txt
+
+print-fwdir:
+	@echo $(FW_DIR)
