@@ -22,6 +22,14 @@ typedef struct {
     rt_error_t *err;
     bool have_view, have_material;
     uint16_t material;
+    /* Range management: a first pass only measures the positions (their
+     * largest binary exponent); the second converts every position times
+     * 2^scale_log2, exactly, so the scene fills the fixed range. */
+    bool measuring;
+    int32_t max_exp2;
+    uint32_t max_line;     /* where the largest position is */
+    const char *max_what;
+    int32_t scale_log2;
 } reader_t;
 
 /* ---- tokens ----------------------------------------------------------- */
@@ -210,6 +218,45 @@ static bool read_vec3(reader_t *r, const char *what, vec3_t *v)
     return read_real(r, what, &v->x) && read_real(r, what, &v->y) && read_real(r, what, &v->z);
 }
 
+/* An upper bound p with |mant * 10^exp10| < 2^p (within 2 of the least). */
+static int32_t decimal_exp2_bound(uint64_t mant, int32_t exp10)
+{
+    int32_t bits = 0;
+    while (bits < 64 && (mant >> bits) != 0)
+        bits++;
+    /* log2(10) = 3.3219...: round up for 10^e, down for 10^-e */
+    return exp10 >= 0 ? bits + (exp10 * 3322 + 999) / 1000 : bits - (-exp10 * 3321) / 1000;
+}
+
+/* A position (or a length): scaled by 2^scale_log2 with the rest of the
+ * scene; in the measuring pass only its size is recorded. */
+static bool read_pos(reader_t *r, const char *what, real_t *out)
+{
+    decimal_t d;
+    if (!read_decimal(r, what, &d))
+        return false;
+    *out = 0;
+    if (r->measuring) {
+        if (d.mant != 0) {
+            int32_t p = decimal_exp2_bound(d.mant, d.exp10);
+            if (p > r->max_exp2) {
+                r->max_exp2 = p;
+                r->max_line = r->tok_line;
+                r->max_what = what;
+            }
+        }
+        return true;
+    }
+    if (!r_from_decimal_scaled(d.neg, d.mant, d.exp10, r->scale_log2, out))
+        return out_of_range(r, what);
+    return true;
+}
+
+static bool read_pos3(reader_t *r, const char *what, vec3_t *v)
+{
+    return read_pos(r, what, &v->x) && read_pos(r, what, &v->y) && read_pos(r, what, &v->z);
+}
+
 /* A non-negative integer in [lo, hi]. */
 static bool read_count(reader_t *r, const char *what, uint32_t lo, uint32_t hi, uint32_t *out)
 {
@@ -275,8 +322,8 @@ static bool read_view(reader_t *r)
         uint32_t w = 0, h = 0;
         bool ok = true;
         switch (k) {
-        case 0: ok = read_vec3(r, "from", &v->from); break;
-        case 1: ok = read_vec3(r, "at", &v->at); break;
+        case 0: ok = read_pos3(r, "from", &v->from); break;
+        case 1: ok = read_pos3(r, "at", &v->at); break;
         case 2: ok = read_vec3(r, "up", &v->up); break;
         case 3: ok = read_real(r, "angle", &v->angle); break;
         case 4: ok = read_real(r, "hither", &hither); break; /* ignored by the model */
@@ -290,21 +337,23 @@ static bool read_view(reader_t *r)
         if (!ok)
             return false;
     }
+    r->have_view = true;
+    if (r->measuring)
+        return true;
     camera_t cam;
     const char *why = camera_init(&cam, v, r->st->scene.width, r->st->scene.height);
     if (why)
         return fail(r, line, why);
-    r->have_view = true;
     return true;
 }
 
 static bool read_light(reader_t *r)
 {
     scene_t *sc = &r->st->scene;
-    if (!CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
+    if (!r->measuring && !CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
         return false;
-    light_t *l = &r->st->lights[sc->n_lights];
-    if (!read_vec3(r, "l", &l->pos))
+    light_t scratch, *l = r->measuring ? &scratch : &r->st->lights[sc->n_lights];
+    if (!read_pos3(r, "l", &l->pos))
         return false;
     l->colour = v3(R_ONE, R_ONE, R_ONE);
     /* optional colour: three more numbers on the same line */
@@ -324,7 +373,8 @@ static bool read_light(reader_t *r)
         r->p = save_p;
         r->line = save_line;
     }
-    sc->n_lights++;
+    if (!r->measuring)
+        sc->n_lights++;
     return true;
 }
 
@@ -342,6 +392,9 @@ static bool read_material(reader_t *r)
         return false;
     if (m.t > 0 && m.ior <= 0)
         return fail(r, r->tok_line, "f: index of refraction must be positive");
+    r->have_material = true;
+    if (r->measuring)
+        return true;
     /* reuse an identical material (SPD files repeat a few many times) */
     for (uint32_t i = 0; i < sc->n_materials; i++) {
         const material_t *o = &r->st->materials[i];
@@ -367,9 +420,12 @@ static bool read_sphere(reader_t *r)
     uint32_t line = r->tok_line;
     vec3_t c;
     real_t rad;
-    if (!need_material(r, "s") || !CHECK_ROOM(r, sc->n_spheres, RT_MAX_SPHERES, "spheres") ||
-        !read_vec3(r, "s", &c) || !read_real(r, "s", &rad))
+    if (!need_material(r, "s") ||
+        (!r->measuring && !CHECK_ROOM(r, sc->n_spheres, RT_MAX_SPHERES, "spheres")) ||
+        !read_pos3(r, "s", &c) || !read_pos(r, "s", &rad))
         return false;
+    if (r->measuring)
+        return true;
     const char *why = sphere_init(&r->st->spheres[sc->n_spheres], c, rad, r->material);
     if (why)
         return fail(r, line, why);
@@ -383,10 +439,13 @@ static bool read_cone(reader_t *r)
     uint32_t line = r->tok_line;
     vec3_t base, apex;
     real_t rb, ra;
-    if (!need_material(r, "c") || !CHECK_ROOM(r, sc->n_cones, RT_MAX_CONES, "cones") ||
-        !read_vec3(r, "c", &base) || !read_real(r, "c", &rb) || !read_vec3(r, "c", &apex) ||
-        !read_real(r, "c", &ra))
+    if (!need_material(r, "c") ||
+        (!r->measuring && !CHECK_ROOM(r, sc->n_cones, RT_MAX_CONES, "cones")) ||
+        !read_pos3(r, "c", &base) || !read_pos(r, "c", &rb) || !read_pos3(r, "c", &apex) ||
+        !read_pos(r, "c", &ra))
         return false;
+    if (r->measuring)
+        return true;
     const char *why = cone_init(&r->st->cones[sc->n_cones], base, rb, apex, ra, r->material);
     if (why)
         return fail(r, line, why);
@@ -400,29 +459,34 @@ static bool read_polygon(reader_t *r, bool patch)
     const char *what = patch ? "pp" : "p";
     uint32_t line = r->tok_line, n;
     if (!need_material(r, what) ||
-        !CHECK_ROOM(r, sc->n_polygons, RT_MAX_POLYGONS, "polygons and patches"))
+        (!r->measuring && !CHECK_ROOM(r, sc->n_polygons, RT_MAX_POLYGONS, "polygons and patches")))
         return false;
     if (!read_count(r, what, 3, 0xFFFFFFFFu >> 8, &n))
         return false;
     if (n > RT_MAX_POLY_VERTS)
         return over_capacity(r, "vertices in one polygon", "RT_MAX_POLY_VERTS", RT_MAX_POLY_VERTS);
-    if (n > RT_MAX_VERTICES - sc->n_vertices)
+    if (!r->measuring && n > RT_MAX_VERTICES - sc->n_vertices)
         return over_capacity(r, "vertices", "RT_MAX_VERTICES", RT_MAX_VERTICES);
-    if (patch && n > RT_MAX_VERTICES - sc->n_normals)
+    if (!r->measuring && patch && n > RT_MAX_VERTICES - sc->n_normals)
         return over_capacity(r, "patch normals", "RT_MAX_VERTICES", RT_MAX_VERTICES);
     for (uint32_t i = 0; i < n; i++) {
-        if (!read_vec3(r, what, &r->st->vertices[sc->n_vertices + i]))
+        vec3_t scratch;
+        if (!read_pos3(r, what, r->measuring ? &scratch : &r->st->vertices[sc->n_vertices + i]))
             return false;
         if (patch) {
             vec3_t nv;
             if (!read_vec3(r, what, &nv))
                 return false;
+            if (r->measuring)
+                continue;
             nv = v3_unit(nv);
             if (nv.x == 0 && nv.y == 0 && nv.z == 0)
                 return fail(r, r->tok_line, "pp: vertex normal is zero");
             r->st->normals[sc->n_normals + i] = nv;
         }
     }
+    if (r->measuring)
+        return true;
     if (polygon_is_flat(r->st->vertices, sc->n_vertices, (uint16_t)n)) {
         sc->n_flat_skipped++; /* invisible: nothing to intersect */
         return true;
@@ -474,6 +538,38 @@ static bool read_entity(reader_t *r)
     return fail_tok(r, "", "unknown entity (expected v, b, l, f, c, s, p or pp)");
 }
 
+/* The power of two that brings the scene's largest coordinate below
+ * RT_SCENE_EXTENT (so squared distances stay inside the scalar's range),
+ * as large as possible (so positions keep the most fraction bits). */
+static bool choose_scale(reader_t *r)
+{
+    int32_t k = r->max_exp2 == INT32_MIN ? 0 : RT_SCENE_EXTENT_LOG2 - r->max_exp2;
+    if (k < RT_SCALE_LOG2_MIN || k > RT_SCALE_LOG2_MAX) {
+        rt_error_set(r->err, r->max_line, r->max_what);
+        rt_error_append(r->err, k < RT_SCALE_LOG2_MIN ? ": scene too large for the fixed range (coordinates up to 2^"
+                                                      : ": scene too small for the fixed range (coordinates only up to 2^");
+        rt_error_append_int(r->err, r->max_exp2);
+        rt_error_append(r->err, k < RT_SCALE_LOG2_MIN ? ", at most 2^" : ", at least 2^");
+        rt_error_append_int(r->err, RT_SCENE_EXTENT_LOG2 - (k < RT_SCALE_LOG2_MIN ? RT_SCALE_LOG2_MIN : RT_SCALE_LOG2_MAX));
+        rt_error_append(r->err, ")");
+        return false;
+    }
+    r->scale_log2 = k;
+    return true;
+}
+
+static bool read_pass(reader_t *r)
+{
+    for (;;) {
+        if (!next_token(r))
+            return false;
+        if (r->tok == 0)
+            return true;
+        if (!read_entity(r))
+            return false;
+    }
+}
+
 bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *err)
 {
     reader_t r = { 0 };
@@ -483,6 +579,25 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     r.tok_line = 1;
     r.st = store;
     r.err = err;
+    r.measuring = true;
+    r.max_exp2 = INT32_MIN;
+    err->line = 0;
+    err->msg[0] = '\0';
+    if (!read_pass(&r))
+        return false;
+    if (!r.have_view)
+        return fail(&r, r.tok_line, "no 'v' viewpoint in the file");
+    if (!choose_scale(&r))
+        return false;
+    int32_t scale = r.scale_log2;
+    r = (reader_t){ 0 };
+    r.p = text;
+    r.end = text + len;
+    r.line = 1;
+    r.tok_line = 1;
+    r.st = store;
+    r.err = err;
+    r.scale_log2 = scale;
     scene_t *sc = &store->scene;
     *sc = (scene_t){ 0 };
     sc->materials = store->materials;
@@ -492,19 +607,9 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     sc->polygons = store->polygons;
     sc->vertices = store->vertices;
     sc->normals = store->normals;
-    err->line = 0;
-    err->msg[0] = '\0';
-
-    for (;;) {
-        if (!next_token(&r))
-            return false;
-        if (r.tok == 0)
-            break;
-        if (!read_entity(&r))
-            return false;
-    }
-    if (!r.have_view)
-        return fail(&r, r.tok_line, "no 'v' viewpoint in the file");
+    sc->scale_log2 = scale;
+    if (!read_pass(&r))
+        return false;
     uint32_t n = sc->n_lights;
     sc->light_intensity = n ? r_div(r_sqrt(r_from_int((int32_t)n)), r_from_int(2 * (int32_t)n)) : 0;
     const char *why = bvh_build(store);

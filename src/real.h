@@ -92,6 +92,8 @@ static inline uint8_t r_to_u8(real_t c)
     return (uint8_t)(c * 255 + (real_t)0.5);
 }
 bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out);
+/* +-mant * 10^exp10 * 2^scale_log2 */
+bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2, real_t *out);
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out);
 
 #else /* fixed point */
@@ -145,6 +147,12 @@ static inline uint8_t r_to_u8(real_t c)
 static inline bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
 {
     return fx_from_decimal(neg, mant, exp10, FX_FRAC_BITS, (uint32_t)FX_MAX, out);
+}
+/* the scale is folded into the fraction bits: exact, one rounding */
+static inline bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2,
+                                         real_t *out)
+{
+    return fx_from_decimal(neg, mant, exp10, (unsigned)(FX_FRAC_BITS + scale_log2), (uint32_t)FX_MAX, out);
 }
 static inline bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
 {

@@ -31,6 +31,21 @@ bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
     return true;
 }
 
+bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2, real_t *out)
+{
+    double v;
+    if (!decimal_to_double(neg, mant, exp10, &v))
+        return false;
+    for (; scale_log2 > 0; scale_log2--) /* exact: powers of two */
+        v *= 2.0;
+    for (; scale_log2 < 0; scale_log2++)
+        v *= 0.5;
+    if (v > 1e30 || v < -1e30)
+        return false;
+    *out = (real_t)v;
+    return true;
+}
+
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
 {
     double v;

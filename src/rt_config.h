@@ -27,6 +27,21 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #ifndef FX_FRAC_BITS
 #define FX_FRAC_BITS 20
 #endif
+/* Range management: the reader scales every position by a power of two
+ * so the largest coordinate is below 2^RT_SCENE_EXTENT_LOG2 (16: squared
+ * distances across the scene then stay below 768, inside Q11.20). The
+ * scale may range over [RT_SCALE_LOG2_MIN, RT_SCALE_LOG2_MAX]; beyond,
+ * the scene is rejected as too large or too small. */
+#ifndef RT_SCENE_EXTENT_LOG2
+#define RT_SCENE_EXTENT_LOG2 4
+#endif
+#ifndef RT_SCALE_LOG2_MIN              /* keeps >= 8 fraction bits */
+#define RT_SCALE_LOG2_MIN (8 - FX_FRAC_BITS)
+#endif
+#ifndef RT_SCALE_LOG2_MAX
+#define RT_SCALE_LOG2_MAX 30
+#endif
+
 /* Faster, less exact square roots, reciprocals and powers (fx.c). */
 #ifndef FX_FAST_MATH
 #define FX_FAST_MATH 0

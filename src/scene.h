@@ -103,6 +103,7 @@ typedef struct {
     uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
     uint32_t n_vertices, n_normals;
     uint32_t n_flat_skipped;  /* zero-area polygons dropped by the reader */
+    int32_t scale_log2;       /* positions were read times 2^scale_log2 */
     uint32_t n_bvh_nodes;
 } scene_t;
 

@@ -45,6 +45,8 @@ static uint32_t primitive_count(void)
 
 static uint32_t flat_skipped(void) { return store.scene.n_flat_skipped; }
 
+static int32_t scale_log2(void) { return store.scene.scale_log2; }
+
 static void bvh_stats(bvh_stats_t *out) { bvh_tree_stats(&store.scene, out); }
 
 static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
@@ -107,5 +109,5 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, bvh_stats, render, probe, bounds, eye_dir,
+    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, bvh_stats, render, probe, bounds, eye_dir,
 };

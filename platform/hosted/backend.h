@@ -34,6 +34,7 @@ typedef struct {
     void (*resolution)(uint16_t *width, uint16_t *height);
     uint32_t (*primitive_count)(void);
     uint32_t (*flat_skipped)(void); /* zero-area polygons the reader dropped */
+    int32_t (*scale_log2)(void);    /* positions were read times 2^this */
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
     /* Nearest hit of one ray against the loaded scene (for tests), through
