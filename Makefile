@@ -89,6 +89,11 @@ CFG_q12 = -DFX_FRAC_BITS=12
 CFG_q24 = -DFX_FRAC_BITS=24
 $(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
 
+# The stress suite's build: sanitised, and counting fixed-point saturations.
+stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
+stress_LDFLAGS = $(asan_LDFLAGS)
+$(eval $(call host_rules,stress))
+
 # The fixed-point unit test links the fixed scalar layer alone.
 build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)

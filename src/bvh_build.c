@@ -123,7 +123,9 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
     real_t best_lo = 0, best_scale = 0;
     for (unsigned axis = 0; axis < 3 && count > RT_BVH_LEAF_SIZE; axis++) {
         real_t lo = v3_axis(&cbox.min, axis), extent = v3_axis(&cbox.max, axis) - lo;
-        if (extent <= 0)
+        /* centroids this close together do not split usefully (and the
+         * bin scale would not fit the fixed range) */
+        if (extent < R_RATIO(BVH_BINS, 1024))
             continue;
         real_t scale = r_div(r_from_int(BVH_BINS), extent);
         box_t bins[BVH_BINS];

@@ -38,6 +38,18 @@ static real_t refine_root(vec3_t op, vec3_t dp, real_t rr, real_t kdv, real_t t)
     return r_abs(step) < R_ONE ? t - step : t; /* a huge step: keep t */
 }
 
+/* num / den when it lies in [0, limit); false otherwise, without a
+ * division that could overflow (a root far beyond the range is a miss). */
+static bool quotient_below(real_t num, real_t den, real_t limit, real_t *q)
+{
+    if (den == 0 || (num != 0 && (num < 0) != (den < 0)))
+        return false;
+    if (r_to_wide(r_abs(num)) >= r_wmul(r_abs(den), limit))
+        return false;
+    *q = r_div(num, den);
+    return true;
+}
+
 /* With the ray in cone coordinates (height h along the axis, radial part
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
@@ -88,10 +100,10 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
             return false;
         real_t h = r_wsqrt(disc);
         real_t q = b > 0 ? -(b + h) : h - b;
-        if (a != 0)
-            roots[n++] = r_div(q, a);
-        if (q != 0)
-            roots[n++] = r_div(cc, q);
+        if (quotient_below(q, a, *t, &roots[n]))
+            n++;
+        if (quotient_below(cc, q, *t, &roots[n]))
+            n++;
     }
     if (n == 2 && roots[1] < roots[0]) {
         real_t tmp = roots[0];

@@ -1,6 +1,10 @@
 /* fx.c - the out-of-line fixed-point operations (see fx.h for accuracy). */
 #include "fx.h"
 
+#if FX_COUNT_SATURATIONS
+volatile uint32_t fx_saturations;
+#endif
+
 /* FX_FAST_MATH trades exactness for instructions: one Newton step less
  * in the reciprocal square root (relative error 2^-20 instead of 2^-29),
  * no exact last-unit fix of square roots, 16 instead of 24 log2 bits and

@@ -44,6 +44,16 @@ typedef uint32_t fx_shine_t;/* unsigned Q20.12: Phong exponents up to ~1e6 */
 #define FX_RATIO(n, d) \
     ((fx_t)((((int64_t)(n) * FX_ONE) + ((((int64_t)(n) < 0) == ((int64_t)(d) < 0)) ? (d) / 2 : -(d) / 2)) / (d)))
 
+/* Overflow is never silent: every conversion that would overflow clamps
+ * to +-FX_MAX and calls FX_ON_SATURATE(). A build with
+ * FX_COUNT_SATURATIONS=1 counts them (the stress suite asserts the count). */
+#ifndef FX_COUNT_SATURATIONS
+#define FX_COUNT_SATURATIONS 0
+#endif
+#if FX_COUNT_SATURATIONS
+extern volatile uint32_t fx_saturations;
+#define FX_ON_SATURATE() ((void)fx_saturations++)
+#endif
 #ifndef FX_ON_SATURATE
 #define FX_ON_SATURATE() ((void)0)
 #endif

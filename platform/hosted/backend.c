@@ -47,11 +47,35 @@ static uint32_t flat_skipped(void) { return store.scene.n_flat_skipped; }
 
 static int32_t scale_log2(void) { return store.scene.scale_log2; }
 
+static int64_t saturations(bool reset)
+{
+#if RT_BACKEND_FIXED && FX_COUNT_SATURATIONS
+    int64_t n = fx_saturations;
+    if (reset)
+        fx_saturations = 0;
+    return n;
+#else
+    (void)reset;
+    return -1;
+#endif
+}
+
 static void bvh_stats(bvh_stats_t *out) { bvh_tree_stats(&store.scene, out); }
 
 static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     return rt_render(&store.scene, opts, sink, stats, err);
+}
+
+/* World units per scene unit: the reader scaled positions by 2^scale_log2. */
+static double world_per_unit(void)
+{
+    double f = 1;
+    for (int32_t k = store.scene.scale_log2; k > 0; k--)
+        f *= 0.5;
+    for (int32_t k = store.scene.scale_log2; k < 0; k++)
+        f *= 2;
+    return f;
 }
 
 static bool bounds(double mn[3], double mx[3])
@@ -60,8 +84,9 @@ static bool bounds(double mn[3], double mx[3])
     if (sc->n_bvh_nodes == 0)
         return false;
     const bvh_node_t *n = &sc->bvh_nodes[0];
-    mn[0] = to_double(n->min.x), mn[1] = to_double(n->min.y), mn[2] = to_double(n->min.z);
-    mx[0] = to_double(n->max.x), mx[1] = to_double(n->max.y), mx[2] = to_double(n->max.z);
+    double w = world_per_unit();
+    mn[0] = w * to_double(n->min.x), mn[1] = w * to_double(n->min.y), mn[2] = w * to_double(n->min.z);
+    mx[0] = w * to_double(n->max.x), mx[1] = w * to_double(n->max.y), mx[2] = w * to_double(n->max.z);
     return true;
 }
 
@@ -69,7 +94,8 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
 {
     const scene_t *sc = &store.scene;
     ray_t r;
-    r.origin = v3(to_real(o[0]), to_real(o[1]), to_real(o[2]));
+    double w = world_per_unit();
+    r.origin = v3(to_real(o[0] / w), to_real(o[1] / w), to_real(o[2] / w));
     r.dir = v3_unit(v3(to_real(d[0]), to_real(d[1]), to_real(d[2])));
     rt_stats_t st = { 0 };
     hit_t h;
@@ -82,7 +108,7 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     case PRIM_CONE: n = cone_normal(&sc->cones[h.index], p); break;
     default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;
     }
-    out->t = to_double(h.t);
+    out->t = w * to_double(h.t);
 #if RT_BACKEND_FIXED
     out->t_raw = (int64_t)h.t;
 #else
@@ -109,5 +135,5 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, bvh_stats, render, probe, bounds, eye_dir,
+    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
 };

@@ -35,10 +35,14 @@ typedef struct {
     uint32_t (*primitive_count)(void);
     uint32_t (*flat_skipped)(void); /* zero-area polygons the reader dropped */
     int32_t (*scale_log2)(void);    /* positions were read times 2^this */
+    /* Fixed-point saturations so far (-1 unless built with
+     * FX_COUNT_SATURATIONS=1), and a reset. */
+    int64_t (*saturations)(bool reset);
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
     /* Nearest hit of one ray against the loaded scene (for tests), through
-     * the BVH or, with `brute`, by testing every primitive. */
+     * the BVH or, with `brute`, by testing every primitive. Origin and t
+     * are in the file's units (the backend applies the reader's scale). */
     bool (*probe)(const double origin[3], const double dir[3], bool brute, probe_hit_t *hit);
     /* The scene's bounds (root box of the BVH); false for an empty scene. */
     bool (*bounds)(double min[3], double max[3]);

@@ -161,6 +161,8 @@ static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int
     bvh_stats_t bs;
     be->bvh_stats(&bs);
     fprintf(stderr, "scene scale      2^%d (positions read times this)\n", (int)be->scale_log2());
+    if (be->saturations(false) >= 0)
+        fprintf(stderr, "saturations      %lld\n", (long long)be->saturations(false));
     fprintf(stderr,
             "primitives       %u\n"
             "bvh nodes        %u (%u leaves, depth %u, largest leaf %u)\n"

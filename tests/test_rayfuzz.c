@@ -1,0 +1,220 @@
+/*
+ * test_rayfuzz.c - random rays against random primitives, fixed against
+ * double (part of the stress suite).
+ *
+ *   test_rayfuzz [RAYS]      (default 1000000)
+ *
+ * Each random scene holds one primitive (sphere, cylinder, cone, triangle,
+ * quad, or smooth patch) of random size (0.01..4 units), place and
+ * orientation; rays come from outside (3..8 sizes away, aimed at the
+ * object's box) and, one in four, from inside. Asserted:
+ *  - hit/miss agrees except where the double result itself flips when the
+ *    ray is nudged by SILHOUETTE of the object's size (silhouettes, rims);
+ *  - for hits at |D.N| >= 0.25: |t error| <= T_ABS extent + T_REL t, where
+ *    extent is the scene's (camera included), and each normal component
+ *    within N_TOL; rays that start within 1e-3 of the object's size from its
+ *    surface are left out (secondary rays start off the surface);
+ *  - no fixed-point saturation.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "backend.h"
+#include "testlib.h"
+
+#define RAYS_PER_SCENE 10000
+#define SILHOUETTE 1e-4
+#define T_ABS 2e-5     /* times the object's size */
+#define T_REL 2e-5
+#define N_TOL 1e-3
+#define MIN_COS 0.25
+
+static void unit(double d[3])
+{
+    double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int k = 0; k < 3; k++)
+        d[k] /= l;
+}
+
+static void rnd_dir(double d[3])
+{
+    do {
+        for (int k = 0; k < 3; k++)
+            d[k] = tl_uniform(-1, 1);
+    } while (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] < 0.01);
+    unit(d);
+}
+
+/* One random primitive as NFF; returns its size and fills its box centre. */
+static double random_scene(char *buf, size_t cap, int kind, double c[3])
+{
+    double size = pow(10, tl_uniform(-2, 0.6)); /* 0.01 .. 4 */
+    for (int k = 0; k < 3; k++)
+        c[k] = tl_uniform(-2, 2);
+    int n = snprintf(buf, cap,
+                     "v\nfrom %.9g %.9g %.9g\nat %.9g %.9g %.9g\nup 0 0 1\nangle 45\nhither 1\n"
+                     "resolution 8 8\nl 1 2 3\nf 1 1 1 0.8 0.2 10 0 1\n",
+                     c[0], c[1] - 6 * size, c[2], c[0], c[1], c[2]);
+    double a[3], b[3], e[3];
+    rnd_dir(a);
+    rnd_dir(e);
+    switch (kind) {
+    case 0:
+        snprintf(buf + n, cap - n, "s %.9g %.9g %.9g %.9g\n", c[0], c[1], c[2], size / 2);
+        break;
+    case 1:
+    case 2: { /* cylinder or cone along a random axis */
+        double r0 = size * tl_uniform(0.1, 0.5), r1 = kind == 1 ? r0 : size * tl_uniform(0, 0.5);
+        snprintf(buf + n, cap - n, "c %.9g %.9g %.9g %.9g %.9g %.9g %.9g %.9g\n", c[0] - a[0] * size / 2,
+                 c[1] - a[1] * size / 2, c[2] - a[2] * size / 2, r0, c[0] + a[0] * size / 2,
+                 c[1] + a[1] * size / 2, c[2] + a[2] * size / 2, r1);
+        break;
+    }
+    case 3:
+    case 4: { /* triangle or planar quad spanned by a and b = a x e */
+        b[0] = a[1] * e[2] - a[2] * e[1], b[1] = a[2] * e[0] - a[0] * e[2], b[2] = a[0] * e[1] - a[1] * e[0];
+        unit(b);
+        double h = size / 2;
+        if (kind == 3)
+            snprintf(buf + n, cap - n, "p 3\n%.9g %.9g %.9g\n%.9g %.9g %.9g\n%.9g %.9g %.9g\n",
+                     c[0] - h * a[0], c[1] - h * a[1], c[2] - h * a[2], c[0] + h * a[0], c[1] + h * a[1],
+                     c[2] + h * a[2], c[0] + h * b[0], c[1] + h * b[1], c[2] + h * b[2]);
+        else
+            snprintf(buf + n, cap - n, "p 4\n%.9g %.9g %.9g\n%.9g %.9g %.9g\n%.9g %.9g %.9g\n%.9g %.9g %.9g\n",
+                     c[0] - h * a[0] - h * b[0], c[1] - h * a[1] - h * b[1], c[2] - h * a[2] - h * b[2],
+                     c[0] + h * a[0] - h * b[0], c[1] + h * a[1] - h * b[1], c[2] + h * a[2] - h * b[2],
+                     c[0] + h * a[0] + h * b[0], c[1] + h * a[1] + h * b[1], c[2] + h * a[2] + h * b[2],
+                     c[0] - h * a[0] + h * b[0], c[1] - h * a[1] + h * b[1], c[2] - h * a[2] + h * b[2]);
+        break;
+    }
+    default: { /* smooth patch: a triangle with tilted vertex normals */
+        b[0] = a[1] * e[2] - a[2] * e[1], b[1] = a[2] * e[0] - a[0] * e[2], b[2] = a[0] * e[1] - a[1] * e[0];
+        unit(b);
+        double nrm[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+        double h = size / 2;
+        n += snprintf(buf + n, cap - n, "pp 3\n");
+        for (int v = 0; v < 3; v++) {
+            double p[3], m[3], t[3];
+            rnd_dir(t);
+            for (int k = 0; k < 3; k++) {
+                p[k] = c[k] + (v == 0 ? -h * a[k] : v == 1 ? h * a[k] : h * b[k]);
+                m[k] = nrm[k] + 0.4 * t[k];
+            }
+            n += snprintf(buf + n, cap - n, "%.9g %.9g %.9g %.9g %.9g %.9g\n", p[0], p[1], p[2], m[0], m[1], m[2]);
+        }
+        break;
+    }
+    }
+    return size;
+}
+
+static bool flips(const double o[3], const double d[3], double eps, double dt)
+{
+    probe_hit_t h0, h;
+    bool base = rt_backend_double.probe(o, d, false, &h0);
+    for (int k = 0; k < 3; k++)
+        for (int s = -1; s <= 1; s += 2) {
+            double o2[3] = { o[0], o[1], o[2] };
+            o2[k] += s * eps;
+            bool hit = rt_backend_double.probe(o2, d, false, &h);
+            if (hit != base || (hit && fabs(h.t - h0.t) > dt))
+                return true;
+            for (int m = 0; hit && m < 3; m++)
+                if (fabs(h.normal[m] - h0.normal[m]) > 0.1)
+                    return true;
+        }
+    return false;
+}
+
+int main(int argc, char **argv)
+{
+    long total = argc > 1 ? atol(argv[1]) : 1000000;
+    static const char *const names[] = { "sphere", "cylinder", "cone", "triangle", "quad", "patch" };
+    long rays[6] = { 0 }, hits[6] = { 0 }, mismatch[6] = { 0 }, unexcused[6] = { 0 };
+    double worst_t[6] = { 0 }, worst_n[6] = { 0 };
+    long scenes = total / RAYS_PER_SCENE;
+    long saturations = 0;
+    printf("test_rayfuzz: %ld random rays against %ld random primitives, fixed vs double\n", total, scenes);
+    for (long sc = 0; sc < scenes; sc++) {
+        int kind = (int)(sc % 6);
+        char text[2048];
+        double c[3];
+        double size = random_scene(text, sizeof text, kind, c);
+        rt_error_t err;
+        if (!rt_backend_fixed.load(text, strlen(text), &err) || !rt_backend_double.load(text, strlen(text), &err)) {
+            printf("  scene %ld does not load: %u: %s\n%s", sc, (unsigned)err.line, err.msg, text);
+            unexcused[kind]++;
+            continue;
+        }
+        rt_backend_fixed.saturations(true);
+        for (int i = 0; i < RAYS_PER_SCENE; i++) {
+            double o[3], d[3];
+            if (i % 4 == 3) {
+                for (int k = 0; k < 3; k++)
+                    o[k] = c[k] + tl_uniform(-0.2, 0.2) * size;
+                rnd_dir(d);
+            } else {
+                double u[3], target[3];
+                rnd_dir(u);
+                double dist = size * tl_uniform(3, 8);
+                for (int k = 0; k < 3; k++) {
+                    target[k] = c[k] + tl_uniform(-0.6, 0.6) * size;
+                    o[k] = c[k] + u[k] * dist;
+                    d[k] = target[k] - o[k];
+                }
+                unit(d);
+            }
+            probe_hit_t hf, hd;
+            bool f = rt_backend_fixed.probe(o, d, false, &hf), g = rt_backend_double.probe(o, d, false, &hd);
+            rays[kind]++;
+            /* a ray starting within rounding distance of the surface may or
+             * may not hit it at t ~ 0 (secondary rays avoid this with an
+             * offset): not counted */
+            if ((f && hf.t < 1e-3 * size) || (g && hd.t < 1e-3 * size))
+                continue;
+            bool apart = f && g && fabs(hf.t - hd.t) > 0.05 * size;
+            for (int k = 0; f && g && k < 3; k++)
+                apart |= fabs(hf.normal[k] - hd.normal[k]) > 0.1;
+            if (f != g || apart) {
+                mismatch[kind]++;
+                if (!flips(o, d, SILHOUETTE * size, 0.05 * size)) {
+                    unexcused[kind]++;
+                    if (getenv("FUZZ_VERBOSE"))
+                        printf("    %s size %.4g: fixed %d t %.6g n %.3f %.3f %.3f / double %d t %.6g n %.3f %.3f %.3f\n",
+                               names[kind], size, f, f ? hf.t : 0, hf.normal[0], hf.normal[1], hf.normal[2], g,
+                               g ? hd.t : 0, hd.normal[0], hd.normal[1], hd.normal[2]);
+                }
+                continue;
+            }
+            if (!f)
+                continue;
+            hits[kind]++;
+            double cosine = fabs(hd.normal[0] * d[0] + hd.normal[1] * d[1] + hd.normal[2] * d[2]);
+            if (cosine < MIN_COS)
+                continue;
+            /* precision is relative to the whole scene (camera included) */
+            double extent = size * 6 + fmax(fabs(c[0]), fmax(fabs(c[1]), fabs(c[2])));
+            double et = fabs(hf.t - hd.t) / (extent * T_ABS + T_REL * hd.t);
+            if (et > 1 && getenv("FUZZ_VERBOSE"))
+                printf("    %s size %.4g t %.6g vs %.6g cos %.3f inside %d\n", names[kind], size, hf.t, hd.t, cosine, i % 4 == 3);
+            worst_t[kind] = et > worst_t[kind] ? et : worst_t[kind];
+            for (int k = 0; k < 3; k++)
+                worst_n[kind] = fabs(hf.normal[k] - hd.normal[k]) > worst_n[kind] ? fabs(hf.normal[k] - hd.normal[k])
+                                                                                 : worst_n[kind];
+        }
+        saturations += rt_backend_fixed.saturations(false);
+    }
+    for (int k = 0; k < 6; k++) {
+        CHECK(unexcused[k] == 0 && hits[k] > rays[k] / 20,
+              "%-8s %7ld rays, %6ld hits; hit/miss differs on %ld (%.4f%%), all within %.0e of a silhouette or rim "
+              "(%ld not)",
+              names[k], rays[k], hits[k], mismatch[k], rays[k] ? 100.0 * mismatch[k] / rays[k] : 0.0, SILHOUETTE,
+              unexcused[k]);
+        CHECK(worst_t[k] <= 1 && worst_n[k] <= N_TOL,
+              "%-8s worst t error %.2f of (%.0e extent + %.0e t); worst normal component error %.1e (bound %.0e)",
+              names[k], worst_t[k], T_ABS, T_REL, worst_n[k], N_TOL);
+    }
+    CHECK(saturations == 0, "fixed-point saturations during the fuzz: %ld", saturations);
+    return tl_summary("test_rayfuzz");
+}
