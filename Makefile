@@ -39,7 +39,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir
+.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) backend flags
@@ -126,11 +126,17 @@ bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
 	python3 bench/run_bench.py --quick
 
-TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt
+TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
+        build/stress/rt build/stress/test_rayfuzz
 
 test: deps
 	$(MAKE) $(TESTS)
 	@tests/run-all.sh build/asan
+
+# Numerical stress suite (tests/stress.py); make test runs its quick subset.
+stress: deps
+	$(MAKE) build/stress/rt build/stress/test_rayfuzz
+	python3 tests/stress.py
 
 clean:
 	rm -rf build out

@@ -135,6 +135,20 @@ static inline fx_wide_t fx_wwiden_up(fx_wide_t x)
     return x + (ax >> (FX_FRAC_BITS - 2)) + ((int64_t)4 << FX_FRAC_BITS);
 }
 
+/* Sign of d . n for a Q.F vector d (|d_k| <= 2) and a Q.2F vector n, at
+ * full precision: n is shifted right just enough for the products to fit
+ * 64 bits (the same shift for the same n, so equal inputs give equal
+ * answers: what watertight edge tests need). */
+static inline int fx_wsign_dot(fx_t dx, fx_t dy, fx_t dz, fx_wide_t nx, fx_wide_t ny, fx_wide_t nz)
+{
+    uint64_t m = (uint64_t)(nx < 0 ? -nx : nx) | (uint64_t)(ny < 0 ? -ny : ny) | (uint64_t)(nz < 0 ? -nz : nz);
+    int s = 0;
+    while ((m >> s) >= ((uint64_t)1 << 40))
+        s++;
+    int64_t v = (int64_t)dx * (nx >> s) + (int64_t)dy * (ny >> s) + (int64_t)dz * (nz >> s);
+    return (v > 0) - (v < 0);
+}
+
 /* x moved away from zero-crossing margins: x - (|x| * 2^(2-F) + 4 ulp)
  * and x + (...): a relative widening of 4 ulp per unit plus 4 ulp. */
 static inline fx_t fx_widen_down(fx_t x)

@@ -21,35 +21,6 @@ bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count)
     return true;
 }
 
-const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
-                         uint32_t normals, uint16_t material)
-{
-    const vec3_t *v = &pool[first];
-    p->first = first;
-    p->count = count;
-    p->normals = normals;
-    p->material = material;
-    p->normal = v3_unit_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[1]));
-    if (p->normal.x == 0 && p->normal.y == 0 && p->normal.z == 0)
-        return "polygon's first three vertices are collinear";
-    p->offset = v3_dot(p->normal, v[0]);
-    real_t ax = r_abs(p->normal.x), ay = r_abs(p->normal.y), az = r_abs(p->normal.z);
-    p->drop_axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
-    p->box_min = p->box_max = v[0];
-    for (uint32_t i = 1; i < count; i++) {
-        p->box_min = v3(r_min(p->box_min.x, v[i].x), r_min(p->box_min.y, v[i].y),
-                        r_min(p->box_min.z, v[i].z));
-        p->box_max = v3(r_max(p->box_max.x, v[i].x), r_max(p->box_max.y, v[i].y),
-                        r_max(p->box_max.z, v[i].z));
-    }
-    /* Slack so the exact box test never rejects a hit that the rounded
-     * inside test (or a neighbour sharing the edge) would accept. */
-    const real_t slack = R_RATIO(1, 4096);
-    p->box_min = v3(p->box_min.x - slack, p->box_min.y - slack, p->box_min.z - slack);
-    p->box_max = v3(p->box_max.x + slack, p->box_max.y + slack, p->box_max.z + slack);
-    return 0;
-}
-
 /* A point projected on the polygon's plane of largest extent. */
 typedef struct {
     real_t u, v;
@@ -72,6 +43,44 @@ static pt2_t project(const polygon_t *p, vec3_t a) { return project_axis(p->drop
 static real_wide_t edge_fn(pt2_t a, pt2_t b, pt2_t c)
 {
     return r_wmul(b.u - a.u, c.v - a.v) - r_wmul(b.v - a.v, c.u - a.u);
+}
+
+const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
+                         uint32_t normals, uint16_t material)
+{
+    const vec3_t *v = &pool[first];
+    p->first = first;
+    p->count = count;
+    p->normals = normals;
+    p->material = material;
+    p->normal = v3_unit_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[1]));
+    if (p->normal.x == 0 && p->normal.y == 0 && p->normal.z == 0)
+        return "polygon's first three vertices are collinear";
+    p->offset = v3_dot(p->normal, v[0]);
+    real_t ax = r_abs(p->normal.x), ay = r_abs(p->normal.y), az = r_abs(p->normal.z);
+    p->drop_axis = (ax >= ay && ax >= az) ? 0 : (ay >= az ? 1 : 2);
+    p->box_min = p->box_max = v[0];
+    for (uint32_t i = 1; i < count; i++) {
+        p->box_min = v3(r_min(p->box_min.x, v[i].x), r_min(p->box_min.y, v[i].y),
+                        r_min(p->box_min.z, v[i].z));
+        p->box_max = v3(r_max(p->box_max.x, v[i].x), r_max(p->box_max.y, v[i].y),
+                        r_max(p->box_max.z, v[i].z));
+    }
+    /* convex (in the projection): consecutive edges all turn one way */
+    bool left = false, right = false;
+    for (uint32_t i = 0; i < count; i++) {
+        pt2_t a = project(p, v[i]), b = project(p, v[(i + 1) % count]), c = project(p, v[(i + 2) % count]);
+        real_wide_t e = edge_fn(a, b, c);
+        left |= e > 0;
+        right |= e < 0;
+    }
+    p->convex = !(left && right);
+    /* Slack so the exact box test never rejects a hit that the rounded
+     * inside test (or a neighbour sharing the edge) would accept. */
+    const real_t slack = R_RATIO(1, 4096);
+    p->box_min = v3(p->box_min.x - slack, p->box_min.y - slack, p->box_min.z - slack);
+    p->box_max = v3(p->box_max.x + slack, p->box_max.y + slack, p->box_max.z + slack);
+    return 0;
 }
 
 /* Even-odd rule: count edges crossed by the ray from q towards +u. Inline
@@ -105,7 +114,67 @@ static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
     }
 }
 
+/* Watertight inside tests. Which side of the edge (p, q) the ray passes:
+ * the sign of D . ((p - O) x (q - O)). The two faces sharing an edge see it
+ * in opposite directions; computing it in one canonical vertex order and
+ * negating makes both get exactly opposite values, whatever the rounding,
+ * so no ray slips between them. */
+static bool vertex_before(vec3_t a, vec3_t b)
+{
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+}
+
+static int edge_side(const ray_t *r, vec3_t p, vec3_t q)
+{
+    bool flip = vertex_before(q, p);
+    vec3_t a = v3_sub(flip ? q : p, r->origin), b = v3_sub(flip ? p : q, r->origin);
+    /* a x b exactly (wide), then its dot with D at full precision */
+    int s = r_wsign_dot(r->dir.x, r->dir.y, r->dir.z, r_wmul(a.y, b.z) - r_wmul(a.z, b.y),
+                        r_wmul(a.z, b.x) - r_wmul(a.x, b.z), r_wmul(a.x, b.y) - r_wmul(a.y, b.x));
+    return flip ? -s : s;
+}
+
+/* A convex polygon: the ray passes every edge on the same side. */
+static bool inside_convex(const scene_t *sc, const polygon_t *p, const ray_t *r)
+{
+    const vec3_t *v = &sc->vertices[p->first];
+    bool pos = false, neg = false;
+    for (uint32_t i = 0; i < p->count; i++) {
+        int s = edge_side(r, v[i], v[i + 1 == p->count ? 0 : i + 1]);
+        pos |= s > 0;
+        neg |= s < 0;
+        if (pos && neg)
+            return false;
+    }
+    return true;
+}
+
 #if RT_USE_PATCHES
+/* Triangle idx[] of a fan: the ray passes its edges on one side. */
+static bool inside_edges(const ray_t *r, const vec3_t *v, const uint32_t *idx, uint32_t n)
+{
+    bool pos = false, neg = false;
+    for (uint32_t i = 0; i < n; i++) {
+        int s = edge_side(r, v[idx[i]], v[idx[(i + 1) % n]]);
+        pos |= s > 0;
+        neg |= s < 0;
+        if (pos && neg)
+            return false;
+    }
+    return true;
+}
+
+static bool inside_fan(const scene_t *sc, const polygon_t *p, const ray_t *r)
+{
+    const vec3_t *v = &sc->vertices[p->first];
+    for (uint32_t i = 1; i + 1 < p->count; i++) {
+        const uint32_t idx[3] = { 0, i, i + 1 };
+        if (inside_edges(r, v, idx, 3))
+            return true;
+    }
+    return false;
+}
+
 /* Index i of the fan triangle (0, i, i+1) holding q, or 0 when none. */
 static uint32_t fan_triangle(const scene_t *sc, const polygon_t *p, pt2_t q)
 {
@@ -146,13 +215,16 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     real_t th = r_div(num, denom);
     if (th <= tmin || th >= *t)
         return false;
-    pt2_t q = project(p, ray_at(r, th));
+    bool inside;
 #if RT_USE_PATCHES
-    bool inside = p->normals == POLY_NO_NORMALS ? inside_even_odd(sc, p, q)
-                                                : fan_triangle(sc, p, q) != 0;
-#else
-    bool inside = inside_even_odd(sc, p, q);
+    if (p->normals != POLY_NO_NORMALS)
+        inside = inside_fan(sc, p, r);
+    else
 #endif
+    if (p->convex)
+        inside = inside_convex(sc, p, r);
+    else
+        inside = inside_even_odd(sc, p, project(p, ray_at(r, th)));
     if (!inside)
         return false;
     *t = th;

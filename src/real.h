@@ -53,6 +53,12 @@ static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return (a - b) *
 static inline real_t r_widen_down(real_t x) { return x - (x < 0 ? -x : x) * R_ULPS(4) - R_ULPS(4); }
 static inline real_t r_widen_up(real_t x) { return x + (x < 0 ? -x : x) * R_ULPS(4) + R_ULPS(4); }
 static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
+/* sign of (dx, dy, dz) . (nx, ny, nz) */
+static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
+{
+    real_wide_t s = dx * nx + dy * ny + dz * nz;
+    return (s > 0) - (s < 0);
+}
 static inline real_wide_t r_wwiden_down(real_wide_t x) { return r_widen_down(x); }
 static inline real_wide_t r_wwiden_up(real_wide_t x) { return r_widen_up(x); }
 static inline real_t r_sqrt(real_t a) { return a > 0 ? R_FN(sqrt)(a) : 0; }
@@ -120,6 +126,10 @@ static inline real_t r_widen_up(real_t x) { return fx_widen_up(x); }
 static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return fx_wmul_diff(a, b, c); }
 static inline real_wide_t r_wwiden_down(real_wide_t x) { return fx_wwiden_down(x); }
 static inline real_wide_t r_wwiden_up(real_wide_t x) { return fx_wwiden_up(x); }
+static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
+{
+    return fx_wsign_dot(dx, dy, dz, nx, ny, nz);
+}
 static inline real_t r_sqrt(real_t a) { return fx_sqrt(a); }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return fx_wmul(a, b); }
 static inline real_wide_t r_to_wide(real_t a) { return fx_to_wide(a); }

@@ -58,6 +58,7 @@ typedef struct {
     uint16_t count;
     uint16_t material;
     uint8_t drop_axis;
+    uint8_t convex;       /* inside test by edge sides (watertight) */
 } polygon_t;
 
 /* A primitive of any kind: kind in the top 8 bits, table index below. */

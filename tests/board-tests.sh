@@ -102,6 +102,22 @@ if [ -f "$st" ]; then
         ok "corrupted stream rejected: $msg" || bad "corrupted stream: status $status, '$msg'"
 fi
 
+# Deep recursion on the board: two facing mirrors at the maximum depth keep
+# the stack inside its budget and the image equal to the host's.
+mir="$OUT/mirrors.nff"
+printf 'b 0 0 0\nv\nfrom 0.5 -1.5 0.3\nat 0 3 0\nup 0 0 1\nangle 60\nhither 1\nresolution 32 32\nl 0 0 0.9\nf 1 1 1 0.05 1 50 0 1\np 4\n-3 -3 -1\n3 -3 -1\n3 3 -1\n-3 3 -1\np 4\n-3 -3 1\n-3 3 1\n3 3 1\n3 -3 1\nf 0.9 0.2 0.2 0.8 0.2 10 0.5 1.5\ns 0 2 0 0.4\n' >"$mir"
+d=build/board/mirrors-32x32-d5-rgb888
+if make -s firmware SCENE="$mir" SIZE=32x32 DEPTH=5 >"$OUT/mirrors.build" 2>&1 &&
+   platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/mirrors-board.png" "$RT" >"$OUT/mirrors.report" 2>&1 &&
+   "$RT" "$mir" -o "$OUT/mirrors-host.png" --size 32x32 --depth 5 --quiet &&
+   "$RT" compare "$OUT/mirrors-board.png" "$OUT/mirrors-host.png" --max-error 0 >/dev/null; then
+    hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/mirrors.report")
+    [ "${hw:-99999}" -le 2048 ] && ok "facing mirrors at depth 5: board == host, stack high-water $hw bytes <= 2 KiB" ||
+        bad "facing mirrors: stack high-water ${hw:-?} bytes > 2 KiB"
+else
+    bad "facing mirrors at depth 5 failed on the board: $(tail -2 "$OUT/mirrors.report")"
+fi
+
 # Over capacity: 1025 spheres against RT_MAX_SPHERES = 1024 of the board build.
 big="$OUT/too-many-spheres.nff"
 {

@@ -24,6 +24,7 @@ run tests/image-tests.sh "$B/rt" "$B/test-images"
 run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
+run python3 tests/stress.py --quick
 echo
 echo "$total_pass passed, $total_fail failed"
 [ $total_fail -eq 0 ]

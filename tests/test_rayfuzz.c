@@ -14,7 +14,9 @@
  *    extent is the scene's (camera included), and each normal component
  *    within N_TOL; rays that start within 1e-3 of the object's size from its
  *    surface are left out (secondary rays start off the surface);
- *  - no fixed-point saturation.
+ *  - no fixed-point saturation;
+ *  - rays aimed exactly at the shared edges and corners of closed meshes
+ *    all hit (no cracks).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -127,6 +129,82 @@ static bool flips(const double o[3], const double d[3], double eps, double dt)
     return false;
 }
 
+/* Rays aimed exactly at the shared edges and corners of closed meshes
+ * (randomly rotated cubes of 12 triangles and octahedra of 8) from outside
+ * must all hit: none may slip between two faces. */
+static void edge_rays(long n)
+{
+    static const int cube_faces[12][3] = {
+        { 0, 1, 3 }, { 0, 3, 2 }, { 4, 6, 7 }, { 4, 7, 5 }, { 0, 4, 5 }, { 0, 5, 1 },
+        { 2, 3, 7 }, { 2, 7, 6 }, { 0, 2, 6 }, { 0, 6, 4 }, { 1, 5, 7 }, { 1, 7, 3 },
+    };
+    static const int octa_faces[8][3] = {
+        { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 },
+    };
+    long misses_fixed = 0, misses_double = 0, rays = 0;
+    for (int mesh = 0; mesh < 20; mesh++) {
+        bool cube = mesh % 2 == 0;
+        double v[8][3], ax[3], ay[3], az[3], size = pow(10, tl_uniform(-1, 0.5));
+        rnd_dir(ax);
+        rnd_dir(ay);
+        az[0] = ax[1] * ay[2] - ax[2] * ay[1], az[1] = ax[2] * ay[0] - ax[0] * ay[2], az[2] = ax[0] * ay[1] - ax[1] * ay[0];
+        unit(az);
+        ay[0] = az[1] * ax[2] - az[2] * ax[1], ay[1] = az[2] * ax[0] - az[0] * ax[2], ay[2] = az[0] * ax[1] - az[1] * ax[0];
+        int nv = cube ? 8 : 6;
+        for (int i = 0; i < nv; i++) {
+            double l[3];
+            if (cube) {
+                l[0] = i & 1 ? 1 : -1, l[1] = i & 2 ? 1 : -1, l[2] = i & 4 ? 1 : -1;
+            } else {
+                l[0] = l[1] = l[2] = 0;
+                l[i / 2] = i % 2 ? -1.3 : 1.3;
+            }
+            for (int k = 0; k < 3; k++)
+                v[i][k] = size * (l[0] * ax[k] + l[1] * ay[k] + l[2] * az[k]);
+        }
+        const int(*faces)[3] = cube ? cube_faces : octa_faces;
+        int nf = cube ? 12 : 8;
+        char text[4096];
+        int len = snprintf(text, sizeof text,
+                           "v\nfrom 0 %.9g 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 8 8\n"
+                           "l 1 2 3\nf 1 1 1 0.8 0.2 10 0 1\n", -6 * size);
+        for (int f = 0; f < nf; f++) {
+            len += snprintf(text + len, sizeof text - len, "p 3\n");
+            for (int k = 0; k < 3; k++)
+                len += snprintf(text + len, sizeof text - len, "%.9g %.9g %.9g\n", v[faces[f][k]][0],
+                                v[faces[f][k]][1], v[faces[f][k]][2]);
+        }
+        rt_error_t err;
+        if (!rt_backend_fixed.load(text, strlen(text), &err) || !rt_backend_double.load(text, strlen(text), &err)) {
+            printf("  mesh %d does not load: %s\n", mesh, err.msg);
+            misses_fixed++;
+            continue;
+        }
+        for (long i = 0; i < n / 20; i++) {
+            const int *f = faces[tl_rand() % (unsigned)nf];
+            int e = (int)(tl_rand() % 3);
+            double u = i % 8 == 0 ? 0 : tl_uniform(0, 1); /* one in eight at a corner */
+            double target[3], o[3], d[3], dir[3];
+            for (int k = 0; k < 3; k++)
+                target[k] = v[f[e]][k] + u * (v[f[(e + 1) % 3]][k] - v[f[e]][k]);
+            /* from outside, heading inwards (a ray that only touches an
+             * outer edge may rightly miss) */
+            rnd_dir(dir);
+            for (int k = 0; k < 3; k++) {
+                o[k] = target[k] * tl_uniform(3, 6) + dir[k] * size;
+                d[k] = target[k] - o[k];
+            }
+            unit(d);
+            probe_hit_t h;
+            rays++;
+            misses_fixed += !rt_backend_fixed.probe(o, d, false, &h);
+            misses_double += !rt_backend_double.probe(o, d, false, &h);
+        }
+    }
+    CHECK(misses_fixed == 0, "closed meshes: %ld rays aimed at shared edges and corners, %ld slip through in the "
+                             "fixed build (double: %ld)", rays, misses_fixed, misses_double);
+}
+
 int main(int argc, char **argv)
 {
     long total = argc > 1 ? atol(argv[1]) : 1000000;
@@ -216,5 +294,6 @@ int main(int argc, char **argv)
               names[k], worst_t[k], T_ABS, T_REL, worst_n[k], N_TOL);
     }
     CHECK(saturations == 0, "fixed-point saturations during the fuzz: %ld", saturations);
+    edge_rays(total / 10);
     return tl_summary("test_rayfuzz");
 }

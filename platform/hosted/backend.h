@@ -38,6 +38,7 @@ typedef struct {
     /* Fixed-point saturations so far (-1 unless built with
      * FX_COUNT_SATURATIONS=1), and a reset. */
     int64_t (*saturations)(bool reset);
+
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
     /* Nearest hit of one ray against the loaded scene (for tests), through
@@ -48,6 +49,10 @@ typedef struct {
     bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */
     bool (*eye_dir)(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3]);
+    /* Angle between neighbouring pixels' eye rays (radians) for an image
+     * of nx x ny, and the resolution of a unit direction (its last unit). */
+    double (*pixel_angle)(int32_t nx, int32_t ny);
+    double direction_resolution;
 } rt_backend_t;
 
 extern const rt_backend_t rt_backend_fixed;

@@ -287,6 +287,18 @@ static int cmd_render(int argc, char **argv)
         fprintf(stderr, "%s: note: skipped %u zero-area polygon(s)\n", scene_path,
                 (unsigned)be->flat_skipped());
 
+    {
+        /* Where precision runs out: neighbouring pixels' rays must differ by
+         * many units of the direction's last place, or edges get noisy. */
+        uint16_t w0, h0;
+        be->resolution(&w0, &h0);
+        int nx = opts.width ? opts.width : w0, ny = opts.height ? opts.height : h0;
+        double units = be->pixel_angle(nx, ny) / be->direction_resolution;
+        if (units < 64)
+            fprintf(stderr, "%s: warning: a pixel spans only %.0f units of the %s build's direction resolution "
+                            "(want >= 64): expect noisy edges; use fewer pixels or a nearer camera\n",
+                    scene_path, units, be->name);
+    }
     if (opts.spd && !opts.width) {
         opts.width = opts.height = 512;
     }

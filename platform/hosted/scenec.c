@@ -95,8 +95,9 @@ static void emit_tables(FILE *f, const scene_t *sc)
             emit_vec(f, p->box_min);
             fprintf(f, ", .box_max = ");
             emit_vec(f, p->box_max);
-            fprintf(f, ",\n      .first = %" PRIu32 ", .normals = %" PRIu32 "u, .count = %u, .material = %u, .drop_axis = %u },\n",
-                    p->first, p->normals, (unsigned)p->count, (unsigned)p->material, (unsigned)p->drop_axis);
+            fprintf(f, ",\n      .first = %" PRIu32 ", .normals = %" PRIu32 "u, .count = %u, .material = %u, .drop_axis = %u, .convex = %u },\n",
+                    p->first, p->normals, (unsigned)p->count, (unsigned)p->material, (unsigned)p->drop_axis,
+                    (unsigned)p->convex);
         }
         fprintf(f, "};\n\n");
     }
