@@ -76,6 +76,10 @@ void prim_box(const scene_t *sc, prim_ref_t ref, vec3_t *min, vec3_t *max)
         pad += r_max(c->r0, c->r0 + r_mul(c->slope, c->height));
         break;
     }
+    case PRIM_OBJECT:
+        lo = sc->objects[i].box_min; /* already padded */
+        hi = sc->objects[i].box_max;
+        break;
     default:
         lo = sc->polygons[i].box_min; /* already padded */
         hi = sc->polygons[i].box_max;
@@ -214,6 +218,8 @@ const char *bvh_build(scene_store_t *st)
         st->bvh_prims[n++] = PRIM_REF(PRIM_CONE, i);
     for (uint32_t i = 0; i < sc->n_polygons; i++)
         st->bvh_prims[n++] = PRIM_REF(PRIM_POLYGON, i);
+    for (uint32_t i = 0; i < sc->n_objects; i++)
+        st->bvh_prims[n++] = PRIM_REF(PRIM_OBJECT, i);
     builder_t b = { st, 0, 0 };
     if (n > 0)
         build(&b, 0, n, 0);
@@ -252,7 +258,7 @@ static uint32_t to_milli(real_t v)
 void bvh_tree_stats(const scene_t *sc, bvh_stats_t *out)
 {
     *out = (bvh_stats_t){ 0 };
-    out->primitives = sc->n_spheres + sc->n_cones + sc->n_polygons;
+    out->primitives = sc->n_spheres + sc->n_cones + sc->n_polygons + sc->n_objects;
     if (sc->n_bvh_nodes == 0)
         return;
     box_t root = { sc->bvh_nodes[0].min, sc->bvh_nodes[0].max };

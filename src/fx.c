@@ -299,6 +299,26 @@ fx_wide_t fx_tan_deg_wide(fx_t deg)
 #endif
 }
 
+void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
+{
+    /* reduce to [0, 360) degrees, then to a quadrant [0, 90] */
+    int64_t full = (int64_t)360 * FX_ONE;
+    int64_t a = deg % full;
+    if (a < 0)
+        a += full;
+    int quadrant = (int)(a / ((int64_t)90 * FX_ONE));
+    int64_t r = a - quadrant * (int64_t)90 * FX_ONE;
+    int64_t rad = (r * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
+    int64_t s = sin_q30(rad), c = cos_q30(rad), t;
+    for (int q = 0; q < quadrant; q++) { /* rotate by 90 degrees */
+        t = s;
+        s = c;
+        c = -t;
+    }
+    *sin_out = fx_sat64(fx_round_shift(s, 30 - FX_FRAC_BITS));
+    *cos_out = fx_sat64(fx_round_shift(c, 30 - FX_FRAC_BITS));
+}
+
 bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits, uint32_t max, int32_t *out)
 {
     uint64_t result;

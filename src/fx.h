@@ -173,6 +173,9 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3]);
 /* tan(deg degrees) as Q.2F, for 0 <= deg < 90. */
 fx_wide_t fx_tan_deg_wide(fx_t deg);
 
+/* sin and cos of deg degrees (any angle), each within 1 ulp. */
+void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out);
+
 /* Nearest value with `frac_bits` fraction bits to +-mant * 10^exp10
  * (exact for up to 18 fraction digits; digits beyond are truncated).
  * Returns false when the magnitude exceeds `max`. */

@@ -9,28 +9,9 @@
 #include "nff.h"
 
 #include "bvh.h"
+#include "nff_reader.h"
 #include "camera.h"
 #include "geometry.h"
-
-typedef struct {
-    const char *p, *end;
-    uint32_t line;      /* line of the current position */
-    uint32_t tok_line;  /* line of the last token read */
-    const char *tok;
-    size_t tok_len;
-    scene_store_t *st;
-    rt_error_t *err;
-    bool have_view, have_material;
-    uint16_t material;
-    /* Range management: a first pass only measures the positions (their
-     * largest binary exponent); the second converts every position times
-     * 2^scale_log2, exactly, so the scene fills the fixed range. */
-    bool measuring;
-    int32_t max_exp2;
-    uint32_t max_line;     /* where the largest position is */
-    const char *max_what;
-    int32_t scale_log2;
-} reader_t;
 
 /* ---- tokens ----------------------------------------------------------- */
 
@@ -39,14 +20,14 @@ static bool is_space(char c)
     return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\v' || c == '\f';
 }
 
-static bool fail(reader_t *r, uint32_t line, const char *msg)
+bool rd_fail(reader_t *r, uint32_t line, const char *msg)
 {
     rt_error_set(r->err, line, msg);
     return false;
 }
 
 /* "<what><msg>, found '<token>'" with the token shortened. */
-static bool fail_tok(reader_t *r, const char *what, const char *msg)
+bool rd_fail_tok(reader_t *r, const char *what, const char *msg)
 {
     rt_error_set(r->err, r->tok_line, what);
     rt_error_append(r->err, msg);
@@ -97,7 +78,7 @@ static bool skip_blank(reader_t *r)
 }
 
 /* Next token, or tok == NULL at the end of input. */
-static bool next_token(reader_t *r)
+bool rd_next_token(reader_t *r)
 {
     if (!skip_blank(r))
         return false;
@@ -118,7 +99,7 @@ static bool next_token(reader_t *r)
     return true;
 }
 
-static bool tok_is(const reader_t *r, const char *word)
+bool rd_tok_is(const reader_t *r, const char *word)
 {
     size_t i = 0;
     if (r->tok == 0)
@@ -130,12 +111,6 @@ static bool tok_is(const reader_t *r, const char *word)
 }
 
 /* ---- numbers ---------------------------------------------------------- */
-
-typedef struct {
-    bool neg;
-    uint64_t mant;   /* up to 19 significant digits */
-    int32_t exp10;
-} decimal_t;
 
 /* Parses the current token as [+-]digits[.digits][(e|E)[+-]digits]. */
 static bool parse_decimal(const reader_t *r, decimal_t *d)
@@ -185,16 +160,16 @@ static bool parse_decimal(const reader_t *r, decimal_t *d)
     return s == e;
 }
 
-static bool read_decimal(reader_t *r, const char *what, decimal_t *d)
+bool rd_decimal(reader_t *r, const char *what, decimal_t *d)
 {
-    if (!next_token(r))
+    if (!rd_next_token(r))
         return false;
     if (!parse_decimal(r, d))
-        return fail_tok(r, what, ": expected a number");
+        return rd_fail_tok(r, what, ": expected a number");
     return true;
 }
 
-static bool out_of_range(reader_t *r, const char *what)
+bool rd_out_of_range(reader_t *r, const char *what)
 {
     rt_error_set(r->err, r->tok_line, what);
     rt_error_append(r->err, ": number out of range for the ");
@@ -203,19 +178,19 @@ static bool out_of_range(reader_t *r, const char *what)
     return false;
 }
 
-static bool read_real(reader_t *r, const char *what, real_t *out)
+bool rd_real(reader_t *r, const char *what, real_t *out)
 {
     decimal_t d;
-    if (!read_decimal(r, what, &d))
+    if (!rd_decimal(r, what, &d))
         return false;
     if (!r_from_decimal(d.neg, d.mant, d.exp10, out))
-        return out_of_range(r, what);
+        return rd_out_of_range(r, what);
     return true;
 }
 
-static bool read_vec3(reader_t *r, const char *what, vec3_t *v)
+bool rd_vec3(reader_t *r, const char *what, vec3_t *v)
 {
-    return read_real(r, what, &v->x) && read_real(r, what, &v->y) && read_real(r, what, &v->z);
+    return rd_real(r, what, &v->x) && rd_real(r, what, &v->y) && rd_real(r, what, &v->z);
 }
 
 /* An upper bound p with |mant * 10^exp10| < 2^p (within 2 of the least). */
@@ -230,15 +205,17 @@ static int32_t decimal_exp2_bound(uint64_t mant, int32_t exp10)
 
 /* A position (or a length): scaled by 2^scale_log2 with the rest of the
  * scene; in the measuring pass only its size is recorded. */
-static bool read_pos(reader_t *r, const char *what, real_t *out)
+bool rd_pos(reader_t *r, const char *what, real_t *out)
 {
     decimal_t d;
-    if (!read_decimal(r, what, &d))
+    if (!rd_decimal(r, what, &d))
         return false;
     *out = 0;
     if (r->measuring) {
         if (d.mant != 0) {
-            int32_t p = decimal_exp2_bound(d.mant, d.exp10);
+            /* inside transform blocks sizes may grow by their scales */
+            int32_t p = decimal_exp2_bound(d.mant, d.exp10) +
+                        (r->n_blocks ? r->blocks[r->n_blocks - 1].extent_exp2 : 0);
             if (p > r->max_exp2) {
                 r->max_exp2 = p;
                 r->max_line = r->tok_line;
@@ -248,20 +225,20 @@ static bool read_pos(reader_t *r, const char *what, real_t *out)
         return true;
     }
     if (!r_from_decimal_scaled(d.neg, d.mant, d.exp10, r->scale_log2, out))
-        return out_of_range(r, what);
+        return rd_out_of_range(r, what);
     return true;
 }
 
-static bool read_pos3(reader_t *r, const char *what, vec3_t *v)
+bool rd_pos3(reader_t *r, const char *what, vec3_t *v)
 {
-    return read_pos(r, what, &v->x) && read_pos(r, what, &v->y) && read_pos(r, what, &v->z);
+    return rd_pos(r, what, &v->x) && rd_pos(r, what, &v->y) && rd_pos(r, what, &v->z);
 }
 
 /* A non-negative integer in [lo, hi]. */
-static bool read_count(reader_t *r, const char *what, uint32_t lo, uint32_t hi, uint32_t *out)
+static bool rd_count(reader_t *r, const char *what, uint32_t lo, uint32_t hi, uint32_t *out)
 {
     decimal_t d;
-    if (!read_decimal(r, what, &d))
+    if (!rd_decimal(r, what, &d))
         return false;
     uint64_t v = d.mant;
     for (int32_t i = 0; i < d.exp10 && v <= hi; i++)
@@ -280,7 +257,7 @@ static bool read_count(reader_t *r, const char *what, uint32_t lo, uint32_t hi, 
 
 /* ---- capacities ------------------------------------------------------- */
 
-static bool over_capacity(reader_t *r, const char *what, const char *macro, int32_t cap)
+bool rd_over_capacity(reader_t *r, const char *what, const char *macro, int32_t cap)
 {
     rt_error_set(r->err, r->tok_line, "too many ");
     rt_error_append(r->err, what);
@@ -294,10 +271,7 @@ static bool over_capacity(reader_t *r, const char *what, const char *macro, int3
     return false;
 }
 
-#define CHECK_ROOM(r, count, cap, what) \
-    ((count) < (cap) ? true : over_capacity((r), (what), #cap, (int32_t)(cap)))
-
-static bool need_material(reader_t *r, const char *what)
+bool rd_need_material(reader_t *r, const char *what)
 {
     if (r->have_material)
         return true;
@@ -314,22 +288,22 @@ static bool read_view(reader_t *r)
     view_t *v = &r->st->scene.view;
     uint32_t line = r->tok_line;
     for (unsigned k = 0; k < 6; k++) {
-        if (!next_token(r))
+        if (!rd_next_token(r))
             return false;
-        if (!tok_is(r, keys[k]))
-            return fail_tok(r, "v: expected ", keys[k]);
+        if (!rd_tok_is(r, keys[k]))
+            return rd_fail_tok(r, "v: expected ", keys[k]);
         real_t hither;
         uint32_t w = 0, h = 0;
         bool ok = true;
         switch (k) {
-        case 0: ok = read_pos3(r, "from", &v->from); break;
-        case 1: ok = read_pos3(r, "at", &v->at); break;
-        case 2: ok = read_vec3(r, "up", &v->up); break;
-        case 3: ok = read_real(r, "angle", &v->angle); break;
-        case 4: ok = read_real(r, "hither", &hither); break; /* ignored by the model */
+        case 0: ok = rd_pos3(r, "from", &v->from); break;
+        case 1: ok = rd_pos3(r, "at", &v->at); break;
+        case 2: ok = rd_vec3(r, "up", &v->up); break;
+        case 3: ok = rd_real(r, "angle", &v->angle); break;
+        case 4: ok = rd_real(r, "hither", &hither); break; /* ignored by the model */
         default:
-            ok = read_count(r, "resolution", 1, RT_MAX_WIDTH, &w) &&
-                 read_count(r, "resolution", 1, RT_MAX_HEIGHT, &h);
+            ok = rd_count(r, "resolution", 1, RT_MAX_WIDTH, &w) &&
+                 rd_count(r, "resolution", 1, RT_MAX_HEIGHT, &h);
             r->st->scene.width = (uint16_t)w;
             r->st->scene.height = (uint16_t)h;
             break;
@@ -343,7 +317,7 @@ static bool read_view(reader_t *r)
     camera_t cam;
     const char *why = camera_init(&cam, v, r->st->scene.width, r->st->scene.height);
     if (why)
-        return fail(r, line, why);
+        return rd_fail(r, line, why);
     return true;
 }
 
@@ -353,21 +327,21 @@ static bool read_light(reader_t *r)
     if (!r->measuring && !CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
         return false;
     light_t scratch, *l = r->measuring ? &scratch : &r->st->lights[sc->n_lights];
-    if (!read_pos3(r, "l", &l->pos))
+    if (!rd_pos3(r, "l", &l->pos))
         return false;
     l->colour = v3(R_ONE, R_ONE, R_ONE);
     /* optional colour: three more numbers on the same line */
     const char *save_p = r->p;
     uint32_t save_line = r->line;
-    if (!next_token(r))
+    if (!rd_next_token(r))
         return false;
     if (r->tok != 0 && r->tok_line == save_line) {
         decimal_t d;
         if (!parse_decimal(r, &d))
-            return fail_tok(r, "l", ": expected a number or the end of the line");
+            return rd_fail_tok(r, "l", ": expected a number or the end of the line");
         if (!r_from_decimal(d.neg, d.mant, d.exp10, &l->colour.x))
-            return out_of_range(r, "l");
-        if (!read_real(r, "l", &l->colour.y) || !read_real(r, "l", &l->colour.z))
+            return rd_out_of_range(r, "l");
+        if (!rd_real(r, "l", &l->colour.y) || !rd_real(r, "l", &l->colour.z))
             return false;
     } else {
         r->p = save_p;
@@ -383,15 +357,15 @@ static bool read_material(reader_t *r)
     scene_t *sc = &r->st->scene;
     material_t m;
     decimal_t d;
-    if (!read_vec3(r, "f", &m.colour) || !read_real(r, "f", &m.kd) || !read_real(r, "f", &m.ks) ||
-        !read_decimal(r, "f", &d))
+    if (!rd_vec3(r, "f", &m.colour) || !rd_real(r, "f", &m.kd) || !rd_real(r, "f", &m.ks) ||
+        !rd_decimal(r, "f", &d))
         return false;
     if (!shine_from_decimal(d.neg, d.mant, d.exp10, &m.shine))
-        return fail(r, r->tok_line, "f: Phong exponent must be from 0 to 1000000");
-    if (!read_real(r, "f", &m.t) || !read_real(r, "f", &m.ior))
+        return rd_fail(r, r->tok_line, "f: Phong exponent must be from 0 to 1000000");
+    if (!rd_real(r, "f", &m.t) || !rd_real(r, "f", &m.ior))
         return false;
     if (m.t > 0 && m.ior <= 0)
-        return fail(r, r->tok_line, "f: index of refraction must be positive");
+        return rd_fail(r, r->tok_line, "f: index of refraction must be positive");
     r->have_material = true;
     if (r->measuring)
         return true;
@@ -420,15 +394,15 @@ static bool read_sphere(reader_t *r)
     uint32_t line = r->tok_line;
     vec3_t c;
     real_t rad;
-    if (!need_material(r, "s") ||
+    if (!rd_need_material(r, "s") ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_spheres, RT_MAX_SPHERES, "spheres")) ||
-        !read_pos3(r, "s", &c) || !read_pos(r, "s", &rad))
+        !rd_pos3(r, "s", &c) || !rd_pos(r, "s", &rad))
         return false;
     if (r->measuring)
         return true;
     const char *why = sphere_init(&r->st->spheres[sc->n_spheres], c, rad, r->material);
     if (why)
-        return fail(r, line, why);
+        return rd_fail(r, line, why);
     sc->n_spheres++;
     return true;
 }
@@ -439,16 +413,16 @@ static bool read_cone(reader_t *r)
     uint32_t line = r->tok_line;
     vec3_t base, apex;
     real_t rb, ra;
-    if (!need_material(r, "c") ||
+    if (!rd_need_material(r, "c") ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_cones, RT_MAX_CONES, "cones")) ||
-        !read_pos3(r, "c", &base) || !read_pos(r, "c", &rb) || !read_pos3(r, "c", &apex) ||
-        !read_pos(r, "c", &ra))
+        !rd_pos3(r, "c", &base) || !rd_pos(r, "c", &rb) || !rd_pos3(r, "c", &apex) ||
+        !rd_pos(r, "c", &ra))
         return false;
     if (r->measuring)
         return true;
     const char *why = cone_init(&r->st->cones[sc->n_cones], base, rb, apex, ra, r->material);
     if (why)
-        return fail(r, line, why);
+        return rd_fail(r, line, why);
     sc->n_cones++;
     return true;
 }
@@ -458,30 +432,30 @@ static bool read_polygon(reader_t *r, bool patch)
     scene_t *sc = &r->st->scene;
     const char *what = patch ? "pp" : "p";
     uint32_t line = r->tok_line, n;
-    if (!need_material(r, what) ||
+    if (!rd_need_material(r, what) ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_polygons, RT_MAX_POLYGONS, "polygons and patches")))
         return false;
-    if (!read_count(r, what, 3, 0xFFFFFFFFu >> 8, &n))
+    if (!rd_count(r, what, 3, 0xFFFFFFFFu >> 8, &n))
         return false;
     if (n > RT_MAX_POLY_VERTS)
-        return over_capacity(r, "vertices in one polygon", "RT_MAX_POLY_VERTS", RT_MAX_POLY_VERTS);
+        return rd_over_capacity(r, "vertices in one polygon", "RT_MAX_POLY_VERTS", RT_MAX_POLY_VERTS);
     if (!r->measuring && n > RT_MAX_VERTICES - sc->n_vertices)
-        return over_capacity(r, "vertices", "RT_MAX_VERTICES", RT_MAX_VERTICES);
+        return rd_over_capacity(r, "vertices", "RT_MAX_VERTICES", RT_MAX_VERTICES);
     if (!r->measuring && patch && n > RT_MAX_VERTICES - sc->n_normals)
-        return over_capacity(r, "patch normals", "RT_MAX_VERTICES", RT_MAX_VERTICES);
+        return rd_over_capacity(r, "patch normals", "RT_MAX_VERTICES", RT_MAX_VERTICES);
     for (uint32_t i = 0; i < n; i++) {
         vec3_t scratch;
-        if (!read_pos3(r, what, r->measuring ? &scratch : &r->st->vertices[sc->n_vertices + i]))
+        if (!rd_pos3(r, what, r->measuring ? &scratch : &r->st->vertices[sc->n_vertices + i]))
             return false;
         if (patch) {
             vec3_t nv;
-            if (!read_vec3(r, what, &nv))
+            if (!rd_vec3(r, what, &nv))
                 return false;
             if (r->measuring)
                 continue;
             nv = v3_unit(nv);
             if (nv.x == 0 && nv.y == 0 && nv.z == 0)
-                return fail(r, r->tok_line, "pp: vertex normal is zero");
+                return rd_fail(r, r->tok_line, "pp: vertex normal is zero");
             r->st->normals[sc->n_normals + i] = nv;
         }
     }
@@ -495,7 +469,7 @@ static bool read_polygon(reader_t *r, bool patch)
                                    sc->n_vertices, (uint16_t)n,
                                    patch ? sc->n_normals : POLY_NO_NORMALS, r->material);
     if (why)
-        return fail(r, line, why);
+        return rd_fail(r, line, why);
     sc->n_vertices += n;
     if (patch)
         sc->n_normals += n;
@@ -505,37 +479,52 @@ static bool read_polygon(reader_t *r, bool patch)
 
 static bool read_entity(reader_t *r)
 {
-    if (tok_is(r, "v")) {
+    if (rd_tok_is(r, "v")) {
         if (r->have_view)
-            return fail(r, r->tok_line, "v: a second viewpoint");
+            return rd_fail(r, r->tok_line, "v: a second viewpoint");
         return read_view(r);
     }
-    if (tok_is(r, "b"))
-        return read_vec3(r, "b", &r->st->scene.background);
-    if (tok_is(r, "#"))
+    if (rd_tok_is(r, "b"))
+        return rd_vec3(r, "b", &r->st->scene.background);
+    if (rd_tok_is(r, "#"))
         return true;
+    if (r->n_blocks) {
+        static const char *const not_in_blocks[] = { "l", "c", "p", "pp", "b" };
+        for (unsigned i = 0; i < sizeof not_in_blocks / sizeof not_in_blocks[0]; i++) {
+            if (rd_tok_is(r, not_in_blocks[i])) {
+                rt_error_set(r->err, r->tok_line, "'");
+                rt_error_append(r->err, not_in_blocks[i]);
+                rt_error_append(r->err, "' is not allowed inside a transform or CSG block");
+                return false;
+            }
+        }
+    }
     static const char *const need_view[] = { "l", "f", "s", "c", "p", "pp" };
     for (unsigned i = 0; i < sizeof need_view / sizeof need_view[0]; i++) {
-        if (tok_is(r, need_view[i]) && !r->have_view) {
+        if (rd_tok_is(r, need_view[i]) && !r->have_view) {
             rt_error_set(r->err, r->tok_line, "'");
             rt_error_append(r->err, need_view[i]);
             rt_error_append(r->err, "' before the 'v' viewpoint");
             return false;
         }
     }
-    if (tok_is(r, "l"))
+    bool handled;
+    bool ok = rd_solid_entity(r, &handled);
+    if (handled)
+        return ok;
+    if (rd_tok_is(r, "l"))
         return read_light(r);
-    if (tok_is(r, "f"))
+    if (rd_tok_is(r, "f"))
         return read_material(r);
-    if (tok_is(r, "s"))
+    if (rd_tok_is(r, "s"))
         return read_sphere(r);
-    if (tok_is(r, "c"))
+    if (rd_tok_is(r, "c"))
         return read_cone(r);
-    if (tok_is(r, "p"))
+    if (rd_tok_is(r, "p"))
         return read_polygon(r, false);
-    if (tok_is(r, "pp"))
+    if (rd_tok_is(r, "pp"))
         return read_polygon(r, true);
-    return fail_tok(r, "", "unknown entity (expected v, b, l, f, c, s, p or pp)");
+    return rd_fail_tok(r, "", "unknown entity (expected v, b, l, f, c, s, p, pp, a solid or a block)");
 }
 
 /* The power of two that brings the scene's largest coordinate below
@@ -561,10 +550,10 @@ static bool choose_scale(reader_t *r)
 static bool read_pass(reader_t *r)
 {
     for (;;) {
-        if (!next_token(r))
+        if (!rd_next_token(r))
             return false;
         if (r->tok == 0)
-            return true;
+            return rd_blocks_closed(r);
         if (!read_entity(r))
             return false;
     }
@@ -586,7 +575,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     if (!read_pass(&r))
         return false;
     if (!r.have_view)
-        return fail(&r, r.tok_line, "no 'v' viewpoint in the file");
+        return rd_fail(&r, r.tok_line, "no 'v' viewpoint in the file");
     if (!choose_scale(&r))
         return false;
     int32_t scale = r.scale_log2;
@@ -607,6 +596,10 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     sc->polygons = store->polygons;
     sc->vertices = store->vertices;
     sc->normals = store->normals;
+    sc->xforms = store->xforms;
+    sc->shapes = store->shapes;
+    sc->csg_nodes = store->csg_nodes;
+    sc->objects = store->objects;
     sc->scale_log2 = scale;
     if (!read_pass(&r))
         return false;
@@ -614,6 +607,6 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     sc->light_intensity = n ? r_div(r_sqrt(r_from_int((int32_t)n)), r_from_int(2 * (int32_t)n)) : 0;
     const char *why = bvh_build(store);
     if (why)
-        return fail(&r, r.tok_line, why);
+        return rd_fail(&r, r.tok_line, why);
     return true;
 }

@@ -43,7 +43,8 @@ typedef real_t shine_t;
 #define R_RATIO(n, d) ((real_t)(n) / (real_t)(d))
 #define R_ONE ((real_t)1)
 #define R_BIG ((real_t)1e30)                   /* "no hit yet" distance */
-#define R_ULPS(n) ((real_t)(n) * (real_t)0x1p-16) /* n units of Q16.16, for margins */
+/* n units of the fixed build's last place (margins match across builds) */
+#define R_ULPS(n) ((real_t)(n) / (real_t)((int32_t)1 << FX_FRAC_BITS))
 
 static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
@@ -77,6 +78,12 @@ static inline real_wide_t r_tan_deg_wide(real_t deg)
 {
     return R_FN(tan)(deg * (real_t)(3.14159265358979323846 / 180.0));
 }
+static inline void r_sincos_deg(real_t deg, real_t *s, real_t *c)
+{
+    real_t rad = deg * (real_t)(3.14159265358979323846 / 180.0);
+    *s = R_FN(sin)(rad);
+    *c = R_FN(cos)(rad);
+}
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
 {
     real_t l = R_FN(sqrt)(x * x + y * y + z * z);
@@ -101,6 +108,18 @@ bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out);
 /* +-mant * 10^exp10 * 2^scale_log2 */
 bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2, real_t *out);
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out);
+/* v * 2^k, false if out of range */
+static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
+{
+    for (; k > 0; k--)
+        v *= 2;
+    for (; k < 0; k++)
+        v /= 2;
+    if (v > (real_t)1e30 || v < (real_t)-1e30)
+        return false;
+    *out = v;
+    return true;
+}
 
 #else /* fixed point */
 
@@ -146,6 +165,7 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
 {
     fx_unit3(x, y, z, out);
 }
+static inline void r_sincos_deg(real_t deg, real_t *s, real_t *c) { fx_sincos_deg(deg, s, c); }
 static inline uint8_t r_to_u8(real_t c)
 {
     if (c <= 0)
@@ -157,6 +177,19 @@ static inline uint8_t r_to_u8(real_t c)
 static inline bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
 {
     return fx_from_decimal(neg, mant, exp10, FX_FRAC_BITS, (uint32_t)FX_MAX, out);
+}
+static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
+{
+    int64_t w = v;
+    for (; k > 0; k--) {
+        w *= 2;
+        if (w > FX_MAX || w < FX_MIN)
+            return false;
+    }
+    for (; k < 0; k++)
+        w /= 2;
+    *out = (real_t)w;
+    return true;
 }
 /* the scale is folded into the fraction bits: exact, one rounding */
 static inline bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2,

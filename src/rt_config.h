@@ -76,9 +76,36 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_MAX_MATERIALS 64
 #endif
 
+/* Solids beyond NFF: shapes (quadrics, tori, boxes), transforms, CSG
+ * nodes, and objects (a shape or a CSG tree, as the BVH sees them). A CSG
+ * evaluation carries at most RT_CSG_MAX_SPANS inside-spans per node and
+ * nests at most RT_CSG_MAX_DEPTH deep; the reader rejects trees that could
+ * need more. */
+#ifndef RT_MAX_SHAPES
+#define RT_MAX_SHAPES 64
+#endif
+#ifndef RT_MAX_XFORMS
+#define RT_MAX_XFORMS 64
+#endif
+#ifndef RT_MAX_CSG_NODES
+#define RT_MAX_CSG_NODES 32
+#endif
+#ifndef RT_MAX_OBJECTS
+#define RT_MAX_OBJECTS 64
+#endif
+#ifndef RT_CSG_MAX_SPANS
+#define RT_CSG_MAX_SPANS 4
+#endif
+#ifndef RT_CSG_MAX_DEPTH
+#define RT_CSG_MAX_DEPTH 4
+#endif
+#ifndef RT_USE_OBJECTS
+#define RT_USE_OBJECTS 1
+#endif
+
 /* Bounding volume hierarchy: nodes (at most 2 per primitive) and the
  * depth of the tree, which bounds the traversal stack. */
-#define RT_MAX_PRIMITIVES (RT_MAX_SPHERES + RT_MAX_CONES + RT_MAX_POLYGONS)
+#define RT_MAX_PRIMITIVES (RT_MAX_SPHERES + RT_MAX_CONES + RT_MAX_POLYGONS + RT_MAX_OBJECTS)
 #ifndef RT_MAX_BVH_NODES
 #define RT_MAX_BVH_NODES (2 * RT_MAX_PRIMITIVES)
 #endif
@@ -150,6 +177,9 @@ _Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POL
 _Static_assert(RT_MAX_POLYGONS <= 0xFFFFFF && RT_MAX_SPHERES <= 0xFFFFFF && RT_MAX_CONES <= 0xFFFFFF,
                "primitive indices are 24-bit");
 _Static_assert(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535, "materials are indexed by uint16_t");
+_Static_assert(RT_MAX_SHAPES < 0x8000 && RT_MAX_CSG_NODES < 0x8000 && RT_MAX_XFORMS < 0xFFFF,
+               "shape, CSG node and transform indices are 15/16-bit");
+_Static_assert(RT_CSG_MAX_SPANS >= 2 && RT_CSG_MAX_SPANS <= 32, "RT_CSG_MAX_SPANS out of 2..32");
 _Static_assert(RT_BVH_MAX_DEPTH >= 8 && RT_BVH_MAX_DEPTH <= 64, "RT_BVH_MAX_DEPTH out of 8..64");
 _Static_assert(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16, "RT_BVH_LEAF_SIZE out of 1..16");
 _Static_assert(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255, "RT_MAX_LIGHTS out of 1..255");

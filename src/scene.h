@@ -66,7 +66,53 @@ typedef uint32_t prim_ref_t;
 #define PRIM_REF(kind, index) ((prim_ref_t)(kind) << 24 | (prim_ref_t)(index))
 #define PRIM_KIND(ref) ((ref) >> 24)
 #define PRIM_INDEX(ref) ((ref) & 0xFFFFFFu)
-enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON };
+enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON, PRIM_OBJECT };
+
+/* ---- solids beyond NFF (src/solid.c) --------------------------------- */
+
+/* An affine map kept with its inverse: world = m p + t, p = im (world - t).
+ * Built from translate/rotate/scale steps, so the inverse is exact to the
+ * same rounding as the map (no matrix inversion). */
+typedef struct {
+    real_t m[3][3], t[3];
+    real_t im[3][3];
+} xform_t;
+
+#define XFORM_NONE 0xFFFFu
+
+enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX };
+
+/* A solid in its own (object) space, placed by an optional transform:
+ *   quadric  a x^2 + b y^2 + c z^2 + d xy + e xz + f yz + g x + h y + i z + j <= 0
+ *            inside the clip box [lo, hi] (coefficients in q[0..9])
+ *   torus    around the z axis: major radius q[0], minor radius q[1]
+ *   box      [lo, hi]
+ * `bound` is the radius of a sphere about the object-space origin that
+ * holds the solid (early rejection, root bracketing). */
+typedef struct {
+    real_t q[10];
+    vec3_t lo, hi;
+    real_t bound;
+    uint16_t xform;
+    uint16_t material;
+    uint8_t kind;
+} shape_t;
+
+enum csg_op { CSG_UNION, CSG_INTERSECTION, CSG_DIFFERENCE };
+
+/* A binary CSG node; a child is a shape (index) or another node
+ * (index | CSG_NODE_BIT). */
+#define CSG_NODE_BIT 0x8000u
+typedef struct {
+    uint16_t a, b;
+    uint8_t op;
+} csg_node_t;
+
+/* What the BVH sees: one shape, or the root of a CSG tree. */
+typedef struct {
+    vec3_t box_min, box_max;  /* world bounds */
+    uint16_t root;            /* shape index, or node index | CSG_NODE_BIT */
+} object_t;
 
 /* BVH node, depth-first order: an interior node's left child follows it,
  * `index` is its right child; a leaf's primitives are
@@ -100,9 +146,14 @@ typedef struct {
     const vec3_t *normals;    /* per-vertex normals of patches (unit) */
     const bvh_node_t *bvh_nodes;
     const prim_ref_t *bvh_prims;
+    const xform_t *xforms;
+    const shape_t *shapes;
+    const csg_node_t *csg_nodes;
+    const object_t *objects;
 
     uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
     uint32_t n_vertices, n_normals;
+    uint32_t n_xforms, n_shapes, n_csg_nodes, n_objects;
     uint32_t n_flat_skipped;  /* zero-area polygons dropped by the reader */
     int32_t scale_log2;       /* positions were read times 2^scale_log2 */
     uint32_t n_bvh_nodes;
@@ -118,6 +169,10 @@ typedef struct {
     polygon_t polygons[RT_MAX_POLYGONS];
     vec3_t vertices[RT_MAX_VERTICES];
     vec3_t normals[RT_MAX_VERTICES];
+    xform_t xforms[RT_MAX_XFORMS];
+    shape_t shapes[RT_MAX_SHAPES];
+    csg_node_t csg_nodes[RT_MAX_CSG_NODES];
+    object_t objects[RT_MAX_OBJECTS];
     bvh_node_t bvh_nodes[RT_MAX_BVH_NODES];
     prim_ref_t bvh_prims[RT_MAX_PRIMITIVES];
 } scene_store_t;

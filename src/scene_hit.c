@@ -10,6 +10,8 @@
  */
 #include "scene_hit.h"
 
+#include "solid.h"
+
 /* Every slab interval is widened by 4 units of the last place per unit
  * of t plus 4 units (r_widen_down/up): a reciprocal of magnitude >= 1 is
  * good to half a unit, relative, and each product to one unit. */
@@ -77,10 +79,26 @@ static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, rea
 }
 
 static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
-                     rt_stats_t *st)
+                     rt_stats_t *st, hit_t *h)
 {
     uint32_t i = PRIM_INDEX(ref);
     switch (PRIM_KIND(ref)) {
+#if RT_USE_OBJECTS
+    case PRIM_OBJECT: {
+        uint16_t shape;
+        uint8_t face;
+        bool flip;
+        st->tests_object++;
+        if (!ray_hit_object(sc, &sc->objects[i], r, tmin, t, &shape, &face, &flip))
+            return false;
+        if (h) {
+            h->shape = shape;
+            h->face = face;
+            h->flip = flip;
+        }
+        return true;
+    }
+#endif
 #if RT_USE_SPHERES
     case PRIM_SPHERE:
         st->tests_sphere++;
@@ -97,7 +115,7 @@ static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t t
         return ray_hit_polygon(sc, &sc->polygons[i], r, tmin, t);
 #endif
     default:
-        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st;
+        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st, (void)h;
         return false;
     }
 }
@@ -133,7 +151,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                 prim_ref_t ref = sc->bvh_prims[k];
                 bool lower = !found || ref < PRIM_REF(h->kind, h->index);
                 real_t t = lower ? r_next_up(h->t) : h->t;
-                if (hit_prim(sc, ref, r, tmin, &t, st) && (t < h->t || lower)) {
+                if (hit_prim(sc, ref, r, tmin, &t, st, h) && (t < h->t || lower)) {
                     h->t = t;
                     h->kind = (uint8_t)PRIM_KIND(ref);
                     h->index = PRIM_INDEX(ref);
@@ -193,7 +211,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count; k++) {
                 real_t t = tmax;
-                if (hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st))
+                if (hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st, 0))
                     return true; /* any blocker will do */
             }
         } else {
@@ -216,10 +234,10 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     bool found = false;
-    uint32_t counts[3] = { sc->n_spheres, sc->n_cones, sc->n_polygons };
-    for (uint32_t kind = 0; kind < 3; kind++) {
+    uint32_t counts[4] = { sc->n_spheres, sc->n_cones, sc->n_polygons, sc->n_objects };
+    for (uint32_t kind = 0; kind < 4; kind++) {
         for (uint32_t i = 0; i < counts[kind]; i++) {
-            if (hit_prim(sc, PRIM_REF(kind, i), r, tmin, &h->t, st)) {
+            if (hit_prim(sc, PRIM_REF(kind, i), r, tmin, &h->t, st, h)) {
                 h->kind = (uint8_t)kind;
                 h->index = i;
                 found = true;

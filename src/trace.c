@@ -2,6 +2,7 @@
 #include "trace.h"
 
 #include "scene_hit.h"
+#include "solid.h"
 
 typedef struct {
     vec3_t point;
@@ -28,6 +29,14 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     case PRIM_CONE:
         ng = n = cone_normal(&sc->cones[h->index], s.point);
         mat = sc->cones[h->index].material;
+        break;
+#endif
+#if RT_USE_OBJECTS
+    case PRIM_OBJECT:
+        ng = n = shape_normal(sc, h->shape, h->face, s.point);
+        if (h->flip) /* a subtracted solid's surface faces the other way */
+            ng = n = v3_neg(ng);
+        mat = sc->shapes[h->shape].material;
         break;
 #endif
     default: {

@@ -33,9 +33,9 @@ typedef struct {
     const char *name;
     const char *body;
     double extent;   /* rays aim inside a cube of this half-size */
-} shape_t;
+} test_shape_t;
 
-static const shape_t shapes[] = {
+static const test_shape_t shapes[] = {
     { "sphere", "s 0.3 -0.2 0.1 1.5\n", 1.6 },
     { "small sphere", "s 0.01 0.02 0 0.05\n", 0.06 },
     { "cylinder", "c 0 0 -1 0.5 0.2 0.3 1.2 0.5\n", 1.3 },
@@ -47,9 +47,21 @@ static const shape_t shapes[] = {
     { "patch triangle", "pp 3\n-1 0 -1 -0.3 -1 0\n1 0 -1 0.3 -1 0\n0 0.5 1 0 -1 0.4\n", 1.2 },
     { "patch fan",
       "pp 4\n-1 0 -1 -0.2 -1 -0.2\n1 0 -1 0.2 -1 -0.2\n1 0 1 0.2 -1 0.2\n-1 0 1 -0.2 -1 0.2\n", 1.2 },
+    { "box", "transform\nrotate 1 2 3 30\nbox -1 -0.5 -0.7 1 0.5 0.7\nend\n", 1.3 },
+    { "torus", "transform\nrotate 1 0 0 60\ntorus 1 0.35\nend\n", 1.4 },
+    { "ellipsoid", "transform\nrotate 0 1 1 40\nellipsoid 1.2 0.6 0.9\nend\n", 1.3 },
+    { "paraboloid", "transform\ntranslate 0 0 -0.8\nparaboloid 0.8 0.8 1.5\nend\n", 1.3 },
+    { "hyperboloid", "transform\nrotate 1 1 0 25\nhyperboloid 0.5 0.5 0.7 1\nend\n", 1.3 },
+    { "hyperboloid2", "hyperboloid2 0.4 0.4 0.4 1.2\n", 1.3 },
+    { "quadcone", "quadcone 0.6 0.6 1\n", 1.1 },
+    { "quadcylinder", "transform\nscale 1 0.5 1\nquadcylinder 0.7 0.7 1\nend\n", 1.1 },
+    { "general quadric", "quadric 1 2 1 0.5 0 0 0 0 0 -1 -1 -1 -1 1 1 1\n", 1.1 },
+    { "CSG difference", "difference\nbox -0.8 -0.8 -0.8 0.8 0.8 0.8\ns 0.8 -0.8 0.8 0.7\nend\n", 1.2 },
+    { "CSG intersection lens", "intersection\ns 0 -0.6 0 1\ns 0 0.6 0 1\nend\n", 1.0 },
+    { "CSG union", "union\ntransform\nrotate 1 0 0 90\ntorus 0.8 0.25\nend\nbox -0.3 -0.3 -1 0.3 0.3 1\nend\n", 1.2 },
 };
 
-static bool load_both(const shape_t *s)
+static bool load_both(const test_shape_t *s)
 {
     char text[2048];
     rt_error_t err;
@@ -111,7 +123,7 @@ static bool near_discontinuity(const double o[3], const double dir[3], double ep
     return false;
 }
 
-static void test_shape(const shape_t *s)
+static void test_shape(const test_shape_t *s)
 {
     if (!load_both(s)) {
         CHECK(0, "%s: scene loads in both builds", s->name);
@@ -159,7 +171,7 @@ static void test_shape(const shape_t *s)
 static void test_camera(void)
 {
     /* eye ray directions across a 512x512 grid, fixed against double */
-    const shape_t *s = &shapes[0];
+    const test_shape_t *s = &shapes[0];
     if (!load_both(s))
         return;
     double worst = 0;

@@ -6,6 +6,7 @@
 #include "camera.h"
 #include "nff.h"
 #include "scene_hit.h"
+#include "solid.h"
 #include "trace.h"
 
 #if RT_BACKEND_DOUBLE
@@ -106,6 +107,11 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
         return false;
     vec3_t p = ray_at(&r, h.t), n;
     switch (h.kind) {
+    case PRIM_OBJECT:
+        n = shape_normal(sc, h.shape, h.face, p);
+        if (h.flip)
+            n = v3_neg(n);
+        break;
     case PRIM_SPHERE: n = sphere_normal(&sc->spheres[h.index], p); break;
     case PRIM_CONE: n = cone_normal(&sc->cones[h.index], p); break;
     default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;

@@ -1,0 +1,402 @@
+/*
+ * nff_solids.c - the scene syntax beyond NFF (README "Solids"):
+ *
+ *   transform ... end        translate x y z | rotate ax ay az deg |
+ *                            scale sx sy sz, applied to what follows
+ *   union | intersection | difference ... end     CSG of the solids inside
+ *   box x0 y0 z0 x1 y1 z1    torus R r            quadric a..j x0..z1
+ *   ellipsoid rx ry rz       paraboloid rx ry h   hyperboloid rx ry rz h
+ *   hyperboloid2 rx ry rz h  quadcone rx ry h     quadcylinder rx ry h
+ *   s x y z r                inside a block: a sphere solid
+ *
+ * Plain NFF files never use these words, so they read as before.
+ */
+#include "bvh.h"
+#include "nff_reader.h"
+#include "solid.h"
+
+static block_t *top(reader_t *r) { return r->n_blocks ? &r->blocks[r->n_blocks - 1] : 0; }
+
+/* The innermost open CSG block, if any (transform blocks pass through). */
+static block_t *csg_parent(reader_t *r)
+{
+    for (uint32_t i = r->n_blocks; i > 0; i--)
+        if (r->blocks[i - 1].csg)
+            return &r->blocks[i - 1];
+    return 0;
+}
+
+/* The index of the current transform in the table (stored on first use). */
+static bool current_xform(reader_t *r, const xform_t *extra, uint16_t *out)
+{
+    block_t *b = top(r);
+    scene_t *sc = &r->st->scene;
+    if (!extra && (!b || b->identity)) {
+        *out = XFORM_NONE;
+        return true;
+    }
+    if (!extra && b->xf_index != XFORM_NONE) {
+        *out = b->xf_index;
+        return true;
+    }
+    if (!CHECK_ROOM(r, sc->n_xforms, RT_MAX_XFORMS, "transforms"))
+        return false;
+    xform_t *x = &r->st->xforms[sc->n_xforms];
+    if (extra)
+        *x = *extra;
+    else
+        *x = b->xf;
+    *out = (uint16_t)sc->n_xforms++;
+    if (!extra)
+        b->xf_index = *out;
+    return true;
+}
+
+static void solid_box(const scene_t *sc, uint16_t ref, vec3_t *lo, vec3_t *hi)
+{
+    if (!(ref & CSG_NODE_BIT)) {
+        shape_world_box(sc, &sc->shapes[ref], lo, hi);
+        return;
+    }
+    const csg_node_t *n = &sc->csg_nodes[ref & ~CSG_NODE_BIT];
+    vec3_t al, ah, bl, bh;
+    solid_box(sc, n->a, &al, &ah);
+    if (n->op == CSG_DIFFERENCE) {
+        *lo = al, *hi = ah;
+        return;
+    }
+    solid_box(sc, n->b, &bl, &bh);
+    if (n->op == CSG_UNION) {
+        *lo = v3(r_min(al.x, bl.x), r_min(al.y, bl.y), r_min(al.z, bl.z));
+        *hi = v3(r_max(ah.x, bh.x), r_max(ah.y, bh.y), r_max(ah.z, bh.z));
+    } else {
+        *lo = v3(r_max(al.x, bl.x), r_max(al.y, bl.y), r_max(al.z, bl.z));
+        *hi = v3(r_min(ah.x, bh.x), r_min(ah.y, bh.y), r_min(ah.z, bh.z));
+    }
+}
+
+/* A finished solid goes to the enclosing CSG block, or becomes an object. */
+static bool place_solid(reader_t *r, uint16_t ref, uint32_t line)
+{
+    scene_t *sc = &r->st->scene;
+    block_t *c = csg_parent(r);
+    if (c) {
+        c->children++;
+        if (!c->has_acc) {
+            c->acc = ref;
+            c->has_acc = true;
+            return true;
+        }
+        if (!CHECK_ROOM(r, sc->n_csg_nodes, RT_MAX_CSG_NODES, "CSG nodes"))
+            return false;
+        csg_node_t *n = &r->st->csg_nodes[sc->n_csg_nodes];
+        n->op = (uint8_t)(c->csg - 1);
+        n->a = c->acc;
+        n->b = ref;
+        c->acc = (uint16_t)(sc->n_csg_nodes++ | CSG_NODE_BIT);
+        return true;
+    }
+    if (!CHECK_ROOM(r, sc->n_objects, RT_MAX_OBJECTS, "objects (solids and CSG trees)"))
+        return false;
+    if (solid_depth(sc, ref) > RT_CSG_MAX_DEPTH) {
+        rt_error_set(r->err, line, "CSG nested deeper than RT_CSG_MAX_DEPTH = ");
+        rt_error_append_int(r->err, RT_CSG_MAX_DEPTH);
+        rt_error_append(r->err, " (raise it with -DRT_CSG_MAX_DEPTH=N)");
+        return false;
+    }
+    uint32_t spans = solid_max_spans(sc, ref);
+    if (spans > RT_CSG_MAX_SPANS) {
+        rt_error_set(r->err, line, "CSG solid may need ");
+        rt_error_append_int(r->err, (int32_t)spans);
+        rt_error_append(r->err, " spans along a ray: capacity RT_CSG_MAX_SPANS = ");
+        rt_error_append_int(r->err, RT_CSG_MAX_SPANS);
+        rt_error_append(r->err, " (raise it with -DRT_CSG_MAX_SPANS=N)");
+        return false;
+    }
+    object_t *o = &r->st->objects[sc->n_objects++];
+    o->root = ref;
+    solid_box(sc, ref, &o->box_min, &o->box_max);
+    return true;
+}
+
+/* A new shape, with the current transform (and an extra object-space
+ * scale for the named quadrics, which are unit shapes scaled). */
+static bool add_shape(reader_t *r, shape_t *proto, const char *why, const vec3_t *extra_scale, uint32_t line)
+{
+    scene_t *sc = &r->st->scene;
+    if (why)
+        return rd_fail(r, line, why);
+    if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
+        return false;
+    if (extra_scale) {
+        xform_t x;
+        block_t *b = top(r);
+        if (b)
+            x = b->xf;
+        else
+            xform_identity(&x);
+        xform_scale(&x, *extra_scale);
+        if (!current_xform(r, &x, &proto->xform))
+            return false;
+    } else if (!current_xform(r, 0, &proto->xform)) {
+        return false;
+    }
+    proto->material = r->material;
+    r->st->shapes[sc->n_shapes] = *proto;
+    return place_solid(r, (uint16_t)sc->n_shapes++, line);
+}
+
+/* Object-space scales below this would put a distant ray origin past the
+ * fixed range once mapped into the object's space. */
+#define MIN_OBJECT_SCALE R_RATIO(1, 64)
+
+static bool sizes_ok(reader_t *r, vec3_t v, const char *what, uint32_t line)
+{
+    if (v.x >= MIN_OBJECT_SCALE && v.y >= MIN_OBJECT_SCALE && v.z >= MIN_OBJECT_SCALE)
+        return true;
+    rt_error_set(r->err, line, what);
+    rt_error_append(r->err, ": sizes must be positive and at least 1/64 of the scene scale");
+    return false;
+}
+
+/* The named quadrics: unit shapes q <= 0 in a clip box, scaled by s. */
+static bool named_quadric(reader_t *r, const char *what, uint32_t line)
+{
+    vec3_t s;
+    real_t h = 0;
+    bool has_h = !rd_tok_is(r, "ellipsoid");
+    bool three_radii = rd_tok_is(r, "ellipsoid") || rd_tok_is(r, "hyperboloid") || rd_tok_is(r, "hyperboloid2");
+    bool ellipsoid = rd_tok_is(r, "ellipsoid"), paraboloid = rd_tok_is(r, "paraboloid");
+    bool hyper1 = rd_tok_is(r, "hyperboloid"), hyper2 = rd_tok_is(r, "hyperboloid2");
+    bool cone = rd_tok_is(r, "quadcone");
+    if (!rd_pos(r, what, &s.x) || !rd_pos(r, what, &s.y))
+        return false;
+    s.z = 0;
+    if (three_radii && !rd_pos(r, what, &s.z))
+        return false;
+    if (has_h && !rd_pos(r, what, &h))
+        return false;
+    if (r->measuring)
+        return true;
+    if (!three_radii)
+        s.z = h; /* the unit shape spans z in [0, 1] or [-1, 1] */
+    if (!sizes_ok(r, s, what, line) || (has_h && !sizes_ok(r, v3(h, h, h), what, line)))
+        return false;
+    real_t q[10] = { R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, 0, 0 };
+    vec3_t lo = v3(-R_ONE, -R_ONE, -R_ONE), hi = v3(R_ONE, R_ONE, R_ONE);
+    if (ellipsoid) {
+        q[2] = R_ONE, q[9] = -R_ONE;
+    } else if (paraboloid) {
+        q[8] = -R_ONE; /* x^2 + y^2 - z */
+        lo.z = 0;
+    } else if (hyper1 || hyper2) {
+        /* unit hyperboloid x^2 + y^2 - z^2 -+ 1 clipped at |z| <= h / rz */
+        real_t zc = r_div(h, s.z);
+        q[2] = -R_ONE, q[9] = hyper1 ? -R_ONE : R_ONE;
+        real_wide_t m2 = r_wmul(zc, zc) + (hyper1 ? r_to_wide(R_ONE) : -r_to_wide(R_ONE));
+        if (m2 <= 0)
+            return rd_fail(r, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
+        real_t m = r_wsqrt(m2);
+        lo = v3(-m, -m, -zc);
+        hi = v3(m, m, zc);
+    } else if (cone) {
+        q[2] = -R_ONE; /* x^2 + y^2 - z^2 */
+    } else {
+        q[9] = -R_ONE; /* cylinder x^2 + y^2 - 1 */
+    }
+    shape_t sh = { 0 };
+    const char *why = shape_init_quadric(&sh, q, lo, hi);
+    return add_shape(r, &sh, why, &s, line);
+}
+
+/* A general quadric's coefficients follow the scene scale 2^k like the
+ * positions do: q(x / 2^k) 2^2k keeps the same surface. */
+static bool read_quadric(reader_t *r, uint32_t line)
+{
+    real_t q[10];
+    vec3_t lo, hi;
+    for (int i = 0; i < 10; i++)
+        if (!rd_real(r, "quadric", &q[i]))
+            return false;
+    if (!rd_pos3(r, "quadric", &lo) || !rd_pos3(r, "quadric", &hi))
+        return false;
+    if (r->measuring)
+        return true;
+    int32_t k = r->scale_log2;
+    for (int i = 6; i < 10; i++)
+        if (!r_ldexp(q[i], i == 9 ? 2 * k : k, &q[i]))
+            return rd_out_of_range(r, "quadric");
+    shape_t sh = { 0 };
+    const char *why = shape_init_quadric(&sh, q, lo, hi);
+    return add_shape(r, &sh, why, 0, line);
+}
+
+static bool open_block(reader_t *r, uint8_t csg)
+{
+    if (r->n_blocks == RT_MAX_BLOCK_DEPTH)
+        return rd_over_capacity(r, "nested blocks", "RT_MAX_BLOCK_DEPTH", RT_MAX_BLOCK_DEPTH);
+    block_t *parent = top(r), *b = &r->blocks[r->n_blocks++];
+    *b = (block_t){ 0 };
+    b->csg = csg;
+    b->line = r->tok_line;
+    b->xf_index = XFORM_NONE;
+    if (parent) {
+        b->xf = parent->xf;
+        b->identity = parent->identity;
+        b->xf_index = parent->xf_index;
+        b->extent_exp2 = parent->extent_exp2;
+    } else {
+        xform_identity(&b->xf);
+        b->identity = true;
+    }
+    if (!csg)
+        b->extent_exp2 += 1; /* rotations and offsets may add up */
+    return true;
+}
+
+static bool close_block(reader_t *r)
+{
+    block_t *b = top(r);
+    if (!b)
+        return rd_fail(r, r->tok_line, "'end' without an open block");
+    block_t done = *b;
+    r->n_blocks--;
+    if (!done.csg || r->measuring)
+        return true;
+    if (done.children < 2) {
+        static const char *const names[] = { "union", "intersection", "difference" };
+        rt_error_set(r->err, done.line, names[done.csg - 1]);
+        rt_error_append(r->err, " needs at least two solids");
+        return false;
+    }
+    return place_solid(r, done.acc, done.line);
+}
+
+static bool transform_step(reader_t *r)
+{
+    block_t *b = top(r);
+    if (!b || b->csg)
+        return rd_fail_tok(r, "", "transform steps belong right inside a 'transform' block");
+    vec3_t v;
+    real_t deg = 0;
+    if (rd_tok_is(r, "translate")) {
+        if (!rd_pos3(r, "translate", &v))
+            return false;
+        if (!r->measuring)
+            xform_translate(&b->xf, v);
+    } else if (rd_tok_is(r, "rotate")) {
+        if (!rd_vec3(r, "rotate", &v) || !rd_real(r, "rotate", &deg))
+            return false;
+        if (v.x == 0 && v.y == 0 && v.z == 0)
+            return rd_fail(r, r->tok_line, "rotate: the axis is zero");
+        if (!r->measuring)
+            xform_rotate(&b->xf, v, deg);
+    } else {
+        if (!rd_vec3(r, "scale", &v))
+            return false;
+        const real_t lo = R_RATIO(1, 64), hi = R_RATIO(64, 1);
+        real_t a[3] = { r_abs(v.x), r_abs(v.y), r_abs(v.z) };
+        for (int i = 0; i < 3; i++)
+            if (a[i] < lo || a[i] > hi)
+                return rd_fail(r, r->tok_line, "scale: factors must be 1/64 to 64 in size (fixed range)");
+        if (r->measuring) {
+            real_t m = r_max(a[0], r_max(a[1], a[2]));
+            while (m > R_ONE) { /* sizes inside grow by up to this */
+                m = m / 2;
+                b->extent_exp2++;
+            }
+        } else {
+            xform_scale(&b->xf, v);
+        }
+    }
+    b->identity = false;
+    b->xf_index = XFORM_NONE; /* changed: store again on next use */
+    return true;
+}
+
+bool rd_solid_entity(reader_t *r, bool *handled)
+{
+    static const char *const words[] = {
+        "transform", "union", "intersection", "difference", "end", "translate", "rotate", "scale",
+        "box", "torus", "quadric", "ellipsoid", "paraboloid", "hyperboloid", "hyperboloid2",
+        "quadcone", "quadcylinder", "s",
+    };
+    unsigned w = 0;
+    while (w < sizeof words / sizeof words[0] && !rd_tok_is(r, words[w]))
+        w++;
+    *handled = w < sizeof words / sizeof words[0] && !(w == 17 && r->n_blocks == 0);
+    if (!*handled)
+        return false;
+    uint32_t line = r->tok_line;
+    if (!r->have_view && w != 4)
+        return rd_fail(r, line, "a solid or block before the 'v' viewpoint");
+    switch (w) {
+    case 0: return open_block(r, 0);
+    case 1: case 2: case 3: return open_block(r, (uint8_t)(1 + w - 1));
+    case 4: return close_block(r);
+    case 5: case 6: case 7: return transform_step(r);
+    default: break;
+    }
+    if (!rd_need_material(r, words[w]))
+        return false;
+    shape_t sh = { 0 };
+    vec3_t lo, hi;
+    real_t a, b;
+    switch (w) {
+    case 8:
+        if (!rd_pos3(r, "box", &lo) || !rd_pos3(r, "box", &hi))
+            return false;
+        if (r->measuring)
+            return true;
+        return add_shape(r, &sh, shape_init_box(&sh, lo, hi), 0, line);
+    case 9:
+        if (!rd_pos(r, "torus", &a) || !rd_pos(r, "torus", &b))
+            return false;
+        if (r->measuring)
+            return true;
+        return add_shape(r, &sh, shape_init_torus(&sh, a, b), 0, line);
+    case 10:
+        return read_quadric(r, line);
+    case 17: { /* a sphere inside a block: the unit sphere, placed and scaled */
+        vec3_t c;
+        if (!rd_pos3(r, "s", &c) || !rd_pos(r, "s", &a))
+            return false;
+        if (r->measuring)
+            return true;
+        a = r_abs(a);
+        if (a == 0)
+            return rd_fail(r, line, "sphere radius is zero");
+        if (!sizes_ok(r, v3(a, a, a), "s", line))
+            return false;
+        const real_t q[10] = { R_ONE, R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, -R_ONE };
+        xform_t x;
+        block_t *bl = top(r);
+        x = bl->xf;
+        xform_translate(&x, c);
+        xform_scale(&x, v3(a, a, a));
+        if (!current_xform(r, &x, &sh.xform))
+            return false;
+        shape_init_quadric(&sh, q, v3(-R_ONE, -R_ONE, -R_ONE), v3(R_ONE, R_ONE, R_ONE));
+        sh.material = r->material;
+        scene_t *sc = &r->st->scene;
+        if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
+            return false;
+        r->st->shapes[sc->n_shapes] = sh;
+        return place_solid(r, (uint16_t)sc->n_shapes++, line);
+    }
+    default:
+        return named_quadric(r, words[w], line);
+    }
+}
+
+bool rd_blocks_closed(reader_t *r)
+{
+    block_t *b = top(r);
+    if (!b)
+        return true;
+    static const char *const names[] = { "transform", "union", "intersection", "difference" };
+    rt_error_set(r->err, b->line, "'");
+    rt_error_append(r->err, names[b->csg]);
+    rt_error_append(r->err, "' block never closed with 'end'");
+    return false;
+}

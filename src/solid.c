@@ -1,0 +1,601 @@
+/*
+ * solid.c - quadrics, tori and boxes in object space, transforms, CSG.
+ *
+ * A world ray goes into a shape's object space by the inverse transform
+ * (direction renormalised, with k = |M^-1 d| so that world t = s / k), and
+ * is moved to its point of closest approach to the object's origin: the
+ * shape's bounding sphere rejects it there, and every root is found close
+ * to that point, where the numbers are small.
+ */
+#include "solid.h"
+
+/* ---- transforms -------------------------------------------------------- */
+
+static real_t row_dot(const real_t row[3], vec3_t v)
+{
+    return r_from_wide(r_wmul(row[0], v.x) + r_wmul(row[1], v.y) + r_wmul(row[2], v.z));
+}
+
+static vec3_t mat_vec(const real_t m[3][3], vec3_t v)
+{
+    return v3(row_dot(m[0], v), row_dot(m[1], v), row_dot(m[2], v));
+}
+
+/* a = a * b (a's columns mixed by b) or a = b * a */
+static void mat_mul_right(real_t a[3][3], const real_t b[3][3])
+{
+    real_t r[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            r[i][j] = r_from_wide(r_wmul(a[i][0], b[0][j]) + r_wmul(a[i][1], b[1][j]) + r_wmul(a[i][2], b[2][j]));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            a[i][j] = r[i][j];
+}
+
+static void mat_mul_left(real_t a[3][3], const real_t b[3][3])
+{
+    real_t r[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            r[i][j] = r_from_wide(r_wmul(b[i][0], a[0][j]) + r_wmul(b[i][1], a[1][j]) + r_wmul(b[i][2], a[2][j]));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            a[i][j] = r[i][j];
+}
+
+void xform_identity(xform_t *x)
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            x->m[i][j] = x->im[i][j] = i == j ? R_ONE : 0;
+        x->t[i] = 0;
+    }
+}
+
+/* world = M (p + v) + t: only t moves */
+void xform_translate(xform_t *x, vec3_t v)
+{
+    vec3_t mv = mat_vec(x->m, v);
+    x->t[0] += mv.x;
+    x->t[1] += mv.y;
+    x->t[2] += mv.z;
+}
+
+void xform_scale(xform_t *x, vec3_t s)
+{
+    const real_t d[3][3] = { { s.x, 0, 0 }, { 0, s.y, 0 }, { 0, 0, s.z } };
+    const real_t di[3][3] = { { r_recip(s.x), 0, 0 }, { 0, r_recip(s.y), 0 }, { 0, 0, r_recip(s.z) } };
+    mat_mul_right(x->m, d);
+    mat_mul_left(x->im, di);
+}
+
+void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
+{
+    real_t s, c;
+    r_sincos_deg(deg, &s, &c);
+    vec3_t a = v3_unit(axis);
+    real_t oc = R_ONE - c;
+    /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T; the inverse is R^T */
+    real_t r[3][3] = {
+        { c + r_mul(oc, r_mul(a.x, a.x)), r_mul(oc, r_mul(a.x, a.y)) - r_mul(s, a.z), r_mul(oc, r_mul(a.x, a.z)) + r_mul(s, a.y) },
+        { r_mul(oc, r_mul(a.y, a.x)) + r_mul(s, a.z), c + r_mul(oc, r_mul(a.y, a.y)), r_mul(oc, r_mul(a.y, a.z)) - r_mul(s, a.x) },
+        { r_mul(oc, r_mul(a.z, a.x)) - r_mul(s, a.y), r_mul(oc, r_mul(a.z, a.y)) + r_mul(s, a.x), c + r_mul(oc, r_mul(a.z, a.z)) },
+    };
+    real_t rt[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            rt[i][j] = r[j][i];
+    mat_mul_right(x->m, r);
+    mat_mul_left(x->im, rt);
+}
+
+vec3_t xform_point(const xform_t *x, vec3_t p)
+{
+    return v3_add(mat_vec(x->m, p), v3(x->t[0], x->t[1], x->t[2]));
+}
+
+vec3_t xform_normal(const xform_t *x, vec3_t n)
+{
+    /* (M^-1)^T n */
+    vec3_t w = v3(r_from_wide(r_wmul(x->im[0][0], n.x) + r_wmul(x->im[1][0], n.y) + r_wmul(x->im[2][0], n.z)),
+                  r_from_wide(r_wmul(x->im[0][1], n.x) + r_wmul(x->im[1][1], n.y) + r_wmul(x->im[2][1], n.z)),
+                  r_from_wide(r_wmul(x->im[0][2], n.x) + r_wmul(x->im[1][2], n.y) + r_wmul(x->im[2][2], n.z)));
+    return v3_unit(w);
+}
+
+/* ---- shapes: set-up ------------------------------------------------------ */
+
+static real_t corner_radius(vec3_t lo, vec3_t hi)
+{
+    vec3_t c = v3(r_max(r_abs(lo.x), r_abs(hi.x)), r_max(r_abs(lo.y), r_abs(hi.y)),
+                  r_max(r_abs(lo.z), r_abs(hi.z)));
+    return v3_length(c) + R_ULPS(16);
+}
+
+const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t hi)
+{
+    s->kind = SHAPE_QUADRIC;
+    for (int i = 0; i < 10; i++)
+        s->q[i] = q[i];
+    s->lo = lo;
+    s->hi = hi;
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        return "quadric clip box is empty (need x0 < x1, y0 < y1, z0 < z1)";
+    s->bound = corner_radius(lo, hi);
+    return 0;
+}
+
+const char *shape_init_torus(shape_t *s, real_t major, real_t minor)
+{
+    s->kind = SHAPE_TORUS;
+    s->q[0] = r_abs(major);
+    s->q[1] = r_abs(minor);
+    if (s->q[1] == 0)
+        return "torus minor radius is zero";
+    s->hi = v3(s->q[0] + s->q[1], s->q[0] + s->q[1], s->q[1]);
+    s->lo = v3_neg(s->hi);
+    s->bound = s->q[0] + s->q[1] + R_ULPS(16);
+    return 0;
+}
+
+const char *shape_init_box(shape_t *s, vec3_t lo, vec3_t hi)
+{
+    s->kind = SHAPE_BOX;
+    s->lo = v3(r_min(lo.x, hi.x), r_min(lo.y, hi.y), r_min(lo.z, hi.z));
+    s->hi = v3(r_max(lo.x, hi.x), r_max(lo.y, hi.y), r_max(lo.z, hi.z));
+    if (!(s->lo.x < s->hi.x && s->lo.y < s->hi.y && s->lo.z < s->hi.z))
+        return "box has no volume";
+    s->bound = corner_radius(s->lo, s->hi);
+    return 0;
+}
+
+void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *max)
+{
+    const real_t pad = R_RATIO(1, 4096);
+    vec3_t lo = s->lo, hi = s->hi;
+    if (s->xform == XFORM_NONE) {
+        *min = v3(lo.x - pad, lo.y - pad, lo.z - pad);
+        *max = v3(hi.x + pad, hi.y + pad, hi.z + pad);
+        return;
+    }
+    const xform_t *x = &sc->xforms[s->xform];
+    for (int i = 0; i < 8; i++) {
+        vec3_t c = v3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+        vec3_t w = xform_point(x, c);
+        if (i == 0) {
+            *min = *max = w;
+        } else {
+            *min = v3(r_min(min->x, w.x), r_min(min->y, w.y), r_min(min->z, w.z));
+            *max = v3(r_max(max->x, w.x), r_max(max->y, w.y), r_max(max->z, w.z));
+        }
+    }
+    *min = v3(min->x - pad, min->y - pad, min->z - pad);
+    *max = v3(max->x + pad, max->y + pad, max->z + pad);
+}
+
+uint32_t solid_max_spans(const scene_t *sc, uint16_t root)
+{
+    if (!(root & CSG_NODE_BIT))
+        return sc->shapes[root].kind == SHAPE_BOX ? 1 : 2;
+    const csg_node_t *n = &sc->csg_nodes[root & ~CSG_NODE_BIT];
+    return solid_max_spans(sc, n->a) + solid_max_spans(sc, n->b);
+}
+
+uint32_t solid_depth(const scene_t *sc, uint16_t root)
+{
+    if (!(root & CSG_NODE_BIT))
+        return 0;
+    const csg_node_t *n = &sc->csg_nodes[root & ~CSG_NODE_BIT];
+    uint32_t a = solid_depth(sc, n->a), b = solid_depth(sc, n->b);
+    return 1 + (a > b ? a : b);
+}
+
+/* ---- spans ------------------------------------------------------------- */
+
+typedef struct {
+    real_t t;
+    uint16_t shape;
+    uint8_t face;
+    uint8_t flip;
+} bound_t;
+
+typedef struct {
+    bound_t in, out;
+} span_t;
+
+typedef struct {
+    uint32_t n;
+    span_t s[RT_CSG_MAX_SPANS];
+} spans_t;
+
+/* The ray in a shape's object space, at its point of closest approach to
+ * the origin: object parameter s = s0 + sigma, world t = s / k. */
+typedef struct {
+    vec3_t p0, u;
+    real_t s0, k, half_chord;
+} oray_t;
+
+static bool object_ray(const scene_t *sc, const shape_t *s, const ray_t *r, oray_t *o)
+{
+    vec3_t org = r->origin;
+    o->u = r->dir;
+    o->k = R_ONE;
+    if (s->xform != XFORM_NONE) {
+        const xform_t *x = &sc->xforms[s->xform];
+        org = mat_vec(x->im, v3(org.x - x->t[0], org.y - x->t[1], org.z - x->t[2]));
+        vec3_t d = mat_vec(x->im, r->dir);
+        o->k = v3_length(d);
+        o->u = v3_unit(d);
+    }
+    o->s0 = -v3_dot(org, o->u);
+    o->p0 = v3_madd(org, o->s0, o->u);
+    real_wide_t h2 = r_wmul(s->bound, s->bound) - v3_wdot(o->p0, o->p0);
+    if (h2 < 0)
+        return false; /* misses the bounding sphere */
+    o->half_chord = r_wsqrt(h2);
+    return true;
+}
+
+static real_t to_world(const oray_t *o, real_t sigma)
+{
+    real_t s = o->s0 + sigma;
+    return o->k == R_ONE ? s : r_div(s, o->k);
+}
+
+static void push(spans_t *out, bound_t in, bound_t out_b)
+{
+    if (out->n < RT_CSG_MAX_SPANS) { /* the reader bounds n; never drops */
+        out->s[out->n].in = in;
+        out->s[out->n].out = out_b;
+        out->n++;
+    }
+}
+
+static bound_t bnd(real_t t, uint16_t shape, uint8_t face)
+{
+    bound_t b = { t, shape, face, 0 };
+    return b;
+}
+
+/* The slab interval of the box [lo, hi] along the object ray, in sigma,
+ * with the faces it enters and leaves by. */
+static bool box_interval(const oray_t *o, vec3_t lo, vec3_t hi, real_t *a, real_t *b, uint8_t *fa, uint8_t *fb)
+{
+    const real_t p[3] = { o->p0.x, o->p0.y, o->p0.z }, u[3] = { o->u.x, o->u.y, o->u.z };
+    const real_t l[3] = { lo.x, lo.y, lo.z }, h[3] = { hi.x, hi.y, hi.z };
+    *a = -R_BIG;
+    *b = R_BIG;
+    *fa = *fb = FACE_CURVED;
+    for (int i = 0; i < 3; i++) {
+        if (r_abs(u[i]) < R_RATIO(1, 1 << 12)) {
+            if (p[i] < l[i] || p[i] > h[i])
+                return false;
+            continue;
+        }
+        real_t inv = r_recip(u[i]);
+        real_t t0 = r_mul(l[i] - p[i], inv), t1 = r_mul(h[i] - p[i], inv);
+        uint8_t f0 = (uint8_t)(FACE_XMIN + 2 * i), f1 = (uint8_t)(FACE_XMAX + 2 * i);
+        if (t0 > t1) {
+            real_t tt = t0;
+            t0 = t1;
+            t1 = tt;
+            uint8_t ff = f0;
+            f0 = f1;
+            f1 = ff;
+        }
+        if (t0 > *a) {
+            *a = t0;
+            *fa = f0;
+        }
+        if (t1 < *b) {
+            *b = t1;
+            *fb = f1;
+        }
+    }
+    return *a <= *b;
+}
+
+static void box_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+{
+    real_t a, b;
+    uint8_t fa, fb;
+    if (box_interval(o, s->lo, s->hi, &a, &b, &fa, &fb))
+        push(out, bnd(to_world(o, a), id, fa), bnd(to_world(o, b), id, fb));
+}
+
+/* q(x) = x^T A x + 2 b^T x + j with A, b from the ten coefficients;
+ * returns A x + b (affine) or A x. */
+static vec3_t quadric_grad_half(const real_t q[10], vec3_t x, bool affine)
+{
+    real_wide_t gx = r_wmul(q[0], x.x) + r_wmul(q[3], x.y) / 2 + r_wmul(q[4], x.z) / 2;
+    real_wide_t gy = r_wmul(q[3], x.x) / 2 + r_wmul(q[1], x.y) + r_wmul(q[5], x.z) / 2;
+    real_wide_t gz = r_wmul(q[4], x.x) / 2 + r_wmul(q[5], x.y) / 2 + r_wmul(q[2], x.z);
+    vec3_t g = v3(r_from_wide(gx), r_from_wide(gy), r_from_wide(gz));
+    if (affine)
+        g = v3_add(g, v3(q[6] / 2, q[7] / 2, q[8] / 2));
+    return g;
+}
+
+/* num / den clamped to +-R_BIG (roots far away are as good as infinite). */
+static real_t safe_div(real_t num, real_t den)
+{
+    if (r_to_wide(r_abs(num)) >= r_wmul(r_abs(den), R_RATIO(1024, 1)))
+        return (num < 0) != (den < 0) ? -R_BIG : R_BIG;
+    return r_div(num, den);
+}
+
+static void quadric_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+{
+    real_t ca, cb;
+    uint8_t fa, fb;
+    if (!box_interval(o, s->lo, s->hi, &ca, &cb, &fa, &fb))
+        return;
+    /* q along the ray: alpha sigma^2 + 2 beta sigma + gamma */
+    vec3_t w = quadric_grad_half(s->q, o->p0, true);
+    real_t alpha = v3_dot(o->u, quadric_grad_half(s->q, o->u, false));
+    real_t beta = v3_dot(o->u, w);
+    real_t gamma = v3_dot(o->p0, w) + r_mul(s->q[6] / 2, o->p0.x) + r_mul(s->q[7] / 2, o->p0.y) +
+                   r_mul(s->q[8] / 2, o->p0.z) + s->q[9];
+    /* the inside of q as at most two intervals of sigma */
+    real_t iv[2][2];
+    int n = 0;
+    if (r_abs(alpha) < R_RATIO(1, 1 << 14)) {
+        if (beta == 0) {
+            if (gamma <= 0)
+                iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
+        } else {
+            real_t root = safe_div(-gamma, 2 * beta);
+            if (beta > 0)
+                iv[n][0] = -R_BIG, iv[n][1] = root, n++;
+            else
+                iv[n][0] = root, iv[n][1] = R_BIG, n++;
+        }
+    } else {
+        real_wide_t disc = r_wmul(beta, beta) - r_wmul(alpha, gamma);
+        if (disc < 0) {
+            if (alpha < 0)
+                iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
+        } else {
+            real_t h = r_wsqrt(disc);
+            real_t qv = beta > 0 ? -(beta + h) : h - beta;
+            real_t r1 = safe_div(qv, alpha), r2 = qv != 0 ? safe_div(gamma, qv) : r1;
+            if (r2 < r1) {
+                real_t tt = r1;
+                r1 = r2;
+                r2 = tt;
+            }
+            if (alpha > 0) {
+                iv[n][0] = r1, iv[n][1] = r2, n++;
+            } else {
+                iv[n][0] = -R_BIG, iv[n][1] = r1, n++;
+                iv[n][0] = r2, iv[n][1] = R_BIG, n++;
+            }
+        }
+    }
+    /* clipped by the box; boundaries inside it are the curved surface */
+    for (int i = 0; i < n; i++) {
+        real_t a = r_max(iv[i][0], ca), b = r_min(iv[i][1], cb);
+        if (a > b)
+            continue;
+        push(out, bnd(to_world(o, a), id, iv[i][0] >= ca ? FACE_CURVED : fa),
+             bnd(to_world(o, b), id, iv[i][1] <= cb ? FACE_CURVED : fb));
+    }
+}
+
+/* Signed distance to the torus (exact: |(rho - R, z)| - r). */
+static real_t torus_sdf(const shape_t *s, vec3_t x)
+{
+    real_t rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
+    real_t qx = rho - s->q[0];
+    return r_wsqrt(r_wmul(qx, qx) + r_wmul(x.z, x.z)) - s->q[1];
+}
+
+static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
+{
+    real_t rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
+    if (rho == 0)
+        return v3(0, 0, x.z < 0 ? -R_ONE : R_ONE);
+    /* from the nearest point of the centre circle to x */
+    real_t f = R_ONE - r_div(s->q[0], rho);
+    return v3_unit(v3(r_mul(x.x, f), r_mul(x.y, f), x.z));
+}
+
+/* Torus roots by sphere tracing the exact distance along the bounding
+ * chord (it never steps over a surface), each root polished by up to three
+ * Newton steps on the distance. At most TORUS_MAX_STEPS distance evaluations per
+ * ray; a boundary is where the distance falls below TORUS_EPS. */
+#define TORUS_MAX_STEPS 128
+#define TORUS_EPS R_RATIO(1, 8192)
+
+static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
+{
+    for (int i = 0; i < 3; i++) {
+        vec3_t x = v3_madd(o->p0, sigma, o->u);
+        real_t slope = v3_dot(torus_normal_obj(s, x), o->u);
+        if (r_abs(slope) < R_RATIO(1, 64))
+            break; /* grazing: Newton would wander */
+        real_t step = r_div(torus_sdf(s, x), slope);
+        if (r_abs(step) > 4 * TORUS_EPS)
+            break;
+        sigma -= step;
+    }
+    return sigma;
+}
+
+static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+{
+    real_t sigma = -o->half_chord, end = o->half_chord, entry = 0;
+    real_t last = sigma - 8 * TORUS_EPS; /* the last boundary crossed */
+    bool inside = false;
+    for (int step = 0; step < TORUS_MAX_STEPS && sigma <= end; step++) {
+        real_t d = torus_sdf(s, v3_madd(o->p0, sigma, o->u));
+        real_t dist = inside ? -d : d;
+        if (dist > TORUS_EPS) {
+            sigma += dist;
+            continue;
+        }
+        if (sigma - last < 4 * TORUS_EPS) { /* still at the surface just crossed */
+            sigma += TORUS_EPS;
+            continue;
+        }
+        real_t at = polish(s, o, sigma);
+        if (!inside) {
+            entry = at;
+        } else if (at - entry > 4 * TORUS_EPS) {
+            push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, at), id, FACE_CURVED));
+        } /* else a tangent touch: no span (at most two spans remain) */
+        inside = !inside;
+        last = r_max(sigma, at);
+        sigma = last + 2 * TORUS_EPS; /* step through the surface */
+    }
+    if (inside) /* ran out of steps inside: close the span where we are */
+        push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));
+}
+
+static void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
+{
+    const shape_t *s = &sc->shapes[id];
+    oray_t o;
+    out->n = 0;
+    if (!object_ray(sc, s, r, &o))
+        return;
+    switch (s->kind) {
+    case SHAPE_BOX: box_spans(s, id, &o, out); break;
+    case SHAPE_TORUS: torus_spans(s, id, &o, out); break;
+    default: quadric_spans(s, id, &o, out); break;
+    }
+}
+
+/* ---- CSG: boolean operations on sorted span lists ----------------------- */
+
+static void csg_union(const spans_t *a, const spans_t *b, spans_t *out)
+{
+    uint32_t i = 0, j = 0;
+    out->n = 0;
+    while (i < a->n || j < b->n) {
+        span_t cur = (j >= b->n || (i < a->n && a->s[i].in.t <= b->s[j].in.t)) ? a->s[i++] : b->s[j++];
+        /* swallow every span that starts before cur ends */
+        for (;;) {
+            const span_t *next = 0;
+            if (i < a->n && a->s[i].in.t <= cur.out.t)
+                next = &a->s[i++];
+            else if (j < b->n && b->s[j].in.t <= cur.out.t)
+                next = &b->s[j++];
+            if (!next)
+                break;
+            if (next->out.t > cur.out.t)
+                cur.out = next->out;
+        }
+        push(out, cur.in, cur.out);
+    }
+}
+
+static void csg_intersection(const spans_t *a, const spans_t *b, spans_t *out)
+{
+    out->n = 0;
+    for (uint32_t i = 0; i < a->n; i++)
+        for (uint32_t j = 0; j < b->n; j++) {
+            bound_t in = a->s[i].in.t >= b->s[j].in.t ? a->s[i].in : b->s[j].in;
+            bound_t ob = a->s[i].out.t <= b->s[j].out.t ? a->s[i].out : b->s[j].out;
+            if (in.t <= ob.t)
+                push(out, in, ob);
+        }
+}
+
+/* a minus b: b's surfaces bound the result from the other side (flip). */
+static void csg_difference(const spans_t *a, const spans_t *b, spans_t *out)
+{
+    out->n = 0;
+    for (uint32_t i = 0; i < a->n; i++) {
+        bound_t in = a->s[i].in, end = a->s[i].out;
+        bool open = true;
+        for (uint32_t j = 0; j < b->n && open; j++) {
+            const span_t *c = &b->s[j];
+            if (c->out.t < in.t || c->in.t > end.t)
+                continue;
+            if (c->in.t > in.t) {
+                bound_t cut = c->in;
+                cut.flip ^= 1;
+                push(out, in, cut);
+            }
+            if (c->out.t < end.t) {
+                in = c->out;
+                in.flip ^= 1;
+            } else {
+                open = false;
+            }
+        }
+        if (open)
+            push(out, in, end);
+    }
+}
+
+/* Scratch for the two children at each level of the tree: static, so CSG
+ * costs no stack (the tracer is single-threaded and never re-enters). */
+static spans_t csg_scratch[RT_CSG_MAX_DEPTH + 1][2];
+
+static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, spans_t *out, uint32_t level)
+{
+    if (!(ref & CSG_NODE_BIT) || level >= RT_CSG_MAX_DEPTH) {
+        if (!(ref & CSG_NODE_BIT))
+            shape_spans(sc, ref, r, out);
+        else
+            out->n = 0; /* deeper than the reader allows: cannot happen */
+        return;
+    }
+    const csg_node_t *n = &sc->csg_nodes[ref & ~CSG_NODE_BIT];
+    spans_t *a = &csg_scratch[level][0], *b = &csg_scratch[level][1];
+    solid_spans(sc, n->a, r, a, level + 1);
+    if (a->n == 0 && n->op != CSG_UNION) {
+        out->n = 0; /* nothing to intersect with or subtract from */
+        return;
+    }
+    solid_spans(sc, n->b, r, b, level + 1);
+    switch (n->op) {
+    case CSG_UNION: csg_union(a, b, out); break;
+    case CSG_INTERSECTION: csg_intersection(a, b, out); break;
+    default: csg_difference(a, b, out); break;
+    }
+}
+
+bool ray_hit_object(const scene_t *sc, const object_t *obj, const ray_t *r, real_t tmin, real_t *t,
+                    uint16_t *shape, uint8_t *face, bool *flip)
+{
+    static spans_t spans;
+    solid_spans(sc, obj->root, r, &spans, 0);
+    for (uint32_t i = 0; i < spans.n; i++) {
+        const bound_t *b = spans.s[i].in.t > tmin ? &spans.s[i].in : &spans.s[i].out;
+        if (b->t <= tmin)
+            continue;
+        if (b->t >= *t)
+            return false;
+        *t = b->t;
+        *shape = b->shape;
+        *face = b->face;
+        *flip = b->flip;
+        return true;
+    }
+    return false;
+}
+
+vec3_t shape_normal(const scene_t *sc, uint16_t id, uint8_t face, vec3_t p)
+{
+    const shape_t *s = &sc->shapes[id];
+    vec3_t x = p, n;
+    const xform_t *xf = s->xform == XFORM_NONE ? 0 : &sc->xforms[s->xform];
+    if (xf)
+        x = mat_vec(xf->im, v3(p.x - xf->t[0], p.y - xf->t[1], p.z - xf->t[2]));
+    switch (face) {
+    case FACE_XMIN: n = v3(-R_ONE, 0, 0); break;
+    case FACE_XMAX: n = v3(R_ONE, 0, 0); break;
+    case FACE_YMIN: n = v3(0, -R_ONE, 0); break;
+    case FACE_YMAX: n = v3(0, R_ONE, 0); break;
+    case FACE_ZMIN: n = v3(0, 0, -R_ONE); break;
+    case FACE_ZMAX: n = v3(0, 0, R_ONE); break;
+    default:
+        n = s->kind == SHAPE_TORUS ? torus_normal_obj(s, x) : v3_unit(quadric_grad_half(s->q, x, true));
+        break;
+    }
+    return xf ? xform_normal(xf, n) : n;
+}
