@@ -15,7 +15,7 @@
 # partially linked with platform/hosted/backend.c into one object that
 # exports only its rt_backend_t, so `rt` carries both builds.
 
-SCENE ?= scenes/spd/balls-2.nff
+SCENE ?= scenes/showpiece.nff
 SIZE  ?= 128x128
 DEPTH ?= 5
 FORMAT ?= rgb888

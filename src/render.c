@@ -83,13 +83,14 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
         rows[0] = opts->scratch;
         rows[1] = rows[0] + w + 1;
     }
-    camera_t cam;
+    static camera_t cam; /* static: one render at a time; keeps the stack small */
     const char *why = opts->spd ? camera_init(&cam, &sc->view, w + 1, h + 1) : camera_init(&cam, &sc->view, w, h);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;
     }
-    tracer_t tr = { sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
+    static tracer_t tr; /* static like cam */
+    tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;

@@ -125,6 +125,12 @@ typedef struct {
     real_t entry;
 } bvh_stack_t;
 
+/* Traversal stacks in static storage, not on the call stack: neither
+ * function re-enters itself, and the tracer runs one ray at a time (one
+ * render at a time per program), so this keeps the stack budget. */
+static bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH];
+static uint32_t any_stack[RT_BVH_MAX_DEPTH];
+
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
@@ -137,7 +143,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
         if (!slab_test(&nodes[0], &s, tmin, h->t, &entry))
             return false;
     }
-    bvh_stack_t stack[RT_BVH_MAX_DEPTH];
+    bvh_stack_t *stack = nearest_stack;
     unsigned sp = 0;
     uint32_t node = 0;
     bool found = false;
@@ -193,7 +199,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
-    slab_ray_t s;
+    static slab_ray_t s; /* static like the stacks above */
     real_t entry;
     if (sc->n_bvh_nodes == 0)
         return false;
@@ -202,7 +208,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         if (!slab_test(&nodes[0], &s, tmin, tmax, &entry))
             return false;
     }
-    uint32_t stack[RT_BVH_MAX_DEPTH];
+    uint32_t *stack = any_stack;
     unsigned sp = 0;
     uint32_t node = 0;
     for (;;) {

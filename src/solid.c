@@ -216,7 +216,7 @@ typedef struct {
     real_t s0, k, half_chord;
 } oray_t;
 
-static bool object_ray(const scene_t *sc, const shape_t *s, const ray_t *r, oray_t *o)
+RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ray_t *r, oray_t *o)
 {
     vec3_t org = r->origin;
     o->u = r->dir;
@@ -260,21 +260,22 @@ static bound_t bnd(real_t t, uint16_t shape, uint8_t face)
 
 /* The slab interval of the box [lo, hi] along the object ray, in sigma,
  * with the faces it enters and leaves by. */
-static bool box_interval(const oray_t *o, vec3_t lo, vec3_t hi, real_t *a, real_t *b, uint8_t *fa, uint8_t *fb)
+static bool box_interval(const oray_t *o, const vec3_t *lo, const vec3_t *hi, real_t *a, real_t *b,
+                         uint8_t *fa, uint8_t *fb)
 {
-    const real_t p[3] = { o->p0.x, o->p0.y, o->p0.z }, u[3] = { o->u.x, o->u.y, o->u.z };
-    const real_t l[3] = { lo.x, lo.y, lo.z }, h[3] = { hi.x, hi.y, hi.z };
     *a = -R_BIG;
     *b = R_BIG;
     *fa = *fb = FACE_CURVED;
-    for (int i = 0; i < 3; i++) {
-        if (r_abs(u[i]) < R_RATIO(1, 1 << 12)) {
-            if (p[i] < l[i] || p[i] > h[i])
+    for (unsigned i = 0; i < 3; i++) {
+        real_t p = v3_axis(&o->p0, i), u = v3_axis(&o->u, i);
+        real_t l = v3_axis(lo, i), h = v3_axis(hi, i);
+        if (r_abs(u) < R_RATIO(1, 1 << 12)) {
+            if (p < l || p > h)
                 return false;
             continue;
         }
-        real_t inv = r_recip(u[i]);
-        real_t t0 = r_mul(l[i] - p[i], inv), t1 = r_mul(h[i] - p[i], inv);
+        real_t inv = r_recip(u);
+        real_t t0 = r_mul(l - p, inv), t1 = r_mul(h - p, inv);
         uint8_t f0 = (uint8_t)(FACE_XMIN + 2 * i), f1 = (uint8_t)(FACE_XMAX + 2 * i);
         if (t0 > t1) {
             real_t tt = t0;
@@ -296,11 +297,11 @@ static bool box_interval(const oray_t *o, vec3_t lo, vec3_t hi, real_t *a, real_
     return *a <= *b;
 }
 
-static void box_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+RT_NOINLINE static void box_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
     real_t a, b;
     uint8_t fa, fb;
-    if (box_interval(o, s->lo, s->hi, &a, &b, &fa, &fb))
+    if (box_interval(o, &s->lo, &s->hi, &a, &b, &fa, &fb))
         push(out, bnd(to_world(o, a), id, fa), bnd(to_world(o, b), id, fb));
 }
 
@@ -325,11 +326,11 @@ static real_t safe_div(real_t num, real_t den)
     return r_div(num, den);
 }
 
-static void quadric_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
     real_t ca, cb;
     uint8_t fa, fb;
-    if (!box_interval(o, s->lo, s->hi, &ca, &cb, &fa, &fb))
+    if (!box_interval(o, &s->lo, &s->hi, &ca, &cb, &fa, &fb))
         return;
     /* q along the ray: alpha sigma^2 + 2 beta sigma + gamma */
     vec3_t w = quadric_grad_half(s->q, o->p0, true);
@@ -423,7 +424,7 @@ static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
     return sigma;
 }
 
-static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
     real_t sigma = -o->half_chord, end = o->half_chord, entry = 0;
     real_t last = sigma - 8 * TORUS_EPS; /* the last boundary crossed */
@@ -453,7 +454,8 @@ static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t 
         push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));
 }
 
-static void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
+/* Not inlined: its locals stay out of the recursive solid_spans frame. */
+RT_NOINLINE static void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
 {
     const shape_t *s = &sc->shapes[id];
     oray_t o;

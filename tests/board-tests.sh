@@ -3,7 +3,8 @@
 #  - the board's image is byte-identical to the hosted fixed build's, for
 #    every SPD size-1 scene and the size-2 scenes, at 64x64, depth 5;
 #  - the fixed firmware links no heap and no soft-float helper;
-#  - footprint budgets of the default scene (balls-2, 128x128, depth 5);
+#  - the demo scenes of scenes/ (solids, transforms, CSG) likewise;
+#  - footprint budgets of the default scene (showpiece, 128x128, depth 5);
 #  - a scene over a capacity fails to build with a clear message.
 RT=${1:-build/host/rt}
 OUT=build/test-board
@@ -14,9 +15,11 @@ bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 fwdir() { echo "build/board/$1-$2-d5-rgb888"; }
 
 echo "board tests: QEMU mps2-an385 against the hosted fixed build"
-for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2; do
+scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes/$1.nff; }
+for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2 \
+         quadrics torus boxes transforms csg showpiece; do
     d=$(fwdir $s 64x64)
-    if ! make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
+    if ! make -s firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
         bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
         continue
     fi
@@ -24,7 +27,7 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
         bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
         continue
     fi
-    "$RT" scenes/spd/$s.nff -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --quiet 2>/dev/null
+    "$RT" $(scene_file $s) -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --quiet 2>/dev/null
     ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
     if cmp=$("$RT" compare "$OUT/$s-board.png" "$OUT/$s-host.png" --max-error 0); then
         ok "$s: board == host fixed ($cmp), $ipp instructions/pixel"
@@ -60,11 +63,11 @@ fi
 
 # Linked-symbol checks on the default scene's firmware (and, as a control
 # that the check can fail, the soft-float build must show its helpers).
-make -s firmware SCENE=scenes/spd/balls-2.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
-d=$(fwdir balls-2 128x128)
+make -s firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
+d=$(fwdir showpiece 128x128)
 bad_syms=$(arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|__aeabi_f.*|__aeabi_d.*|__aeabi_[fd]2.*)$')
 [ -z "$bad_syms" ] && ok "fixed firmware links no heap or soft-float symbol" || bad "fixed firmware links: $bad_syms"
-make -s "$d/double.elf" SCENE=scenes/spd/balls-2.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
+make -s "$d/double.elf" SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
 arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
     ok "control: the soft-float build does link __aeabi_dmul" ||
     bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"

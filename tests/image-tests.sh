@@ -29,6 +29,35 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
     fi
 done
 
+# The demo scenes of scenes/ (solids beyond NFF), same tolerance.
+for f in scenes/*.nff; do
+    s=$(basename "$f" .nff)
+    if "$RT" "$f" -o "$OUT/$s-fixed.png" --size $SIZE --fixed --quiet 2>"$OUT/$s.err" &&
+       "$RT" "$f" -o "$OUT/$s-double.png" --size $SIZE --double --quiet 2>>"$OUT/$s.err"; then
+        check "$s" "$RT" compare "$OUT/$s-fixed.png" "$OUT/$s-double.png" --psnr-min $PSNR_MIN --max-over8 $OVER8_MAX
+    else
+        fail=$((fail + 1)); printf '  FAIL  %-28s render failed: %s\n' "$s" "$(cat "$OUT/$s.err")"
+    fi
+done
+
+# Transform identities: a shape placed by a transform renders like the
+# same shape written in world coordinates (the fixed build, both ways;
+# tolerance: PSNR >= 50 dB, at most 0.1% of pixels off by more than 8/255,
+# for the rounding of the object-space mapping).
+ident() { # name, world body, transformed body
+    head='v\nfrom 1 -7 3\nat 0 0 0.3\nup 0 0 1\nangle 40\nhither 1\nresolution 96 96\nl -4 -6 8\nl 5 -3 6\nf 0.8 0.8 0.8 0.8 0.2 10 0 1\np 4\n-6 -6 -1\n6 -6 -1\n6 6 -1\n-6 6 -1\nf 0.9 0.4 0.3 0.7 0.3 30 0 1\n'
+    printf "$head$2" >"$OUT/$1-world.nff"
+    printf "$head$3" >"$OUT/$1-xf.nff"
+    if "$RT" "$OUT/$1-world.nff" -o "$OUT/$1-world.png" --quiet && "$RT" "$OUT/$1-xf.nff" -o "$OUT/$1-xf.png" --quiet; then
+        check "identity: $1" "$RT" compare "$OUT/$1-xf.png" "$OUT/$1-world.png" --psnr-min 50 --max-over8 0.1
+    else
+        fail=$((fail + 1)); echo "  FAIL  identity: $1: render failed"
+    fi
+}
+ident "translated box" 'box 0.2 -0.3 -0.5 1.8 1.1 0.9\n' 'transform\ntranslate 1 0.4 0.2\nbox -0.8 -0.7 -0.7 0.8 0.7 0.7\nend\n'
+ident "sphere via scale" 's 0.5 0.2 0.3 1.1\n' 'transform\ntranslate 0.5 0.2 0.3\nscale 1.1 1.1 1.1\ns 0 0 0 1\nend\n'
+ident "rotated box" 'box -1 -0.6 -0.6 1 0.6 0.6\n' 'transform\nrotate 0 0 1 90\nbox -0.6 -1 -0.6 0.6 1 0.6\nend\n'
+
 # RGB565 framebuffer: the same render through the 16-bit format may only
 # differ by the 5/6-bit quantisation (at most 255/31/2 -> 5 levels).
 if "$RT" scenes/spd/balls-1.nff -o "$OUT/balls-1-565.png" --size 64x48 --format rgb565 --quiet &&

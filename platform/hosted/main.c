@@ -180,12 +180,14 @@ static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int
             "sphere tests     %llu\n"
             "cone tests       %llu\n"
             "polygon tests    %llu\n"
+            "object tests     %llu\n"
             "bvh nodes visited %llu\n"
             "render time      %.6f s\n",
             be->name, w, h, (unsigned long long)st->eye_rays, (unsigned long long)st->eye_hits,
             (unsigned long long)st->reflect_rays, (unsigned long long)st->refract_rays,
             (unsigned long long)st->shadow_rays, (unsigned long long)st->tests_sphere,
             (unsigned long long)st->tests_cone, (unsigned long long)st->tests_polygon,
+            (unsigned long long)st->tests_object,
             (unsigned long long)st->bvh_nodes, secs);
 }
 

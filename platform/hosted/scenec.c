@@ -28,6 +28,13 @@ static scene_store_t store;
 
 static void emit_vec(FILE *f, vec3_t v) { fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }", v.x, v.y, v.z); }
 
+static void emit_mat(FILE *f, const real_t m[3][3])
+{
+    fprintf(f, "{ ");
+    for (int i = 0; i < 3; i++)
+        fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }%s", m[i][0], m[i][1], m[i][2], i < 2 ? ", " : " }");
+}
+
 static void emit_wide(FILE *f, real_wide_t w) { fprintf(f, "INT64_C(%" PRId64 ")", w); }
 
 static void emit_tables(FILE *f, const scene_t *sc)
@@ -120,6 +127,52 @@ static void emit_tables(FILE *f, const scene_t *sc)
         fprintf(f, "};\n\n");
     }
 
+    if (sc->n_xforms) {
+        fprintf(f, "static const xform_t xforms[%" PRIu32 "] TABLE = {\n", sc->n_xforms);
+        for (uint32_t i = 0; i < sc->n_xforms; i++) {
+            const xform_t *x = &sc->xforms[i];
+            fprintf(f, "    { .m = ");
+            emit_mat(f, x->m);
+            fprintf(f, ",\n      .t = { %" PRId32 ", %" PRId32 ", %" PRId32 " },\n      .im = ", x->t[0], x->t[1], x->t[2]);
+            emit_mat(f, x->im);
+            fprintf(f, " },\n");
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_shapes) {
+        fprintf(f, "static const shape_t shapes[%" PRIu32 "] TABLE = {\n", sc->n_shapes);
+        for (uint32_t i = 0; i < sc->n_shapes; i++) {
+            const shape_t *p = &sc->shapes[i];
+            fprintf(f, "    { .q = {");
+            for (int k = 0; k < 10; k++)
+                fprintf(f, " %" PRId32 ",", p->q[k]);
+            fprintf(f, " },\n      .lo = ");
+            emit_vec(f, p->lo);
+            fprintf(f, ", .hi = ");
+            emit_vec(f, p->hi);
+            fprintf(f, ", .bound = %" PRId32 ", .xform = %u, .material = %u, .kind = %u },\n", p->bound,
+                    (unsigned)p->xform, (unsigned)p->material, (unsigned)p->kind);
+        }
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_csg_nodes) {
+        fprintf(f, "static const csg_node_t csg_nodes[%" PRIu32 "] TABLE = {\n", sc->n_csg_nodes);
+        for (uint32_t i = 0; i < sc->n_csg_nodes; i++)
+            fprintf(f, "    { .a = %u, .b = %u, .op = %u },\n", (unsigned)sc->csg_nodes[i].a,
+                    (unsigned)sc->csg_nodes[i].b, (unsigned)sc->csg_nodes[i].op);
+        fprintf(f, "};\n\n");
+    }
+    if (sc->n_objects) {
+        fprintf(f, "static const object_t objects[%" PRIu32 "] TABLE = {\n", sc->n_objects);
+        for (uint32_t i = 0; i < sc->n_objects; i++) {
+            fprintf(f, "    { .box_min = ");
+            emit_vec(f, sc->objects[i].box_min);
+            fprintf(f, ", .box_max = ");
+            emit_vec(f, sc->objects[i].box_max);
+            fprintf(f, ", .root = %u },\n", (unsigned)sc->objects[i].root);
+        }
+        fprintf(f, "};\n\n");
+    }
     if (sc->n_bvh_nodes) {
         fprintf(f, "static const bvh_node_t bvh_nodes[%" PRIu32 "] TABLE = {\n", sc->n_bvh_nodes);
         for (uint32_t i = 0; i < sc->n_bvh_nodes; i++) {
@@ -131,7 +184,7 @@ static void emit_tables(FILE *f, const scene_t *sc)
             fprintf(f, ", %" PRIu32 ", %u, %u },\n", n->index, (unsigned)n->count, (unsigned)n->axis);
         }
         fprintf(f, "};\n\n");
-        uint32_t n_prims = sc->n_spheres + sc->n_cones + sc->n_polygons;
+        uint32_t n_prims = sc->n_spheres + sc->n_cones + sc->n_polygons + sc->n_objects;
         fprintf(f, "static const prim_ref_t bvh_prims[%" PRIu32 "] TABLE = {", n_prims);
         for (uint32_t i = 0; i < n_prims; i++)
             fprintf(f, "%s0x%08" PRIx32 "u,", i % 8 ? " " : "\n    ", sc->bvh_prims[i]);
@@ -156,6 +209,11 @@ static void emit_tables(FILE *f, const scene_t *sc)
             sc->n_vertices ? "vertices" : "0", sc->n_normals ? "normals" : "0");
     fprintf(f, "    .bvh_nodes = %s, .bvh_prims = %s, .n_bvh_nodes = %" PRIu32 ",\n",
             sc->n_bvh_nodes ? "bvh_nodes" : "0", sc->n_bvh_nodes ? "bvh_prims" : "0", sc->n_bvh_nodes);
+    fprintf(f, "    .xforms = %s, .shapes = %s, .csg_nodes = %s, .objects = %s,\n", sc->n_xforms ? "xforms" : "0",
+            sc->n_shapes ? "shapes" : "0", sc->n_csg_nodes ? "csg_nodes" : "0", sc->n_objects ? "objects" : "0");
+    fprintf(f, "    .n_xforms = %" PRIu32 ", .n_shapes = %" PRIu32 ", .n_csg_nodes = %" PRIu32 ", .n_objects = %" PRIu32 ",\n",
+            sc->n_xforms, sc->n_shapes, sc->n_csg_nodes, sc->n_objects);
+    fprintf(f, "    .scale_log2 = %" PRId32 ",\n", sc->scale_log2);
     fprintf(f, "    .n_materials = %" PRIu32 ", .n_lights = %" PRIu32 ", .n_spheres = %" PRIu32
                ", .n_cones = %" PRIu32 ", .n_polygons = %" PRIu32 ",\n",
             sc->n_materials, sc->n_lights, sc->n_spheres, sc->n_cones, sc->n_polygons);
@@ -204,13 +262,14 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
     fprintf(f, "#define SCENE_USES_SPHERES %d\n", sc->n_spheres > 0);
     fprintf(f, "#define SCENE_USES_CONES %d\n", sc->n_cones > 0);
     fprintf(f, "#define SCENE_USES_POLYGONS %d\n", sc->n_polygons > 0);
+    fprintf(f, "#define SCENE_USES_OBJECTS %d\n", sc->n_objects > 0);
     fprintf(f, "#define SCENE_USES_PATCHES %d\n", patches);
     fprintf(f, "#define SCENE_USES_SHADOWS %d\n", sc->n_lights > 0);
     fprintf(f, "#define SCENE_USES_SPECULAR %d\n", specular);
     fprintf(f, "#define SCENE_USES_REFLECTION %d\n", reflection);
     fprintf(f, "#define SCENE_USES_REFRACTION %d\n\n", refraction);
     fprintf(f, "#if SCENE_PRUNE\n");
-    static const char *const names[] = { "SPHERES", "CONES", "POLYGONS", "PATCHES", "SHADOWS", "SPECULAR", "REFLECTION", "REFRACTION" };
+    static const char *const names[] = { "SPHERES", "CONES", "POLYGONS", "OBJECTS", "PATCHES", "SHADOWS", "SPECULAR", "REFLECTION", "REFRACTION" };
     for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
         fprintf(f, "#define RT_USE_%s SCENE_USES_%s\n", names[i], names[i]);
     fprintf(f, "#endif\n\n#endif\n");

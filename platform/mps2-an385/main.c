@@ -83,6 +83,7 @@ int main(void)
     report("sphere_tests", st.tests_sphere);
     report("cone_tests", st.tests_cone);
     report("polygon_tests", st.tests_polygon);
+    report("object_tests", st.tests_object);
     report("bvh_nodes_visited", st.bvh_nodes);
     report("stack_high_water", stack_high_water());
     report("stack_size", stack_size());
