@@ -121,6 +121,8 @@ bench: deps
 	python3 bench/run_bench.py
 	@echo
 	@sh bench/bvh-bench.sh
+	@echo
+	@sh bench/prims-bench.sh
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

@@ -80,6 +80,7 @@ $(eval $(call firmware_objs,double,-DRT_BACKEND_DOUBLE=1))
 $(eval $(call firmware_objs,float,-DRT_BACKEND_FLOAT=1))
 
 FIXED_OBJS = $(patsubst %,$(FW_DIR)/fixed/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_flash scene_data)
+PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FIXED_OBJS)) $(FW_DIR)/fixed/bench_prims.o
 DOUBLE_OBJS = $(patsubst %,$(FW_DIR)/double/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_text scene_text_data)
 FLOAT_OBJS = $(patsubst %,$(FW_DIR)/float/%.o,$(CORE_NAMES) $(PORT_NAMES) scene_text scene_text_data)
 
@@ -97,6 +98,10 @@ $(FW_DIR)/double.elf: $(DOUBLE_OBJS) linker/mps2-an385.ld
 $(FW_DIR)/float.elf: $(FLOAT_OBJS) linker/mps2-an385.ld
 	$(ARM_CC) $(BOARD_LDFLAGS) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/float.map \
 	    -o $@ $(FLOAT_OBJS) -lm -lc -lgcc
+
+# The intersection-cost probe (bench/prims-bench.sh): no frame, just tests.
+$(FW_DIR)/prims.elf: $(PRIMS_OBJS) linker/mps2-an385.ld
+	$(ARM_CC) $(BOARD_LDFLAGS) -o $@ $(PRIMS_OBJS) -lgcc
 
 firmware: $(FW_DIR)/fixed.elf
 

@@ -1,0 +1,70 @@
+/*
+ * bench_prims.c - firmware that measures the cost of intersection tests:
+ * 32x32 eye rays of the built-in scene (one primitive) go to
+ * scene_nearest, and the instructions per ray, minus those of making the
+ * ray, are reported per test. Built as prims.elf by board.mk.
+ */
+#include "board.h"
+#include "board_scene.h"
+#include "camera.h"
+#include "fb_uart.h"
+#include "scene_hit.h"
+#include "trace.h"
+
+#define GRID 32
+
+static void report(const char *key, uint64_t value)
+{
+    char line[64];
+    unsigned n = 0;
+    while (*key && n < 40)
+        line[n++] = *key++;
+    line[n++] = ' ';
+    char digits[20];
+    unsigned k = 0;
+    do {
+        digits[k++] = (char)('0' + value % 10);
+        value /= 10;
+    } while (value != 0);
+    while (k)
+        line[n++] = digits[--k];
+    line[n] = '\0';
+    uart_report(line);
+}
+
+int main(void)
+{
+    static rt_error_t err;
+    static rt_stats_t st;
+    static camera_t cam;
+    uart_init();
+    icount_start();
+    const scene_t *sc = board_scene(&err);
+    if (!sc || camera_init(&cam, &sc->view, GRID, GRID)) {
+        uart_report("scene or camera failed");
+        return 2;
+    }
+    volatile real_t sink = 0;
+    uint64_t t0 = icount_read();
+    for (int j = 0; j < GRID; j++)
+        for (int i = 0; i < GRID; i++)
+            sink += camera_ray(&cam, i, j).dir.x;
+    uint64_t rays_only = icount_read() - t0;
+    uint32_t hits = 0;
+    t0 = icount_read();
+    for (int j = 0; j < GRID; j++)
+        for (int i = 0; i < GRID; i++) {
+            ray_t r = camera_ray(&cam, i, j);
+            hit_t h;
+            h.t = RT_T_FAR;
+            hits += scene_nearest(sc, &r, RT_T_MIN, &h, &st);
+        }
+    uint64_t total = icount_read() - t0 - rays_only;
+    uint64_t tests = st.tests_sphere + st.tests_cone + st.tests_polygon + st.tests_object;
+    report("rays", (uint64_t)GRID * GRID);
+    report("hits", hits);
+    report("tests", tests);
+    report("instructions_per_test", tests ? (total + tests / 2) / tests : 0);
+    (void)sink;
+    return 0;
+}
