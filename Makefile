@@ -39,7 +39,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress
+.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress fuzz
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) backend flags
@@ -129,11 +129,26 @@ bench-quick: deps
 	python3 bench/run_bench.py --quick
 
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz
+        build/stress/rt build/stress/test_rayfuzz build/fuzz/fuzz_nff
 
 test: deps
 	$(MAKE) $(TESTS)
 	@tests/run-all.sh build/asan
+
+# Fuzzing (clang's libFuzzer) over the reader and a tiny render, under
+# ASan and UBSan; the seed corpus is tests/fuzz-corpus, new inputs go to
+# build/fuzz/corpus. make test runs FUZZ_SMOKE seconds of it.
+FUZZ_SECONDS ?= 300
+FUZZ_SMOKE ?= 60
+FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
+build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+
+fuzz: deps build/fuzz/fuzz_nff
+	@mkdir -p build/fuzz/corpus
+	build/fuzz/fuzz_nff build/fuzz/corpus tests/fuzz-corpus -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
+	    -max_len=4096 -print_final_stats=1
 
 # Numerical stress suite (tests/stress.py); make test runs its quick subset.
 stress: deps

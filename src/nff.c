@@ -115,21 +115,21 @@ bool rd_tok_is(const reader_t *r, const char *word)
 /* Parses the current token as [+-]digits[.digits][(e|E)[+-]digits]. */
 static bool parse_decimal(const reader_t *r, decimal_t *d)
 {
-    const char *s = r->tok, *e = r->tok + r->tok_len;
     int digits = 0, sig = 0;
     int32_t exp10 = 0;
     d->neg = false;
     d->mant = 0;
-    if (s == 0)
+    if (r->tok == 0) /* end of input */
         return false;
+    const char *s = r->tok, *e = r->tok + r->tok_len;
     if (s < e && (*s == '+' || *s == '-'))
         d->neg = *s++ == '-';
     for (; s < e && *s >= '0' && *s <= '9'; s++, digits++) {
         if (sig < 19) {
             d->mant = d->mant * 10 + (uint64_t)(*s - '0');
             sig += d->mant != 0;
-        } else {
-            exp10++; /* dropped integer digit */
+        } else if (exp10 < 100000) {
+            exp10++; /* dropped integer digit (bounded: any more is huge) */
         }
     }
     if (s < e && *s == '.') {
@@ -200,7 +200,8 @@ static int32_t decimal_exp2_bound(uint64_t mant, int32_t exp10)
     while (bits < 64 && (mant >> bits) != 0)
         bits++;
     /* log2(10) = 3.3219...: round up for 10^e, down for 10^-e */
-    return exp10 >= 0 ? bits + (exp10 * 3322 + 999) / 1000 : bits - (-exp10 * 3321) / 1000;
+    int64_t e = exp10; /* |exp10| <= 200000: the products fit */
+    return (int32_t)(e >= 0 ? bits + (e * 3322 + 999) / 1000 : bits - (-e * 3321) / 1000);
 }
 
 /* A position (or a length): scaled by 2^scale_log2 with the rest of the
@@ -361,7 +362,7 @@ static bool read_material(reader_t *r)
         !rd_decimal(r, "f", &d))
         return false;
     if (!shine_from_decimal(d.neg, d.mant, d.exp10, &m.shine))
-        return rd_fail(r, r->tok_line, "f: Phong exponent must be from 0 to 1000000");
+        return rd_fail(r, r->tok_line, "f: Phong exponent must be from 0 to 524287");
     if (!rd_real(r, "f", &m.t) || !rd_real(r, "f", &m.ior))
         return false;
     if (m.t > 0 && m.ior <= 0)

@@ -106,7 +106,7 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
             /* pixel = mean of its four corners; rows[0] holds the top ones */
             corner_row(&tr, &cam, y + 1, w, rows[1]);
             for (uint16_t x = 0; x < w; x++) {
-                colour_t sum = v3_add(v3_add(rows[0][x], rows[0][x + 1]), v3_add(rows[1][x], rows[1][x + 1]));
+                colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
                 put_pixel(line + x * bpp, sink->format, v3_scale(sum, R_RATIO(1, 4)));
             }
             colour_t *t = rows[0];

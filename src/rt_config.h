@@ -85,7 +85,7 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_MAX_SHAPES 64
 #endif
 #ifndef RT_MAX_XFORMS
-#define RT_MAX_XFORMS 64
+#define RT_MAX_XFORMS 48
 #endif
 #ifndef RT_MAX_CSG_NODES
 #define RT_MAX_CSG_NODES 32

@@ -82,10 +82,10 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
             vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
             real_t rv = -v3_dot(refl, ray->dir);
             real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
-            lit = v3_add(lit, v3(spec, spec, spec));
+            lit = c3_add(lit, v3(spec, spec, spec));
         }
 #endif
-        c = v3_add(c, v3_scale(v3_mul(lit, l->colour), I));
+        c = c3_add(c, v3_scale(v3_mul(lit, l->colour), I));
     }
 #endif
     return c;
@@ -124,7 +124,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
         tr->stats->reflect_rays++;
         colour_t rc = trace_ray(tr, &refl, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
-            c = v3_add(c, v3_scale(rc, m->ks));
+            c = c3_add(c, v3_scale(rc, m->ks));
     }
 #endif
 #if RT_USE_REFRACTION
@@ -138,7 +138,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
             refr.origin = v3_madd(s.point, -RT_SURFACE_OFFSET, s.n_out);
             refr.dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s.n));
             tr->stats->refract_rays++;
-            c = v3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1, r_mul(weight, m->t)), m->t));
+            c = c3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1, r_mul(weight, m->t)), m->t));
         }
     }
 #endif

@@ -16,6 +16,12 @@ static inline vec3_t v3(real_t x, real_t y, real_t z)
     return v;
 }
 static inline vec3_t v3_add(vec3_t a, vec3_t b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+/* Colours are not range-managed like positions (a scene may say Kd = 900),
+ * so their sums saturate instead of wrapping. */
+static inline colour_t c3_add(colour_t a, colour_t b)
+{
+    return v3(r_add_sat(a.x, b.x), r_add_sat(a.y, b.y), r_add_sat(a.z, b.z));
+}
 static inline vec3_t v3_sub(vec3_t a, vec3_t b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
 static inline vec3_t v3_neg(vec3_t a) { return v3(-a.x, -a.y, -a.z); }
 static inline vec3_t v3_scale(vec3_t a, real_t s)
