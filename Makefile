@@ -39,7 +39,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress fuzz
+.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress fuzz fuzz-coverage
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) backend flags
@@ -149,6 +149,9 @@ fuzz: deps build/fuzz/fuzz_nff
 	@mkdir -p build/fuzz/corpus
 	build/fuzz/fuzz_nff build/fuzz/corpus tests/fuzz-corpus -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
 	    -max_len=4096 -print_final_stats=1
+
+fuzz-coverage: deps
+	sh tests/fuzz-coverage.sh
 
 # Numerical stress suite (tests/stress.py); make test runs its quick subset.
 stress: deps

@@ -77,19 +77,26 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
     real_t b = r_from_wide(v3_wdot(op, dp) - r_wmul(rr, kdv));
     real_t roots[2];
     int n = 0;
-    if (r_abs(a) >= R_RATIO(1, 64)) {
+    real_t tv = 0;
+    /* the vertex route when the parabola is curved enough and its vertex
+     * lies within reach (a far vertex means a far or no hit) */
+    bool vertex = r_abs(a) >= R_RATIO(1, 64);
+    if (vertex) {
+        tv = r_div(-b, a);
+        vertex = r_abs(tv) <= R_RATIO(64, 1);
+    }
+    if (vertex) {
         /* Roots tv -+ sqrt(-f(tv) / a) around the parabola's vertex tv,
          * with f evaluated there from the geometry: its rounding error
          * scales with the distance to the surface, not to the origin. */
-        real_t tv = r_div(-b, a);
         vec3_t q = v3_madd(op, tv, dp);
         real_t rad = rr + r_mul(kdv, tv);
         real_wide_t h2 = r_wdiv_real(r_wmul(rad, rad) - v3_wdot(q, q), a);
         if (h2 < 0)
             return false;
         real_t h = r_wsqrt(h2);
-        roots[0] = tv - h;
-        roots[1] = tv + h;
+        roots[0] = r_add_sat(tv, -h);
+        roots[1] = r_add_sat(tv, h);
         n = 2;
     } else {
         /* Nearly parallel to a surface line: the cancellation-free pair
@@ -99,7 +106,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         if (disc < 0)
             return false;
         real_t h = r_wsqrt(disc);
-        real_t q = b > 0 ? -(b + h) : h - b;
+        real_t q = b > 0 ? -r_add_sat(b, h) : r_add_sat(h, -b);
         if (quotient_below(q, a, *t, &roots[n]))
             n++;
         if (quotient_below(cc, q, *t, &roots[n]))

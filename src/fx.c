@@ -255,7 +255,7 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s)
         return 0;
     int32_t yi = (int32_t)y;
     /* y = -n + f with n >= 1 integer, f in [0, 1). */
-    int32_t n = -((yi >> 24));          /* floor: arithmetic shift */
+    int32_t n = (int32_t)(((int64_t)(1 << 24) - 1 - yi) >> 24); /* -floor(y), y <= 0 */
     int32_t f = yi + n * (1 << 24);
     uint64_t p = exp2_frac_q30(f);      /* Q.30, in [1, 2) */
     unsigned shift = (unsigned)(30 - FX_FRAC_BITS + n);
@@ -309,9 +309,9 @@ void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
     int quadrant = (int)(a / ((int64_t)90 * FX_ONE));
     int64_t r = a - quadrant * (int64_t)90 * FX_ONE;
     int64_t rad = (r * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
-    int64_t s = sin_q30(rad), c = cos_q30(rad), t;
+    int64_t s = sin_q30(rad), c = cos_q30(rad);
     for (int q = 0; q < quadrant; q++) { /* rotate by 90 degrees */
-        t = s;
+        int64_t t = s;
         s = c;
         c = -t;
     }

@@ -327,7 +327,7 @@ static bool read_light(reader_t *r)
     scene_t *sc = &r->st->scene;
     if (!r->measuring && !CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
         return false;
-    light_t scratch, *l = r->measuring ? &scratch : &r->st->lights[sc->n_lights];
+    light_t scratch = { 0 }, *l = r->measuring ? &scratch : &r->st->lights[sc->n_lights];
     if (!rd_pos3(r, "l", &l->pos))
         return false;
     l->colour = v3(R_ONE, R_ONE, R_ONE);

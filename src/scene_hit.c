@@ -240,7 +240,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     bool found = false;
-    uint32_t counts[4] = { sc->n_spheres, sc->n_cones, sc->n_polygons, sc->n_objects };
+    const uint32_t counts[4] = { sc->n_spheres, sc->n_cones, sc->n_polygons, sc->n_objects };
     for (uint32_t kind = 0; kind < 4; kind++) {
         for (uint32_t i = 0; i < counts[kind]; i++) {
             if (hit_prim(sc, PRIM_REF(kind, i), r, tmin, &h->t, st, h)) {

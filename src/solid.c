@@ -321,7 +321,7 @@ static vec3_t quadric_grad_half(const real_t q[10], vec3_t x, bool affine)
 /* num / den clamped to +-R_BIG (roots far away are as good as infinite). */
 static real_t safe_div(real_t num, real_t den)
 {
-    if (r_to_wide(r_abs(num)) >= r_wmul(r_abs(den), R_RATIO(1024, 1)))
+    if (r_to_wide(r_abs(num)) >= r_wmul(r_abs(den), R_RATIO(64, 1)))
         return (num < 0) != (den < 0) ? -R_BIG : R_BIG;
     return r_div(num, den);
 }

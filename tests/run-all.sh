@@ -25,6 +25,8 @@ run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
 run python3 tests/stress.py --quick
+run tests/lint.sh
+run tests/fuzz-smoke.sh
 echo
 echo "$total_pass passed, $total_fail failed"
 [ $total_fail -eq 0 ]
