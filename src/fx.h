@@ -87,25 +87,6 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
 
-/* (a - b) * c, the difference saturated to 32 bits and the product
- * truncated (floor), so one 32x32->64 multiply: for slab tests, whose
- * intervals are widened afterwards by more than this error. */
-static inline fx_t fx_mul_diff(fx_t a, fx_t b, fx_t c)
-{
-    int32_t d;
-#if defined(__GNUC__)
-    if (__builtin_sub_overflow(a, b, &d))
-        d = a > b ? FX_MAX : FX_MIN;
-    /* an empty barrier: without it GCC 12 forgets d is 32-bit after the
-     * select and multiplies 64x64 (three instructions for one SMULL) */
-    __asm__("" : "+r"(d));
-#else
-    int64_t w = (int64_t)a - b;
-    d = w > FX_MAX ? FX_MAX : w < FX_MIN ? FX_MIN : (int32_t)w;
-#endif
-    return fx_sat64(((int64_t)d * c) >> FX_FRAC_BITS); /* one SMULL */
-}
-
 /* (a - b) * c exactly, as Q.2F, the difference saturated to 32 bits:
  * one SMULL (see fx_mul_diff for the barrier). */
 static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c)
@@ -120,6 +101,14 @@ static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c)
     d = w > FX_MAX ? FX_MAX : w < FX_MIN ? FX_MIN : (int32_t)w;
 #endif
     return (int64_t)d * c;
+}
+
+/* (a - b) * c, the difference saturated to 32 bits and the product
+ * truncated (floor): for slab tests, whose intervals are widened
+ * afterwards by more than this error. */
+static inline fx_t fx_mul_diff(fx_t a, fx_t b, fx_t c)
+{
+    return fx_sat64(fx_wmul_diff(a, b, c) >> FX_FRAC_BITS);
 }
 
 /* A Q.2F value widened away from its neighbours by 4 units (of Q.F) per

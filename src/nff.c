@@ -560,15 +560,21 @@ static bool read_pass(reader_t *r)
     }
 }
 
+static void reader_start(reader_t *r, const char *text, size_t len, scene_store_t *store, rt_error_t *err)
+{
+    *r = (reader_t){ 0 };
+    r->p = text;
+    r->end = text + len;
+    r->line = 1;
+    r->tok_line = 1;
+    r->st = store;
+    r->err = err;
+}
+
 bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *err)
 {
-    reader_t r = { 0 };
-    r.p = text;
-    r.end = text + len;
-    r.line = 1;
-    r.tok_line = 1;
-    r.st = store;
-    r.err = err;
+    reader_t r;
+    reader_start(&r, text, len, store, err);
     r.measuring = true;
     r.max_exp2 = INT32_MIN;
     err->line = 0;
@@ -580,13 +586,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     if (!choose_scale(&r))
         return false;
     int32_t scale = r.scale_log2;
-    r = (reader_t){ 0 };
-    r.p = text;
-    r.end = text + len;
-    r.line = 1;
-    r.tok_line = 1;
-    r.st = store;
-    r.err = err;
+    reader_start(&r, text, len, store, err);
     r.scale_log2 = scale;
     scene_t *sc = &store->scene;
     *sc = (scene_t){ 0 };

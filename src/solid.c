@@ -21,8 +21,8 @@ static vec3_t mat_vec(const real_t m[3][3], vec3_t v)
     return v3(row_dot(m[0], v), row_dot(m[1], v), row_dot(m[2], v));
 }
 
-/* a = a * b (a's columns mixed by b) or a = b * a */
-static void mat_mul_right(real_t a[3][3], const real_t b[3][3])
+/* out = a * b (out may be a or b) */
+static void mat_mul(real_t out[3][3], const real_t a[3][3], const real_t b[3][3])
 {
     real_t r[3][3];
     for (int i = 0; i < 3; i++)
@@ -30,18 +30,7 @@ static void mat_mul_right(real_t a[3][3], const real_t b[3][3])
             r[i][j] = r_from_wide(r_wmul(a[i][0], b[0][j]) + r_wmul(a[i][1], b[1][j]) + r_wmul(a[i][2], b[2][j]));
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
-            a[i][j] = r[i][j];
-}
-
-static void mat_mul_left(real_t a[3][3], const real_t b[3][3])
-{
-    real_t r[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            r[i][j] = r_from_wide(r_wmul(b[i][0], a[0][j]) + r_wmul(b[i][1], a[1][j]) + r_wmul(b[i][2], a[2][j]));
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            a[i][j] = r[i][j];
+            out[i][j] = r[i][j];
 }
 
 void xform_identity(xform_t *x)
@@ -66,8 +55,8 @@ void xform_scale(xform_t *x, vec3_t s)
 {
     const real_t d[3][3] = { { s.x, 0, 0 }, { 0, s.y, 0 }, { 0, 0, s.z } };
     const real_t di[3][3] = { { r_recip(s.x), 0, 0 }, { 0, r_recip(s.y), 0 }, { 0, 0, r_recip(s.z) } };
-    mat_mul_right(x->m, d);
-    mat_mul_left(x->im, di);
+    mat_mul(x->m, x->m, d);
+    mat_mul(x->im, di, x->im);
 }
 
 void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
@@ -86,8 +75,8 @@ void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++)
             rt[i][j] = r[j][i];
-    mat_mul_right(x->m, r);
-    mat_mul_left(x->im, rt);
+    mat_mul(x->m, x->m, r);
+    mat_mul(x->im, rt, x->im);
 }
 
 vec3_t xform_point(const xform_t *x, vec3_t p)

@@ -13,25 +13,6 @@
 
 #define GRID 32
 
-static void report(const char *key, uint64_t value)
-{
-    char line[64];
-    unsigned n = 0;
-    while (*key && n < 40)
-        line[n++] = *key++;
-    line[n++] = ' ';
-    char digits[20];
-    unsigned k = 0;
-    do {
-        digits[k++] = (char)('0' + value % 10);
-        value /= 10;
-    } while (value != 0);
-    while (k)
-        line[n++] = digits[--k];
-    line[n] = '\0';
-    uart_report(line);
-}
-
 int main(void)
 {
     static rt_error_t err;
@@ -61,10 +42,10 @@ int main(void)
         }
     uint64_t total = icount_read() - t0 - rays_only;
     uint64_t tests = st.tests_sphere + st.tests_cone + st.tests_polygon + st.tests_object;
-    report("rays", (uint64_t)GRID * GRID);
-    report("hits", hits);
-    report("tests", tests);
-    report("instructions_per_test", tests ? (total + tests / 2) / tests : 0);
+    uart_report_value("rays", (uint64_t)GRID * GRID);
+    uart_report_value("hits", hits);
+    uart_report_value("tests", tests);
+    uart_report_value("instructions_per_test", tests ? (total + tests / 2) / tests : 0);
     (void)sink;
     return 0;
 }

@@ -98,3 +98,22 @@ void uart_report(const char *text)
     uart_write(hdr, sizeof hdr);
     uart_write(text, n);
 }
+
+void uart_report_value(const char *key, uint64_t value)
+{
+    char line[64];
+    unsigned n = 0;
+    while (*key && n < 40)
+        line[n++] = *key++;
+    line[n++] = ' ';
+    char digits[20];
+    unsigned k = 0;
+    do {
+        digits[k++] = (char)('0' + value % 10);
+        value /= 10;
+    } while (value != 0);
+    while (k)
+        line[n++] = digits[--k];
+    line[n] = '\0';
+    uart_report(line);
+}

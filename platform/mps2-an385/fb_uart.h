@@ -21,7 +21,8 @@ void fb_uart_init(fb_sink_t *sink, fb_format_t format, uint8_t *band, size_t byt
 /* Instructions spent inside the sink (UART output and checksums). */
 uint64_t fb_uart_io_instructions(void);
 
-/* One 'T' record. */
+/* One 'T' record; and one reading "key value". */
 void uart_report(const char *text);
+void uart_report_value(const char *key, uint64_t value);
 
 #endif

@@ -28,26 +28,6 @@ _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out
 
 static uint8_t band[BOARD_BAND_LINES * BOARD_WIDTH * BOARD_BPP];
 
-/* "key value" report line */
-static void report(const char *key, uint64_t value)
-{
-    char line[64];
-    unsigned n = 0;
-    while (*key && n < 40)
-        line[n++] = *key++;
-    line[n++] = ' ';
-    char digits[20];
-    unsigned k = 0;
-    do {
-        digits[k++] = (char)('0' + value % 10);
-        value /= 10;
-    } while (value != 0);
-    while (k)
-        line[n++] = digits[--k];
-    line[n] = '\0';
-    uart_report(line);
-}
-
 int main(void)
 {
     uart_init();
@@ -72,22 +52,22 @@ int main(void)
         return 1;
     }
     uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
-    report("pixels", pixels);
-    report("render_instructions", instr);
-    report("instructions_per_pixel", (instr + pixels / 2) / pixels);
-    report("eye_rays", st.eye_rays);
-    report("eye_hits", st.eye_hits);
-    report("reflect_rays", st.reflect_rays);
-    report("refract_rays", st.refract_rays);
-    report("shadow_rays", st.shadow_rays);
-    report("sphere_tests", st.tests_sphere);
-    report("cone_tests", st.tests_cone);
-    report("polygon_tests", st.tests_polygon);
-    report("object_tests", st.tests_object);
-    report("bvh_nodes_visited", st.bvh_nodes);
-    report("stack_high_water", stack_high_water());
-    report("stack_size", stack_size());
+    uart_report_value("pixels", pixels);
+    uart_report_value("render_instructions", instr);
+    uart_report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
+    uart_report_value("eye_rays", st.eye_rays);
+    uart_report_value("eye_hits", st.eye_hits);
+    uart_report_value("reflect_rays", st.reflect_rays);
+    uart_report_value("refract_rays", st.refract_rays);
+    uart_report_value("shadow_rays", st.shadow_rays);
+    uart_report_value("sphere_tests", st.tests_sphere);
+    uart_report_value("cone_tests", st.tests_cone);
+    uart_report_value("polygon_tests", st.tests_polygon);
+    uart_report_value("object_tests", st.tests_object);
+    uart_report_value("bvh_nodes_visited", st.bvh_nodes);
+    uart_report_value("stack_high_water", stack_high_water());
+    uart_report_value("stack_size", stack_size());
     int guard = stack_guard_intact();
-    report("stack_guard_intact", (uint64_t)guard);
+    uart_report_value("stack_guard_intact", (uint64_t)guard);
     return guard ? 0 : 3;
 }
