@@ -97,49 +97,74 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight)
     return tr->min_weight == 0 || weight >= tr->min_weight;
 }
 
-colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
+/* The nearest surface along the ray, if any. Not inlined, so the hit
+ * record stays out of the recursive trace_ray frame. */
+RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
-    const scene_t *sc = tr->scene;
     hit_t h;
     h.t = RT_T_FAR;
-    if (!scene_nearest(sc, ray, RT_T_MIN, &h, tr->stats))
-        return sc->background;
+    if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
+        return false;
+    *s = surface_at(tr->scene, &h, ray);
+    return true;
+}
+
+#if RT_USE_REFLECTION
+/* The mirror ray leaving s. */
+RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+{
+    out->origin = v3_madd(s->point, RT_SURFACE_OFFSET, s->n_out);
+    out->dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s->n));
+}
+#endif
+
+#if RT_USE_REFRACTION
+/* The refracted ray by Snell's law; false on total internal reflection. */
+RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+{
+    real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior; /* n1 / n2 */
+    real_t sin2_t = r_mul(r_mul(eta, eta), R_ONE - r_mul(cos_i, cos_i));
+    if (sin2_t > R_ONE)
+        return false;
+    real_t cos_t = r_sqrt(R_ONE - sin2_t);
+    out->origin = v3_madd(s->point, -RT_SURFACE_OFFSET, s->n_out);
+    out->dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s->n));
+    return true;
+}
+#endif
+
+/* The ray helpers above are not inlined: their temporaries stay out of
+ * this frame, which the recursion repeats RT_MAX_DEPTH times. */
+colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
+{
+    surface_t s;
+    if (!find_surface(tr, ray, &s))
+        return tr->scene->background;
     if (depth == 1)
         tr->stats->eye_hits++;
 
-    surface_t s = surface_at(sc, &h, ray);
     colour_t c = direct_light(tr, &s, ray);
     if (depth >= tr->max_depth)
         return c;
 
     const material_t *m = s.m;
     real_t cos_i = -v3_dot(ray->dir, s.n); /* > 0 */
-    (void)weight, (void)cos_i, (void)m;
+    ray_t next;
+    (void)weight, (void)cos_i, (void)m, (void)next;
 #if RT_USE_REFLECTION
     /* SPD rule 8: a transmitting surface also spawns its reflection ray */
     if ((m->ks > 0 || (tr->spd_rules && m->t > 0)) && worth_tracing(tr, r_mul(weight, m->ks))) {
-        ray_t refl;
-        refl.origin = v3_madd(s.point, RT_SURFACE_OFFSET, s.n_out);
-        refl.dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s.n));
+        reflected(ray, &s, cos_i, &next);
         tr->stats->reflect_rays++;
-        colour_t rc = trace_ray(tr, &refl, depth + 1, r_mul(weight, m->ks));
+        colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
             c = c3_add(c, v3_scale(rc, m->ks));
     }
 #endif
 #if RT_USE_REFRACTION
-    if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t))) {
-        /* Snell: eta = n1 / n2; no ray on total internal reflection */
-        real_t eta = s.entering ? r_div(R_ONE, m->ior) : m->ior;
-        real_t sin2_t = r_mul(r_mul(eta, eta), R_ONE - r_mul(cos_i, cos_i));
-        if (sin2_t <= R_ONE) {
-            real_t cos_t = r_sqrt(R_ONE - sin2_t);
-            ray_t refr;
-            refr.origin = v3_madd(s.point, -RT_SURFACE_OFFSET, s.n_out);
-            refr.dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s.n));
-            tr->stats->refract_rays++;
-            c = c3_add(c, v3_scale(trace_ray(tr, &refr, depth + 1, r_mul(weight, m->t)), m->t));
-        }
+    if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
+        tr->stats->refract_rays++;
+        c = c3_add(c, v3_scale(trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t));
     }
 #endif
     return c;
