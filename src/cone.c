@@ -14,6 +14,10 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
         return "cone base and apex are the same point";
     if (c->r0 == 0 && r_apex == 0)
         return "cone radii are both zero";
+    /* a cone flatter than this is an annulus to within the fixed
+     * precision, and its slope would overflow the intersection sums */
+    if (r_mul(r_abs(r_abs(r_apex) - c->r0), R_RATIO(1, 256)) > c->height)
+        return "cone too flat for the fixed range (radius change over 256 times its height)";
     c->slope = r_div(r_abs(r_apex) - c->r0, c->height);
     real_t half = c->height / 2, rmax = r_max(c->r0, r_abs(r_apex));
     c->bound_centre = v3_madd(base, half, c->axis);
@@ -70,7 +74,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
     real_t dv = v3_dot(r->dir, c->axis);
     vec3_t op = v3_madd(ob, -ov, c->axis);
     vec3_t dp = v3_madd(r->dir, -dv, c->axis);
-    real_t rr = c->r0 + r_mul(c->slope, ov); /* radius at the origin's height */
+    real_t rr = r_add_sat(c->r0, r_mul(c->slope, ov)); /* radius at the origin's height */
     real_t kdv = r_mul(c->slope, dv);
 
     real_t a = r_from_wide(v3_wdot(dp, dp) - r_wmul(kdv, kdv));
