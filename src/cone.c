@@ -33,7 +33,7 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
 static real_t refine_root(vec3_t op, vec3_t dp, real_t rr, real_t kdv, real_t t)
 {
     vec3_t q = v3_madd(op, t, dp);
-    real_t rad = rr + r_mul(kdv, t);
+    real_t rad = r_add_sat(rr, r_mul(kdv, t));
     real_wide_t f = v3_wdot(q, q) - r_wmul(rad, rad);
     real_wide_t slope = 2 * (v3_wdot(q, dp) - r_wmul(rad, kdv));
     if (slope == 0)
@@ -122,7 +122,9 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         roots[1] = tmp;
     }
     for (int i = 0; i < n; i++) {
-        if (roots[i] <= tmin || roots[i] >= *t)
+        /* every position is within 16 of the origin (the reader's scale),
+         * so no hit lies beyond 64 */
+        if (roots[i] <= tmin || roots[i] >= *t || roots[i] > R_RATIO(64, 1))
             continue;
         real_t ti = refine_root(op, dp, rr, kdv, roots[i]);
         if (ti <= tmin || ti >= *t)

@@ -39,6 +39,7 @@ static void flush_band(fb_sink_t *sink, unsigned *cur, uint16_t w, uint16_t y1, 
         wait_flushed(sink);
 }
 
+#if RT_USE_SPD
 /* One row of SPD corner samples (w + 1 of them). */
 static void corner_row(const tracer_t *tr, const camera_t *cam, int32_t j, uint16_t w, colour_t *row)
 {
@@ -46,6 +47,33 @@ static void corner_row(const tracer_t *tr, const camera_t *cam, int32_t j, uint1
         ray_t ray = camera_ray(cam, i, j);
         tr->stats->eye_rays++;
         row[i] = trace_ray(tr, &ray, 1, R_ONE);
+    }
+}
+
+/* Line y of an SPD frame: each pixel the mean of its four corners;
+ * rows[0] holds the corners above the line, rows[1] gets those below. */
+static void spd_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16_t w, colour_t *rows[2],
+                     uint8_t *line, fb_format_t f)
+{
+    corner_row(tr, cam, y + 1, w, rows[1]);
+    for (uint16_t x = 0; x < w; x++) {
+        colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
+        put_pixel(line + x * fb_bytes_per_pixel(f), f, v3_scale(sum, R_RATIO(1, 4)));
+    }
+    colour_t *t = rows[0];
+    rows[0] = rows[1];
+    rows[1] = t;
+}
+#endif
+
+/* Line y of a normal frame: one eye ray per pixel. */
+static void plain_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16_t w, uint8_t *line,
+                       fb_format_t f)
+{
+    for (uint16_t x = 0; x < w; x++) {
+        ray_t ray = camera_ray(cam, x, y);
+        tr->stats->eye_rays++;
+        put_pixel(line + x * fb_bytes_per_pixel(f), f, trace_ray(tr, &ray, 1, R_ONE));
     }
 }
 
@@ -74,6 +102,12 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
         rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
         return -1;
     }
+#if !RT_USE_SPD
+    if (opts->spd) {
+        rt_error_set(err, 0, "SPD mode is not compiled in (RT_USE_SPD = 0)");
+        return -1;
+    }
+#else
     colour_t *rows[2] = { 0, 0 };
     if (opts->spd) {
         if (opts->scratch == 0 || opts->scratch_bytes < RENDER_SPD_SCRATCH(w)) {
@@ -83,8 +117,16 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
         rows[0] = opts->scratch;
         rows[1] = rows[0] + w + 1;
     }
+#endif
     static camera_t cam; /* static: one render at a time; keeps the stack small */
-    const char *why = opts->spd ? camera_init(&cam, &sc->view, w + 1, h + 1) : camera_init(&cam, &sc->view, w, h);
+    int32_t nx = w, ny = h;
+#if RT_USE_SPD
+    if (opts->spd) { /* a grid of corners, one more each way */
+        nx++;
+        ny++;
+    }
+#endif
+    const char *why = camera_init(&cam, &sc->view, nx, ny);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;
@@ -96,29 +138,20 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
     int status = sink->begin ? sink->begin(sink, w, h) : 0;
     if (status != 0)
         return status;
+#if RT_USE_SPD
     if (opts->spd)
         corner_row(&tr, &cam, 0, w, rows[0]);
+#endif
     unsigned cur = 0;
     uint16_t band_y = 0;
     for (uint16_t y = 0; y < h; y++) {
         uint8_t *line = sink->band[cur] + (size_t)(y - band_y) * line_bytes;
-        if (opts->spd) {
-            /* pixel = mean of its four corners; rows[0] holds the top ones */
-            corner_row(&tr, &cam, y + 1, w, rows[1]);
-            for (uint16_t x = 0; x < w; x++) {
-                colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
-                put_pixel(line + x * bpp, sink->format, v3_scale(sum, R_RATIO(1, 4)));
-            }
-            colour_t *t = rows[0];
-            rows[0] = rows[1];
-            rows[1] = t;
-        } else {
-            for (uint16_t x = 0; x < w; x++) {
-                ray_t ray = camera_ray(&cam, x, y);
-                stats->eye_rays++;
-                put_pixel(line + x * bpp, sink->format, trace_ray(&tr, &ray, 1, R_ONE));
-            }
-        }
+#if RT_USE_SPD
+        if (opts->spd)
+            spd_line(&tr, &cam, y, w, rows, line, sink->format);
+        else
+#endif
+            plain_line(&tr, &cam, y, w, line, sink->format);
         if ((size_t)(y - band_y + 1) == band_lines || y + 1 == h) {
             flush_band(sink, &cur, w, band_y, y);
             band_y = (uint16_t)(y + 1);

@@ -148,6 +148,12 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_USE_REFRACTION 1
 #endif
 
+/* The SPD test procedure (corner rays, render_opts_t.spd); boards that
+ * never use it leave it out. */
+#ifndef RT_USE_SPD
+#define RT_USE_SPD 1
+#endif
+
 /* Largest image side accepted (bounds the per-line work buffers). */
 #ifndef RT_MAX_WIDTH
 #define RT_MAX_WIDTH 4096

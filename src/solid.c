@@ -303,7 +303,7 @@ static vec3_t quadric_grad_half(const real_t q[10], vec3_t x, bool affine)
     real_wide_t gz = r_wmul(q[4], x.x) / 2 + r_wmul(q[5], x.y) / 2 + r_wmul(q[2], x.z);
     vec3_t g = v3(r_from_wide(gx), r_from_wide(gy), r_from_wide(gz));
     if (affine)
-        g = v3_add(g, v3(q[6] / 2, q[7] / 2, q[8] / 2));
+        g = c3_add(g, v3(q[6] / 2, q[7] / 2, q[8] / 2)); /* saturating */
     return g;
 }
 
@@ -325,8 +325,9 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
     vec3_t w = quadric_grad_half(s->q, o->p0, true);
     real_t alpha = v3_dot(o->u, quadric_grad_half(s->q, o->u, false));
     real_t beta = v3_dot(o->u, w);
-    real_t gamma = v3_dot(o->p0, w) + r_mul(s->q[6] / 2, o->p0.x) + r_mul(s->q[7] / 2, o->p0.y) +
-                   r_mul(s->q[8] / 2, o->p0.z) + s->q[9];
+    /* summed wide: a general quadric's coefficients may be large */
+    real_t gamma = r_from_wide(v3_wdot(o->p0, w) + r_wmul(s->q[6] / 2, o->p0.x) + r_wmul(s->q[7] / 2, o->p0.y) +
+                               r_wmul(s->q[8] / 2, o->p0.z) + r_to_wide(s->q[9]));
     /* the inside of q as at most two intervals of sigma */
     real_t iv[2][2];
     int n = 0;
@@ -335,7 +336,7 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
             if (gamma <= 0)
                 iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
         } else {
-            real_t root = safe_div(-gamma, 2 * beta);
+            real_t root = safe_div(-gamma, r_add_sat(beta, beta));
             if (beta > 0)
                 iv[n][0] = -R_BIG, iv[n][1] = root, n++;
             else
@@ -348,7 +349,7 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
                 iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
         } else {
             real_t h = r_wsqrt(disc);
-            real_t qv = beta > 0 ? -(beta + h) : h - beta;
+            real_t qv = beta > 0 ? -r_add_sat(beta, h) : r_add_sat(h, -beta);
             real_t r1 = safe_div(qv, alpha), r2 = qv != 0 ? safe_div(gamma, qv) : r1;
             if (r2 < r1) {
                 real_t tt = r1;

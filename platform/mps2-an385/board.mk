@@ -32,7 +32,7 @@ ARM_ARCH = -mcpu=cortex-m3 -mthumb
 BOARD_CFLAGS = $(WARN) -ffreestanding $(ARM_ARCH) -O2 -g -ffunction-sections -fdata-sections \
                -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
                $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) $(CFG_FLAGS) -include $(FW_DIR)/scene_data.h \
+               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(CFG_FLAGS) -include $(FW_DIR)/scene_data.h \
                -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
 BOARD_LDFLAGS = $(ARM_ARCH) -nostdlib -nostartfiles -T linker/mps2-an385.ld -Wl,--gc-sections
 
