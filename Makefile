@@ -129,7 +129,7 @@ bench-quick: deps
 	python3 bench/run_bench.py --quick
 
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/fuzz/fuzz_nff
+        build/stress/rt build/stress/test_rayfuzz build/fuzz/fuzz_nff build/scenec/rt-scenec
 
 test: deps
 	$(MAKE) $(TESTS)
