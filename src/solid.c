@@ -111,6 +111,10 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
     s->hi = hi;
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
         return "quadric clip box is empty (need x0 < x1, y0 < y1, z0 < z1)";
+    /* object-space coordinates must stay well inside the fixed range */
+    if (r_max(r_max(r_abs(lo.x), r_abs(hi.x)), r_max(r_max(r_abs(lo.y), r_abs(hi.y)), r_max(r_abs(lo.z), r_abs(hi.z)))) >
+        R_RATIO(64, 1))
+        return "quadric too long for the fixed range (its clip box reaches over 64 times its radii)";
     s->bound = corner_radius(lo, hi);
     return 0;
 }
