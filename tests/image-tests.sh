@@ -40,6 +40,16 @@ for f in scenes/*.nff; do
     fi
 done
 
+# The single-precision backend (a comparison build) against double.
+for s in balls-2 showpiece; do
+    f=$( [ -f scenes/spd/$s.nff ] && echo scenes/spd/$s.nff || echo scenes/$s.nff )
+    if "$RT" "$f" -o "$OUT/$s-float.png" --size $SIZE --float --quiet; then
+        check "$s (float backend)" "$RT" compare "$OUT/$s-float.png" "$OUT/$s-double.png" --psnr-min $PSNR_MIN --max-over8 $OVER8_MAX
+    else
+        fail=$((fail + 1)); echo "  FAIL  $s (float backend): render failed"
+    fi
+done
+
 # Transform identities: a shape placed by a transform renders like the
 # same shape written in world coordinates (the fixed build, both ways;
 # tolerance: PSNR >= 50 dB, at most 0.1% of pixels off by more than 8/255,
