@@ -9,14 +9,16 @@
  */
 #include "bvh.h"
 
+#include "geometry.h"
+
 #define BVH_BINS 12
 /* Cost of visiting a node (two box tests) in units of one primitive test:
  * about what a fixed-point box test costs against a sphere test on the
  * Cortex-M3. It is what makes small groups end as leaves. */
 #define BVH_TRAVERSAL_COST 2
 
-/* Rounding slack added around every primitive's box. */
-#define BOX_SLACK R_RATIO(1, 4096)
+/* Rounding slack added around every primitive's box (geometry.h). */
+#define BOX_SLACK RT_BOX_SLACK
 
 typedef struct {
     vec3_t min, max;

@@ -21,8 +21,8 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
     c->slope = r_div(r_abs(r_apex) - c->r0, c->height);
     real_t half = c->height / 2, rmax = r_max(c->r0, r_abs(r_apex));
     c->bound_centre = v3_madd(base, half, c->axis);
-    /* one ulp of slack so rounding cannot cut the cone */
-    c->bound_radius = r_wsqrt(r_wmul(half, half) + r_wmul(rmax, rmax)) + R_RATIO(1, 4096);
+    /* slack so rounding cannot cut the cone */
+    c->bound_radius = r_wsqrt(r_wmul(half, half) + r_wmul(rmax, rmax)) + RT_BOX_SLACK;
     c->bound_radius2 = r_wmul(c->bound_radius, c->bound_radius);
     return 0;
 }

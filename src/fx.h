@@ -88,40 +88,21 @@ fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
 
 /* (a - b) * c exactly, as Q.2F, the difference saturated to 32 bits:
- * one SMULL (see fx_mul_diff for the barrier). */
+ * one SMULL (slab tests). */
 static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c)
 {
     int32_t d;
 #if defined(__GNUC__)
     if (__builtin_sub_overflow(a, b, &d))
         d = a > b ? FX_MAX : FX_MIN;
+    /* an empty barrier: without it GCC 12 forgets d is 32-bit after the
+     * select and multiplies 64x64 (three instructions for one SMULL) */
     __asm__("" : "+r"(d));
 #else
     int64_t w = (int64_t)a - b;
     d = w > FX_MAX ? FX_MAX : w < FX_MIN ? FX_MIN : (int32_t)w;
 #endif
     return (int64_t)d * c;
-}
-
-/* (a - b) * c, the difference saturated to 32 bits and the product
- * truncated (floor): for slab tests, whose intervals are widened
- * afterwards by more than this error. */
-static inline fx_t fx_mul_diff(fx_t a, fx_t b, fx_t c)
-{
-    return fx_sat64(fx_wmul_diff(a, b, c) >> FX_FRAC_BITS);
-}
-
-/* A Q.2F value widened away from its neighbours by 4 units (of Q.F) per
- * unit of its magnitude plus 4 units: margins for slab intervals. */
-static inline fx_wide_t fx_wwiden_down(fx_wide_t x)
-{
-    int64_t ax = x < 0 ? -x : x;
-    return x - (ax >> (FX_FRAC_BITS - 2)) - ((int64_t)4 << FX_FRAC_BITS);
-}
-static inline fx_wide_t fx_wwiden_up(fx_wide_t x)
-{
-    int64_t ax = x < 0 ? -x : x;
-    return x + (ax >> (FX_FRAC_BITS - 2)) + ((int64_t)4 << FX_FRAC_BITS);
 }
 
 /* Sign of d . n for a Q.F vector d (|d_k| <= 2) and a Q.2F vector n, at
@@ -138,18 +119,6 @@ static inline int fx_wsign_dot(fx_t dx, fx_t dy, fx_t dz, fx_wide_t nx, fx_wide_
     return (v > 0) - (v < 0);
 }
 
-/* x moved away from zero-crossing margins: x - (|x| * 2^(2-F) + 4 ulp)
- * and x + (...): a relative widening of 4 ulp per unit plus 4 ulp. */
-static inline fx_t fx_widen_down(fx_t x)
-{
-    int32_t ax = x < 0 ? -x : x;
-    return fx_sat64((int64_t)x - (ax >> (FX_FRAC_BITS - 2)) - 4);
-}
-static inline fx_t fx_widen_up(fx_t x)
-{
-    int32_t ax = x < 0 ? -x : x;
-    return fx_sat64((int64_t)x + (ax >> (FX_FRAC_BITS - 2)) + 4);
-}
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b); /* a / b of two Q.2F values, as Q.F */
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a); /* w / a, as Q.2F; a == 0 saturates */
 fx_t fx_sqrt(fx_t a);                 /* a < 0 gives 0 */

@@ -17,6 +17,17 @@ typedef struct {
     vec3_t origin, dir;
 } ray_t;
 
+/* Padding of every bounding box (BVH nodes, polygon boxes, shapes). It
+ * also makes the slab test conservative without widening its intervals:
+ * a reciprocal is good to 2^-(F+1) relative, so over the longest possible
+ * ray (64 units: the reader keeps positions within 16) a slab plane moves
+ * by less than 2^(5-F), which this padding exceeds. */
+#if RT_BACKEND_FIXED && FX_FRAC_BITS < 18
+#define RT_BOX_SLACK R_RATIO(1, (int32_t)1 << (FX_FRAC_BITS - 6))
+#else
+#define RT_BOX_SLACK R_RATIO(1, 4096)
+#endif
+
 static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin, t, r->dir); }
 
 /* Set-up: each returns NULL, or the reason the primitive is degenerate. */

@@ -77,7 +77,7 @@ const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint1
     p->convex = !(left && right);
     /* Slack so the exact box test never rejects a hit that the rounded
      * inside test (or a neighbour sharing the edge) would accept. */
-    const real_t slack = R_RATIO(1, 4096);
+    const real_t slack = RT_BOX_SLACK;
     p->box_min = v3(p->box_min.x - slack, p->box_min.y - slack, p->box_min.z - slack);
     p->box_max = v3(p->box_max.x + slack, p->box_max.y + slack, p->box_max.z + slack);
     return 0;

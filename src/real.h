@@ -50,9 +50,6 @@ static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
 static inline real_t r_recip(real_t b) { return R_ONE / b; }
-static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
-static inline real_t r_widen_down(real_t x) { return x - (x < 0 ? -x : x) * R_ULPS(4) - R_ULPS(4); }
-static inline real_t r_widen_up(real_t x) { return x + (x < 0 ? -x : x) * R_ULPS(4) + R_ULPS(4); }
 static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
 /* sign of (dx, dy, dz) . (nx, ny, nz) */
 static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
@@ -60,8 +57,6 @@ static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, r
     real_wide_t s = dx * nx + dy * ny + dz * nz;
     return (s > 0) - (s < 0);
 }
-static inline real_wide_t r_wwiden_down(real_wide_t x) { return r_widen_down(x); }
-static inline real_wide_t r_wwiden_up(real_wide_t x) { return r_widen_up(x); }
 static inline real_t r_sqrt(real_t a) { return a > 0 ? R_FN(sqrt)(a) : 0; }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return a * b; }
 static inline real_wide_t r_to_wide(real_t a) { return a; }
@@ -139,12 +134,7 @@ static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
 static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
-static inline real_t r_mul_diff(real_t a, real_t b, real_t c) { return fx_mul_diff(a, b, c); }
-static inline real_t r_widen_down(real_t x) { return fx_widen_down(x); }
-static inline real_t r_widen_up(real_t x) { return fx_widen_up(x); }
 static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return fx_wmul_diff(a, b, c); }
-static inline real_wide_t r_wwiden_down(real_wide_t x) { return fx_wwiden_down(x); }
-static inline real_wide_t r_wwiden_up(real_wide_t x) { return fx_wwiden_up(x); }
 static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
 {
     return fx_wsign_dot(dx, dy, dz, nx, ny, nz);

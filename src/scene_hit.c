@@ -3,18 +3,17 @@
  *
  * BVH traversal: nearest-first with a bounded stack for eye, reflection
  * and refraction rays; any-hit with an early exit for shadow rays. The
- * slab tests are conservative: each interval is widened by more than its
- * rounding error, so a box is never missed because of rounding (it may be
- * entered needlessly, which costs time, not correctness). The brute-force
- * versions are the reference the BVH is tested against.
+ * slab tests are conservative: every box is padded by RT_BOX_SLACK, more
+ * than the error of the reciprocal over any ray (geometry.h), so a box is
+ * never missed because of rounding (it may be entered needlessly, which
+ * costs time, not correctness). The brute-force versions are the
+ * reference the BVH is tested against.
  */
 #include "scene_hit.h"
 
 #include "solid.h"
 
-/* Every slab interval is widened by 4 units of the last place per unit
- * of t plus 4 units (r_widen_down/up): a reciprocal of magnitude >= 1 is
- * good to half a unit, relative, and each product to one unit. */
+/* Margin of the parallel-axis test (plus the drift d * tmax). */
 #define SLAB_EPS_ABS R_ULPS(4)
 /* Axes where |d| is below this would have a reciprocal too large for the
  * 64-bit products (|1/d| < 2^(29-F)); they are handled as parallel plus
@@ -69,9 +68,6 @@ static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, rea
         !slab_axis(s, 1, s->origin.y, n->min.y, n->max.y, tmax, &lo, &hi) ||
         !slab_axis(s, 2, s->origin.z, n->min.z, n->max.z, tmax, &lo, &hi))
         return false;
-    /* widen once by more than the rounding of the reciprocals */
-    lo = r_wwiden_down(lo);
-    hi = r_wwiden_up(hi);
     if (lo > hi || hi < r_to_wide(tmin) || lo > r_to_wide(tmax))
         return false;
     *entry = lo > r_to_wide(tmin) ? r_from_wide(lo) : tmin;

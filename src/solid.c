@@ -145,7 +145,7 @@ const char *shape_init_box(shape_t *s, vec3_t lo, vec3_t hi)
 
 void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *max)
 {
-    const real_t pad = R_RATIO(1, 4096);
+    const real_t pad = RT_BOX_SLACK;
     vec3_t lo = s->lo, hi = s->hi;
     if (s->xform == XFORM_NONE) {
         *min = v3(lo.x - pad, lo.y - pad, lo.z - pad);
