@@ -103,7 +103,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         roots[1] = r_add_sat(tv, h);
         n = 2;
     } else {
-        /* Nearly parallel to a surface line: the cancellation-free pair
+        /* Nearly parallel to a surface line: the cancellation-safe pair
          * q / a and c / q of a t^2 + 2 b t + c. */
         real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
         real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);

@@ -127,18 +127,26 @@ typedef struct {
 static bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH];
 static uint32_t any_stack[RT_BVH_MAX_DEPTH];
 
+/* Whether traversal can start: the tree is not empty and the ray meets
+ * the root's box. A one-leaf tree needs no box test, nor the slab set-up. */
+static RT_INLINE bool enter_root(const scene_t *sc, slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
+{
+    real_t entry;
+    if (sc->n_bvh_nodes == 0)
+        return false;
+    if (sc->bvh_nodes[0].count)
+        return true;
+    slab_init(s, r);
+    return slab_test(&sc->bvh_nodes[0], s, tmin, tmax, &entry);
+}
+
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    real_t entry, ea, eb;
-    if (sc->n_bvh_nodes == 0)
+    real_t ea, eb;
+    if (!enter_root(sc, &s, r, tmin, h->t))
         return false;
-    if (nodes[0].count == 0) { /* a one-leaf tree skips the box tests */
-        slab_init(&s, r);
-        if (!slab_test(&nodes[0], &s, tmin, h->t, &entry))
-            return false;
-    }
     bvh_stack_t *stack = nearest_stack;
     unsigned sp = 0;
     uint32_t node = 0;
@@ -197,13 +205,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     const bvh_node_t *nodes = sc->bvh_nodes;
     static slab_ray_t s; /* static like the stacks above */
     real_t entry;
-    if (sc->n_bvh_nodes == 0)
+    if (!enter_root(sc, &s, r, tmin, tmax))
         return false;
-    if (nodes[0].count == 0) {
-        slab_init(&s, r);
-        if (!slab_test(&nodes[0], &s, tmin, tmax, &entry))
-            return false;
-    }
     uint32_t *stack = any_stack;
     unsigned sp = 0;
     uint32_t node = 0;

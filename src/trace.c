@@ -101,8 +101,7 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight)
  * record stays out of the recursive trace_ray frame. */
 RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
-    hit_t h;
-    h.t = RT_T_FAR;
+    hit_t h = { .t = RT_T_FAR };
     if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
         return false;
     *s = surface_at(tr->scene, &h, ray);

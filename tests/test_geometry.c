@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "backend.h"
+#include "probe_jump.h"
 #include "testlib.h"
 
 #define N_RAYS 20000
@@ -102,27 +103,6 @@ static void random_ray(double extent, bool inside, double o[3], double dir[3])
         dir[k] /= l;
 }
 
-/* Whether a nudge of the ray by `eps` makes the double result jump (hit
- * to miss, or t by more than `dt`): the ray passes a silhouette or rim. */
-static bool near_discontinuity(const double o[3], const double dir[3], double eps, double dt)
-{
-    probe_hit_t h0, h;
-    bool base = rt_backend_double.probe(o, dir, false, &h0);
-    for (int k = 0; k < 3; k++) {
-        for (int sgn = -1; sgn <= 1; sgn += 2) {
-            double o2[3] = { o[0], o[1], o[2] };
-            o2[k] += sgn * eps;
-            bool hit = rt_backend_double.probe(o2, dir, false, &h);
-            if (hit != base || (hit && fabs(h.t - h0.t) > dt))
-                return true;
-            for (int m = 0; hit && m < 3; m++)
-                if (fabs(h.normal[m] - h0.normal[m]) > 0.1)
-                    return true; /* e.g. the tip of a cone */
-        }
-    }
-    return false;
-}
-
 static void test_shape(const test_shape_t *s)
 {
     if (!load_both(s)) {
@@ -143,7 +123,7 @@ static void test_shape(const test_shape_t *s)
             far_apart |= fabs(hf.normal[k] - hd.normal[k]) > 0.1;
         if (f != dd || far_apart) {
             mismatch++;
-            unexcused += !near_discontinuity(o, dir, nudge, 0.05 * s->extent);
+            unexcused += !probe_double_jumps(o, dir, nudge, 0.05 * s->extent);
             continue;
         }
         if (!f)

@@ -23,6 +23,7 @@
 #include <string.h>
 
 #include "backend.h"
+#include "probe_jump.h"
 #include "testlib.h"
 
 #define RAYS_PER_SCENE 10000
@@ -109,24 +110,6 @@ static double random_scene(char *buf, size_t cap, int kind, double c[3])
     }
     }
     return size;
-}
-
-static bool flips(const double o[3], const double d[3], double eps, double dt)
-{
-    probe_hit_t h0, h;
-    bool base = rt_backend_double.probe(o, d, false, &h0);
-    for (int k = 0; k < 3; k++)
-        for (int s = -1; s <= 1; s += 2) {
-            double o2[3] = { o[0], o[1], o[2] };
-            o2[k] += s * eps;
-            bool hit = rt_backend_double.probe(o2, d, false, &h);
-            if (hit != base || (hit && fabs(h.t - h0.t) > dt))
-                return true;
-            for (int m = 0; hit && m < 3; m++)
-                if (fabs(h.normal[m] - h0.normal[m]) > 0.1)
-                    return true;
-        }
-    return false;
 }
 
 /* Rays aimed exactly at the shared edges and corners of closed meshes
@@ -256,7 +239,7 @@ int main(int argc, char **argv)
                 apart |= fabs(hf.normal[k] - hd.normal[k]) > 0.1;
             if (f != g || apart) {
                 mismatch[kind]++;
-                if (!flips(o, d, SILHOUETTE * size, 0.05 * size)) {
+                if (!probe_double_jumps(o, d, SILHOUETTE * size, 0.05 * size)) {
                     unexcused[kind]++;
                     if (getenv("FUZZ_VERBOSE"))
                         printf("    %s size %.4g: fixed %d t %.6g n %.3f %.3f %.3f / double %d t %.6g n %.3f %.3f %.3f\n",

@@ -35,6 +35,20 @@ static void emit_mat(FILE *f, const real_t m[3][3])
         fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }%s", m[i][0], m[i][1], m[i][2], i < 2 ? ", " : " }");
 }
 
+/* A table of vectors (vertices, patch normals); nothing for an empty one. */
+static void emit_vec_table(FILE *f, const char *name, const vec3_t *v, uint32_t n)
+{
+    if (!n)
+        return;
+    fprintf(f, "static const vec3_t %s[%" PRIu32 "] TABLE = {\n", name, n);
+    for (uint32_t i = 0; i < n; i++) {
+        fprintf(f, "    ");
+        emit_vec(f, v[i]);
+        fprintf(f, ",\n");
+    }
+    fprintf(f, "};\n\n");
+}
+
 static void emit_wide(FILE *f, real_wide_t w) { fprintf(f, "INT64_C(%" PRId64 ")", w); }
 
 static void emit_tables(FILE *f, const scene_t *sc)
@@ -108,24 +122,8 @@ static void emit_tables(FILE *f, const scene_t *sc)
         }
         fprintf(f, "};\n\n");
     }
-    if (sc->n_vertices) {
-        fprintf(f, "static const vec3_t vertices[%" PRIu32 "] TABLE = {\n", sc->n_vertices);
-        for (uint32_t i = 0; i < sc->n_vertices; i++) {
-            fprintf(f, "    ");
-            emit_vec(f, sc->vertices[i]);
-            fprintf(f, ",\n");
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_normals) {
-        fprintf(f, "static const vec3_t normals[%" PRIu32 "] TABLE = {\n", sc->n_normals);
-        for (uint32_t i = 0; i < sc->n_normals; i++) {
-            fprintf(f, "    ");
-            emit_vec(f, sc->normals[i]);
-            fprintf(f, ",\n");
-        }
-        fprintf(f, "};\n\n");
-    }
+    emit_vec_table(f, "vertices", sc->vertices, sc->n_vertices);
+    emit_vec_table(f, "normals", sc->normals, sc->n_normals);
 
     if (sc->n_xforms) {
         fprintf(f, "static const xform_t xforms[%" PRIu32 "] TABLE = {\n", sc->n_xforms);
