@@ -1,4 +1,4 @@
-/* camera.c - eye rays as ../shared/docs/shading-model.md defines them. */
+/* camera.c - eye rays as docs/shading-model.md defines them. */
 #include "camera.h"
 
 const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
@@ -30,6 +30,8 @@ ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
     real_t b = r_from_wide(c->half_step * (2 * j - (c->ny - 1)));
     ray_t r;
     r.origin = c->eye;
+    r.from = PRIM_NONE;
+    r.from_far = false;
     real_t d[3];
     r_unit3(r_to_wide(c->w.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x),
             r_to_wide(c->w.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y),

@@ -58,7 +58,7 @@ static bool quotient_below(real_t num, real_t den, real_t limit, real_t *q)
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
  * a quadratic a t^2 + 2 b t + c = 0 in the ray parameter. */
-bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
+bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool far_only)
 {
     /* early rejection against the bounding sphere, as for spheres */
     vec3_t l = v3_sub(c->bound_centre, r->origin);
@@ -102,6 +102,12 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         roots[0] = r_add_sat(tv, -h);
         roots[1] = r_add_sat(tv, h);
         n = 2;
+        if (far_only) { /* the root nearer the origin is the surface it starts on */
+            if (r_abs(roots[0]) > r_abs(roots[1]))
+                roots[1] = roots[0];
+            roots[0] = roots[1];
+            n = 1;
+        }
     } else {
         /* Nearly parallel to a surface line: the cancellation-safe pair
          * q / a and c / q of a t^2 + 2 b t + c. */
@@ -113,7 +119,8 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t)
         real_t q = b > 0 ? -r_add_sat(b, h) : r_add_sat(h, -b);
         if (quotient_below(q, a, *t, &roots[n]))
             n++;
-        if (quotient_below(cc, q, *t, &roots[n]))
+        /* a ray starting on the surface has cc = 0: c / q is its own root */
+        if (!far_only && quotient_below(cc, q, *t, &roots[n]))
             n++;
     }
     if (n == 2 && roots[1] < roots[0]) {

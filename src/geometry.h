@@ -12,21 +12,18 @@
 #include <stdbool.h>
 
 #include "scene.h"
+#include "tolerance.h"
 
+/* A secondary ray starts on the surface of primitive `from` (PRIM_NONE for
+ * eye rays and rays leaving solids). Leaving that primitive's outside, or
+ * any plane, it cannot meet it again and skips it; going into a sphere or
+ * cone (from_far) it meets it only at the far root. This replaces a
+ * surface offset (tolerance.h). */
 typedef struct {
     vec3_t origin, dir;
+    prim_ref_t from;
+    bool from_far;
 } ray_t;
-
-/* Padding of every bounding box (BVH nodes, polygon boxes, shapes). It
- * also makes the slab test conservative without widening its intervals:
- * a reciprocal is good to 2^-(F+1) relative, so over the longest possible
- * ray (64 units: the reader keeps positions within 16) a slab plane moves
- * by less than 2^(5-F), which this padding exceeds. */
-#if RT_BACKEND_FIXED && FX_FRAC_BITS < 18
-#define RT_BOX_SLACK R_RATIO(1, (int32_t)1 << (FX_FRAC_BITS - 6))
-#else
-#define RT_BOX_SLACK R_RATIO(1, 4096)
-#endif
 
 static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin, t, r->dir); }
 
@@ -40,8 +37,9 @@ bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count);
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
                          uint32_t normals, uint16_t material);
 
-bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t);
-bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t);
+/* far_only: the ray starts on this surface going in; only the far root. */
+bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only);
+bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool far_only);
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
                      real_t *t);
 

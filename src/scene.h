@@ -67,6 +67,7 @@ typedef uint32_t prim_ref_t;
 #define PRIM_KIND(ref) ((ref) >> 24)
 #define PRIM_INDEX(ref) ((ref) & 0xFFFFFFu)
 enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON, PRIM_OBJECT };
+#define PRIM_NONE UINT32_MAX
 
 /* ---- solids beyond NFF (src/solid.c) --------------------------------- */
 

@@ -13,16 +13,7 @@
 
 #include "solid.h"
 
-/* Margin of the parallel-axis test (plus the drift d * tmax). */
-#define SLAB_EPS_ABS R_ULPS(4)
-/* Axes where |d| is below this would have a reciprocal too large for the
- * 64-bit products (|1/d| < 2^(29-F)); they are handled as parallel plus
- * the drift d * tmax. */
-#if !RT_BACKEND_FIXED
-#define SLAB_PARALLEL R_RATIO(1, 8192)
-#else
-#define SLAB_PARALLEL R_RATIO(1, (int64_t)1 << (29 - FX_FRAC_BITS))
-#endif
+/* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h). */
 
 typedef struct {
     vec3_t origin;
@@ -37,7 +28,7 @@ static void slab_init(slab_ray_t *s, const ray_t *r)
     s->origin = r->origin;
     for (int a = 0; a < 3; a++) {
         s->dir_abs[a] = r_abs(d[a]);
-        s->parallel[a] = s->dir_abs[a] < SLAB_PARALLEL;
+        s->parallel[a] = s->dir_abs[a] < RT_SLAB_PARALLEL;
         s->negative[a] = d[a] < 0;
         s->inv[a] = s->parallel[a] ? 0 : r_recip(d[a]);
     }
@@ -49,7 +40,7 @@ static RT_INLINE bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmi
                                  real_t tmax, real_wide_t *lo, real_wide_t *hi)
 {
     if (s->parallel[a]) {
-        real_t drift = r_mul(s->dir_abs[a], tmax) + SLAB_EPS_ABS;
+        real_t drift = r_mul(s->dir_abs[a], tmax) + RT_SLAB_MARGIN;
         return o >= r_add_sat(bmin, -drift) && o <= r_add_sat(bmax, drift);
     }
     real_t near = s->negative[a] ? bmax : bmin, far = s->negative[a] ? bmin : bmax;
@@ -78,6 +69,9 @@ static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t t
                      rt_stats_t *st, hit_t *h)
 {
     uint32_t i = PRIM_INDEX(ref);
+    bool self = ref == r->from;
+    if (self && !r->from_far)
+        return false; /* leaving its outside, or a plane: cannot meet it again */
     switch (PRIM_KIND(ref)) {
 #if RT_USE_OBJECTS
     case PRIM_OBJECT: {
@@ -98,12 +92,12 @@ static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t t
 #if RT_USE_SPHERES
     case PRIM_SPHERE:
         st->tests_sphere++;
-        return ray_hit_sphere(&sc->spheres[i], r, tmin, t);
+        return ray_hit_sphere(&sc->spheres[i], r, tmin, t, self);
 #endif
 #if RT_USE_CONES
     case PRIM_CONE:
         st->tests_cone++;
-        return ray_hit_cone(&sc->cones[i], r, tmin, t);
+        return ray_hit_cone(&sc->cones[i], r, tmin, t, self);
 #endif
 #if RT_USE_POLYGONS
     case PRIM_POLYGON:
@@ -111,7 +105,7 @@ static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t t
         return ray_hit_polygon(sc, &sc->polygons[i], r, tmin, t);
 #endif
     default:
-        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st, (void)h;
+        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st, (void)h, (void)self;
         return false;
     }
 }

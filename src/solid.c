@@ -99,7 +99,7 @@ static real_t corner_radius(vec3_t lo, vec3_t hi)
 {
     vec3_t c = v3(r_max(r_abs(lo.x), r_abs(hi.x)), r_max(r_abs(lo.y), r_abs(hi.y)),
                   r_max(r_abs(lo.z), r_abs(hi.z)));
-    return v3_length(c) + R_ULPS(16);
+    return v3_length(c) + RT_BOUND_PAD;
 }
 
 const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t hi)
@@ -128,7 +128,7 @@ const char *shape_init_torus(shape_t *s, real_t major, real_t minor)
         return "torus minor radius is zero";
     s->hi = v3(s->q[0] + s->q[1], s->q[0] + s->q[1], s->q[1]);
     s->lo = v3_neg(s->hi);
-    s->bound = s->q[0] + s->q[1] + R_ULPS(16);
+    s->bound = s->q[0] + s->q[1] + RT_BOUND_PAD;
     return 0;
 }
 
@@ -262,7 +262,7 @@ static bool box_interval(const oray_t *o, const vec3_t *lo, const vec3_t *hi, re
     for (unsigned i = 0; i < 3; i++) {
         real_t p = v3_axis(&o->p0, i), u = v3_axis(&o->u, i);
         real_t l = v3_axis(lo, i), h = v3_axis(hi, i);
-        if (r_abs(u) < R_RATIO(1, 1 << 12)) {
+        if (r_abs(u) < RT_OBJ_PARALLEL) {
             if (p < l || p > h)
                 return false;
             continue;
@@ -335,7 +335,7 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
     /* the inside of q as at most two intervals of sigma */
     real_t iv[2][2];
     int n = 0;
-    if (r_abs(alpha) < R_RATIO(1, 1 << 14)) {
+    if (r_abs(alpha) < RT_QUADRIC_LINEAR) {
         if (beta == 0) {
             if (gamma <= 0)
                 iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
@@ -400,8 +400,8 @@ static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
  * chord (it never steps over a surface), each root polished by up to three
  * Newton steps on the distance. At most TORUS_MAX_STEPS distance evaluations per
  * ray; a boundary is where the distance falls below TORUS_EPS. */
-#define TORUS_MAX_STEPS 128
-#define TORUS_EPS R_RATIO(1, 8192)
+#define TORUS_MAX_STEPS RT_TORUS_STEPS
+#define TORUS_EPS RT_TORUS_EPS
 
 static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
 {

@@ -10,7 +10,7 @@ const char *sphere_init(sphere_t *s, vec3_t centre, real_t radius, uint16_t mate
     return s->radius > 0 ? (const char *)0 : "sphere radius is zero";
 }
 
-bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t)
+bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only)
 {
     vec3_t l = v3_sub(s->centre, r->origin);
     real_t v = v3_dot(l, r->dir); /* distance to the point of closest approach */
@@ -27,7 +27,7 @@ bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t)
         return false;
     real_t h = r_wsqrt(disc);
     real_t t0 = v - h;
-    if (t0 <= tmin)
+    if (t0 <= tmin || far_only)
         t0 = v + h;
     if (t0 <= tmin || t0 >= *t)
         return false;

@@ -9,6 +9,8 @@ typedef struct {
     vec3_t n;        /* shading normal, facing the incoming ray */
     vec3_t n_out;    /* geometric normal, facing the incoming ray */
     bool entering;   /* D . Ng < 0 */
+    bool smooth;     /* a patch: n and n_out may disagree */
+    prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
     const material_t *m;
 } surface_t;
 
@@ -18,6 +20,8 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     vec3_t ng, n;
     uint16_t mat;
     s.point = ray_at(ray, h->t);
+    s.ref = PRIM_REF(h->kind, h->index);
+    s.smooth = false;
     switch (h->kind) {
 #if RT_USE_SPHERES
     case PRIM_SPHERE:
@@ -37,12 +41,14 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
         if (h->flip) /* a subtracted solid's surface faces the other way */
             ng = n = v3_neg(ng);
         mat = sc->shapes[h->shape].material;
+        s.ref = PRIM_NONE;
         break;
 #endif
     default: {
         const polygon_t *p = &sc->polygons[h->index];
         ng = p->normal;
         n = polygon_shading_normal(sc, p, s.point);
+        s.smooth = p->normals != POLY_NO_NORMALS;
         mat = p->material;
         break;
     }
@@ -54,6 +60,21 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     return s;
 }
 
+/* The start of a ray leaving surface s: to the side the incoming ray came
+ * from, or `through` it. Spheres and cones say whether it goes into them
+ * (from_far) or away (skipped); polygons are skipped; solids, which may be
+ * met again anywhere, offset the origin by their error bound instead. */
+static void leave(const surface_t *s, bool through, ray_t *out)
+{
+    out->origin = s->point;
+    out->from = s->ref;
+    out->from_far = PRIM_KIND(s->ref) != PRIM_POLYGON && through == s->entering;
+#if RT_USE_OBJECTS
+    if (s->ref == PRIM_NONE)
+        out->origin = v3_madd(s->point, through ? -RT_SOLID_OFFSET : RT_SOLID_OFFSET, s->n_out);
+#endif
+}
+
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
 {
     const scene_t *sc = tr->scene;
@@ -63,7 +84,8 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     colour_t kdc = v3_scale(m->colour, m->kd);
     colour_t c = v3_scale(kdc, I); /* ambient */
 #if RT_USE_SHADOWS
-    vec3_t from = v3_madd(s->point, RT_SURFACE_OFFSET, s->n_out);
+    ray_t shadow;
+    leave(s, false, &shadow);
     for (uint32_t i = 0; i < sc->n_lights; i++) {
         const light_t *l = &sc->lights[i];
         vec3_t to_light = v3_sub(l->pos, s->point);
@@ -71,9 +93,15 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         real_t ndl = v3_dot(s->n, ldir);
         if (ndl <= 0)
             continue;
-        ray_t shadow = { from, ldir };
+#if RT_USE_PATCHES
+        /* the light must also be above the geometric surface (the patch
+         * policy of docs/shading-model.md) */
+        if (s->smooth && v3_dot(s->n_out, ldir) <= 0)
+            continue;
+#endif
+        shadow.dir = ldir;
         tr->stats->shadow_rays++;
-        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, from)), tr->stats))
+        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), tr->stats))
             continue;
         colour_t lit = v3_scale(kdc, ndl);
 #if RT_USE_SPECULAR
@@ -112,7 +140,7 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 /* The mirror ray leaving s. */
 RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
 {
-    out->origin = v3_madd(s->point, RT_SURFACE_OFFSET, s->n_out);
+    leave(s, false, out);
     out->dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s->n));
 }
 #endif
@@ -126,7 +154,7 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
     if (sin2_t > R_ONE)
         return false;
     real_t cos_t = r_sqrt(R_ONE - sin2_t);
-    out->origin = v3_madd(s->point, -RT_SURFACE_OFFSET, s->n_out);
+    leave(s, true, out);
     out->dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s->n));
     return true;
 }

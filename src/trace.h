@@ -1,4 +1,4 @@
-/* trace.h - Whitted shading of one ray (../shared/docs/shading-model.md). */
+/* trace.h - Whitted shading of one ray (docs/shading-model.md). */
 #ifndef TRACE_H
 #define TRACE_H
 
@@ -13,14 +13,6 @@ typedef struct {
     real_t min_weight;  /* adaptive depth: skip child rays whose share of
                          * the pixel falls below this; 0 = off */
 } tracer_t;
-
-/* Secondary rays start this far off the surface, on the side they leave
- * by, so rounding cannot make them hit their own surface. */
-#define RT_SURFACE_OFFSET R_RATIO(1, 2048)
-/* Nearest accepted hit distance: one unit of the last place. */
-#define RT_T_MIN R_ULPS(1)
-/* Farthest hit distance (the end of the fixed range). */
-#define RT_T_FAR R_BIG
 
 /* Colour seen along `ray`; `weight` is its share of the pixel (1 for an
  * eye ray, times Ks or T at each bounce). */

@@ -100,6 +100,8 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     double w = world_per_unit();
     r.origin = v3(to_real(o[0] / w), to_real(o[1] / w), to_real(o[2] / w));
     r.dir = v3_unit(v3(to_real(d[0]), to_real(d[1]), to_real(d[2])));
+    r.from = PRIM_NONE;
+    r.from_far = false;
     rt_stats_t st = { 0 };
     hit_t h;
     h.t = RT_T_FAR;

@@ -1,0 +1,108 @@
+/*
+ * tolerance.h - every robustness epsilon of the core, per numeric backend.
+ *
+ * Lengths are in scene units after the reader's power-of-two scale, so the
+ * scene's largest coordinate lies in [8, 16) and no ray is longer than 64.
+ *
+ * - double (the reference) renders the model of docs/shading-model.md:
+ *   its epsilons come from double precision, about 1e-9 of the scene's
+ *   extent or less, never from the fixed format;
+ * - fixed and float use the smallest values their rounding needs, with
+ *   the derivation beside each;
+ * - RT_TOLERANCES_FIXED=1 gives the double backend the fixed build's
+ *   values (`rt --double-ftol`), so an image's error against the
+ *   reference splits into "number format" and "tolerances".
+ *
+ * Secondary rays need no surface offset where geometry rules a self-hit
+ * out (trace.c, ray_from_t): a plane is never met again by a ray leaving
+ * it, a ray leaving a sphere's or cone's outside never comes back, and a
+ * ray going in meets that surface only at its far root. Only solids
+ * (quadrics, tori, boxes, CSG) keep an offset, RT_SOLID_OFFSET.
+ */
+#ifndef TOLERANCE_H
+#define TOLERANCE_H
+
+#include "real.h"
+
+#ifndef RT_TOLERANCES_FIXED
+#define RT_TOLERANCES_FIXED 0
+#endif
+_Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED is for the double backend");
+
+#if RT_BACKEND_FIXED || RT_TOLERANCES_FIXED
+/* ---- fixed point (1 ulp = 2^-F; R_ULPS counts them in any backend) ---- */
+
+/* Nearest accepted hit: one unit of the last place. */
+#define RT_T_MIN R_ULPS(1)
+/* Bounding-box padding: a reciprocal is good to 2^-(F+1) relative, so over
+ * the longest ray (64) a slab plane moves by less than 2^(5-F), which this
+ * exceeds; it also covers a polygon's rounded inside test. */
+#if FX_FRAC_BITS < 18
+#define RT_BOX_SLACK R_RATIO(1, (int32_t)1 << (FX_FRAC_BITS - 6))
+#else
+#define RT_BOX_SLACK R_RATIO(1, 4096)
+#endif
+/* BVH slab test: axes with |d| below this would have a reciprocal too
+ * large for the 64-bit products (|1/d| < 2^(29-F)); they are treated as
+ * parallel, plus the drift d * tmax and this margin. */
+#define RT_SLAB_PARALLEL R_RATIO(1, (int64_t)1 << (29 - FX_FRAC_BITS))
+#define RT_SLAB_MARGIN R_ULPS(4)
+/* Solids, in object space (solid.c): a box axis whose direction is below
+ * this is parallel (its reciprocal would leave the range); a quadric whose
+ * sigma^2 coefficient is below this is solved as linear; bounding spheres
+ * are padded by this; the torus marches to within RT_TORUS_EPS of its
+ * surface in at most RT_TORUS_STEPS distance evaluations. */
+#define RT_OBJ_PARALLEL R_RATIO(1, 1 << 12)
+#define RT_QUADRIC_LINEAR R_RATIO(1, 1 << 14)
+#define RT_BOUND_PAD R_ULPS(16)
+#define RT_TORUS_EPS R_RATIO(1, 8192)
+#define RT_TORUS_STEPS 128
+/* Origin offset of secondary rays leaving a solid, along the geometric
+ * normal. Hit point error of a solid: the object-space ray is the world
+ * ray through M^-1 (each component rounded to 1/2 ulp, |M^-1| <= 64 by the
+ * reader's scale limits, so <= 2^6 * 0.87 ulp), its roots are refined to
+ * 1/2 ulp of sigma (quadrics) or 4 * 2^-13 / 3 Newton steps (torus, <= 2
+ * ulp after polishing in tests/test_geometry.c), and world t = s / k adds
+ * 1/2 ulp. The bound, measured as the hit point's distance from the exact
+ * surface, is asserted by test_geometry ("offset bound"); this is twice
+ * the largest measured value, rounded up to a power of two. */
+#define RT_SOLID_OFFSET R_ULPS(64)
+
+#elif RT_BACKEND_FLOAT
+/* ---- single precision: a float's unit in the last place at the scene's
+ * largest coordinate (16) is 2^-20, the same length as a Q11.20 ulp, and
+ * finer below it; the fixed derivations carry over with U for the ulp. */
+#define RT_FLOAT_ULP ((real_t)0x1p-20f)
+#define RT_T_MIN RT_FLOAT_ULP
+#define RT_BOX_SLACK R_RATIO(1, 4096)
+#define RT_SLAB_PARALLEL ((real_t)0x1p-40f)
+#define RT_SLAB_MARGIN (4 * RT_FLOAT_ULP)
+#define RT_OBJ_PARALLEL ((real_t)0x1p-40f)
+#define RT_QUADRIC_LINEAR ((real_t)0x1p-40f)
+#define RT_BOUND_PAD (16 * RT_FLOAT_ULP)
+#define RT_TORUS_EPS ((real_t)0x1p-13f)
+#define RT_TORUS_STEPS 128
+#define RT_SOLID_OFFSET (64 * RT_FLOAT_ULP)
+
+#else
+/* ---- double, the reference: a double's ulp at 16 is 2^-48; every length
+ * below is at least 2^8 of those (rounding) and at most ~1e-9 of the
+ * extent (so the image is the model's). */
+#define RT_T_MIN ((real_t)0x1p-40)
+#define RT_BOX_SLACK ((real_t)0x1p-30)
+#define RT_SLAB_PARALLEL ((real_t)0x1p-60)
+#define RT_SLAB_MARGIN ((real_t)0x1p-40)
+#define RT_OBJ_PARALLEL ((real_t)0x1p-60)
+#define RT_QUADRIC_LINEAR ((real_t)0x1p-40)
+#define RT_BOUND_PAD ((real_t)0x1p-30)
+/* marching stops 2^-24 from the surface (Newton then polishes to full
+ * precision); the grazing rays that need more steps get them */
+#define RT_TORUS_EPS ((real_t)0x1p-24)
+#define RT_TORUS_STEPS 4096
+#define RT_SOLID_OFFSET ((real_t)0x1p-30)
+#endif
+
+/* Farthest hit distance (the end of the fixed range). */
+#define RT_T_FAR R_BIG
+
+#endif
