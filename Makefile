@@ -11,9 +11,10 @@
 #                   scaling, code size with and without pruning (< 15 min)
 #   make bench-quick  a subset of the first (< 2 min)
 #
-# The core (src/) is compiled once per numeric backend; each copy is
+# The core (src/) is compiled once per numeric backend (fixed, double,
+# float, and double with the fixed build's tolerances); each copy is
 # partially linked with platform/hosted/backend.c into one object that
-# exports only its rt_backend_t, so `rt` carries both builds.
+# exports only its rt_backend_t, so `rt` carries every build.
 
 SCENE ?= scenes/showpiece.nff
 SIZE  ?= 128x128
@@ -62,17 +63,18 @@ define host_rules
 $(call core_rules,$(1),fixed,)
 $(call core_rules,$(1),double,-DRT_BACKEND_DOUBLE=1)
 $(call core_rules,$(1),float,-DRT_BACKEND_FLOAT=1)
+$(call core_rules,$(1),double_ftol,-DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1)
 
 build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lz -lm
 
-build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o tests/testlib.h tests/probe_jump.h
+build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o tests/testlib.h tests/probe_jump.h
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
-	    -o $$@ $$< build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o -lm
+	    -o $$@ $$< build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o -lm
 endef
 
 $(eval $(call host_rules,host))

@@ -410,10 +410,10 @@ static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
         real_t slope = v3_dot(torus_normal_obj(s, x), o->u);
         if (r_abs(slope) < R_RATIO(1, 64))
             break; /* grazing: Newton would wander */
-        real_t step = r_div(torus_sdf(s, x), slope);
-        if (r_abs(step) > 4 * TORUS_EPS)
-            break;
-        sigma -= step;
+        real_t d = torus_sdf(s, x);
+        if (r_abs(d) > 4 * TORUS_EPS)
+            break; /* wandered off: keep the last point near the surface */
+        sigma -= r_div(d, slope);
     }
     return sigma;
 }

@@ -102,6 +102,11 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_SOLID_OFFSET ((real_t)0x1p-30)
 #endif
 
+/* A torus boundary is found to within RT_TORUS_EPS before Newton polishing,
+ * whose steps are limited to 4 RT_TORUS_EPS (solid.c): rays leaving a torus
+ * start beyond both. */
+#define RT_TORUS_OFFSET (4 * RT_TORUS_EPS)
+
 /* Farthest hit distance (the end of the fixed range). */
 #define RT_T_FAR R_BIG
 

@@ -11,6 +11,7 @@ typedef struct {
     bool entering;   /* D . Ng < 0 */
     bool smooth;     /* a patch: n and n_out may disagree */
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
+    real_t offset;   /* a solid's origin offset for rays leaving it */
     const material_t *m;
 } surface_t;
 
@@ -22,6 +23,7 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     s.point = ray_at(ray, h->t);
     s.ref = PRIM_REF(h->kind, h->index);
     s.smooth = false;
+    s.offset = 0;
     switch (h->kind) {
 #if RT_USE_SPHERES
     case PRIM_SPHERE:
@@ -42,6 +44,7 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
             ng = n = v3_neg(ng);
         mat = sc->shapes[h->shape].material;
         s.ref = PRIM_NONE;
+        s.offset = sc->shapes[h->shape].kind == SHAPE_TORUS ? RT_TORUS_OFFSET : RT_SOLID_OFFSET;
         break;
 #endif
     default: {
@@ -71,7 +74,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
     out->from_far = PRIM_KIND(s->ref) != PRIM_POLYGON && through == s->entering;
 #if RT_USE_OBJECTS
     if (s->ref == PRIM_NONE)
-        out->origin = v3_madd(s->point, through ? -RT_SOLID_OFFSET : RT_SOLID_OFFSET, s->n_out);
+        out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
 #endif
 }
 
@@ -137,25 +140,47 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 }
 
 #if RT_USE_REFLECTION
-/* The mirror ray leaving s. */
+/* The mirror ray leaving s. On a patch, a mirror direction about the
+ * shading normal that would go into the geometric surface is taken about
+ * the geometric normal instead (the patch policy). */
 RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
 {
     leave(s, false, out);
     out->dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s->n));
+#if RT_USE_PATCHES
+    if (s->smooth && v3_dot(out->dir, s->n_out) <= 0)
+        out->dir = v3_unit(v3_madd(ray->dir, -2 * v3_dot(ray->dir, s->n_out), s->n_out));
+#endif
 }
 #endif
 
 #if RT_USE_REFRACTION
-/* The refracted ray by Snell's law; false on total internal reflection. */
-RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+/* Snell's law about the unit normal n (n . d = -cos_i < 0); false on
+ * total internal reflection. */
+static bool snell(vec3_t d, vec3_t n, real_t cos_i, real_t eta, vec3_t *out)
 {
-    real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior; /* n1 / n2 */
     real_t sin2_t = r_mul(r_mul(eta, eta), R_ONE - r_mul(cos_i, cos_i));
     if (sin2_t > R_ONE)
         return false;
     real_t cos_t = r_sqrt(R_ONE - sin2_t);
+    *out = v3_unit(v3_madd(v3_scale(d, eta), r_mul(eta, cos_i) - cos_t, n));
+    return true;
+}
+
+/* The refracted ray leaving s; false on total internal reflection. On a
+ * patch, a direction that would stay on the incoming side of the
+ * geometric surface is refracted about the geometric normal instead. */
+RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+{
+    real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior; /* n1 / n2 */
+    if (!snell(ray->dir, s->n, cos_i, eta, &out->dir))
+        return false;
+#if RT_USE_PATCHES
+    if (s->smooth && v3_dot(out->dir, s->n_out) >= 0 &&
+        !snell(ray->dir, s->n_out, -v3_dot(ray->dir, s->n_out), eta, &out->dir))
+        return false;
+#endif
     leave(s, true, out);
-    out->dir = v3_unit(v3_madd(v3_scale(ray->dir, eta), r_mul(eta, cos_i) - cos_t, s->n));
     return true;
 }
 #endif

@@ -564,6 +564,16 @@ static Vec normal_at(const Prim *p, Vec P, Vec *ng)
 
 /* ---- shading ---------------------------------------------------------- */
 
+/* Snell's law about n (n . d < 0); 0 on total internal reflection. */
+static int refract(Vec d, Vec n, double eta, Vec *out)
+{
+    double ci = -dot(d, n), k = 1 - eta * eta * (1 - ci * ci);
+    if (k < 0)
+        return 0;
+    *out = norm(add(mul(d, eta), mul(n, eta * ci - sqrt(k))));
+    return 1;
+}
+
 static Vec trace(Vec o, Vec d, int depth)
 {
     double t, I = nlights ? sqrt((double)nlights) / (2.0 * (double)nlights) : 0;
@@ -604,15 +614,23 @@ static Vec trace(Vec o, Vec d, int depth)
     if (depth < max_depth) {
         if (m->ks > 0) {
             Vec r = sub(d, mul(n, 2 * dot(d, n)));
+            /* patch policy: a mirror ray that would enter the geometric
+             * surface is mirrored about the geometric normal instead */
+            if (dot(r, ngo) <= 0)
+                r = sub(d, mul(ngo, 2 * dot(d, ngo)));
             col = add(col, mul(trace(out, norm(r), depth + 1), m->ks));
         }
         if (m->t > 0) {
-            double eta = entering ? 1 / m->ior : m->ior, ci = -dot(d, n);
-            double k = 1 - eta * eta * (1 - ci * ci);
-            if (k >= 0) { /* else total internal reflection: no ray */
-                Vec dir = add(mul(d, eta), mul(n, eta * ci - sqrt(k)));
+            double eta = entering ? 1 / m->ior : m->ior;
+            Vec dir;
+            /* patch policy: a refracted ray must cross the geometric
+             * surface; if it would not, refract about Ng instead */
+            int ok = refract(d, n, eta, &dir);
+            if (ok && dot(dir, ngo) >= 0)
+                ok = refract(d, ngo, eta, &dir);
+            if (ok) { /* else total internal reflection: no ray */
                 Vec in = sub(P, mul(ngo, eps_offset));
-                col = add(col, mul(trace(in, norm(dir), depth + 1), m->t));
+                col = add(col, mul(trace(in, dir, depth + 1), m->t));
             }
         }
     }

@@ -9,7 +9,12 @@
 #include "solid.h"
 #include "trace.h"
 
-#if RT_BACKEND_DOUBLE
+#if RT_BACKEND_DOUBLE && RT_TOLERANCES_FIXED
+#define BACKEND_SYMBOL rt_backend_double_ftol
+#define BACKEND_NAME "double-ftol"
+static real_t to_real(double v) { return v; }
+static double to_double(real_t v) { return v; }
+#elif RT_BACKEND_DOUBLE
 #define BACKEND_SYMBOL rt_backend_double
 static real_t to_real(double v) { return v; }
 static double to_double(real_t v) { return v; }
@@ -25,6 +30,9 @@ static real_t to_real(double v)
     return (real_t)(s < 0 ? s - 0.5 : s + 0.5);
 }
 static double to_double(real_t v) { return (double)v / FX_ONE; }
+#endif
+#ifndef BACKEND_NAME
+#define BACKEND_NAME R_BACKEND_NAME
 #endif
 
 static scene_store_t store;
@@ -160,6 +168,6 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    R_BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
+    BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
     pixel_angle, DIRECTION_RESOLUTION,
 };

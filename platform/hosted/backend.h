@@ -1,9 +1,10 @@
 /*
  * backend.h - one numeric build of the core, as the hosted tools see it.
  *
- * The core is compiled twice (fixed and double); each copy is linked with
- * backend.c into one relocatable object that exports only its
- * rt_backend_t, so both live in one program without symbol clashes.
+ * The core is compiled once per backend (fixed, double, float, and double
+ * with the fixed build's tolerances); each copy is linked with backend.c
+ * into one relocatable object that exports only its rt_backend_t, so all
+ * live in one program without symbol clashes.
  * Nothing here depends on real_t: values cross as double.
  */
 #ifndef BACKEND_H
@@ -21,14 +22,14 @@
 
 typedef struct {
     double t;
-    int64_t t_raw;      /* t exactly as the backend holds it (fixed: Q16.16 units) */
+    int64_t t_raw;      /* t exactly as the backend holds it (fixed: units of 2^-FX_FRAC_BITS) */
     double normal[3];   /* shading normal as the tracer uses it (unit, not flipped) */
     int kind;           /* 0 sphere, 1 cone, 2 polygon/patch */
     uint32_t index;
 } probe_hit_t;
 
 typedef struct {
-    const char *name;  /* "fixed" or "double" */
+    const char *name;  /* "fixed", "double", "float" or "double-ftol" */
     /* Read NFF text into the backend's own static scene. */
     bool (*load)(const char *text, size_t len, rt_error_t *err);
     void (*resolution)(uint16_t *width, uint16_t *height);
@@ -58,5 +59,6 @@ typedef struct {
 extern const rt_backend_t rt_backend_fixed;
 extern const rt_backend_t rt_backend_double;
 extern const rt_backend_t rt_backend_float;
+extern const rt_backend_t rt_backend_double_ftol; /* double, the fixed build's tolerances */
 
 #endif

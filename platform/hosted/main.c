@@ -24,7 +24,9 @@ static const char usage_text[] =
     "  -o, --output FILE   output image; the format follows the extension\n"
     "  --size WxH          image size (default: the scene's resolution)\n"
     "  --fixed             fixed-point build of the core (default)\n"
-    "  --double            double-precision reference build\n"
+    "  --double            double-precision build: the exact reference\n"
+    "  --double-ftol       double precision with the fixed build's tolerances\n"
+    "                      (splits the fixed build's error: format vs tolerances)\n"
     "  --float             single-precision build (for comparison)\n"
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
     "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
@@ -225,6 +227,8 @@ static int cmd_render(int argc, char **argv)
             be = &rt_backend_fixed;
         } else if (!strcmp(a, "--double")) {
             be = &rt_backend_double;
+        } else if (!strcmp(a, "--double-ftol")) {
+            be = &rt_backend_double_ftol;
         } else if (!strcmp(a, "--float")) {
             be = &rt_backend_float;
         } else if (!strcmp(a, "--depth")) {
