@@ -67,6 +67,10 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
  * surface, is asserted by test_geometry ("offset bound"); this is twice
  * the largest measured value, rounded up to a power of two. */
 #define RT_SOLID_OFFSET R_ULPS(64)
+/* Rays leaving a polygon skip it, and the fixed build computes a plane's
+ * hit exactly in 64 bits before one rounding (<= 1 ulp from the plane), so
+ * a neighbour sharing an edge is never met by rounding: no offset. */
+#define RT_PLANE_OFFSET 0
 
 #elif RT_BACKEND_FLOAT
 /* ---- single precision: a float's unit in the last place at the scene's
@@ -83,6 +87,11 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_TORUS_EPS ((real_t)0x1p-13f)
 #define RT_TORUS_STEPS 128
 #define RT_SOLID_OFFSET (64 * RT_FLOAT_ULP)
+/* A float plane distance N . O - c rounds each of its three products and
+ * sums (|O| <= 32): up to 3 * 32 * 2^-24 = 6 ulps off the plane, so a
+ * neighbour sharing an edge could be met; rays leaving a polygon start
+ * beyond that. */
+#define RT_PLANE_OFFSET (8 * RT_FLOAT_ULP)
 
 #else
 /* ---- double, the reference: a double's ulp at 16 is 2^-48; every length
@@ -100,6 +109,7 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_TORUS_EPS ((real_t)0x1p-24)
 #define RT_TORUS_STEPS 4096
 #define RT_SOLID_OFFSET ((real_t)0x1p-30)
+#define RT_PLANE_OFFSET 0
 #endif
 
 /* A torus boundary is found to within RT_TORUS_EPS before Newton polishing,

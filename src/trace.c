@@ -76,6 +76,10 @@ static void leave(const surface_t *s, bool through, ray_t *out)
     if (s->ref == PRIM_NONE)
         out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
 #endif
+#if RT_BACKEND_FLOAT
+    if (PRIM_KIND(s->ref) == PRIM_POLYGON)
+        out->origin = v3_madd(s->point, through ? -RT_PLANE_OFFSET : RT_PLANE_OFFSET, s->n_out);
+#endif
 }
 
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
