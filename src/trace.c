@@ -100,14 +100,14 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         real_t ndl = v3_dot(s->n, ldir);
         if (ndl <= 0)
             continue;
+        tr->stats->shadow_rays++;
 #if RT_USE_PATCHES
-        /* the light must also be above the geometric surface (the patch
-         * policy of docs/shading-model.md) */
+        /* the patch policy of docs/shading-model.md: a light below the
+         * geometric surface is blocked by the patch itself (at t = 0) */
         if (s->smooth && v3_dot(s->n_out, ldir) <= 0)
             continue;
 #endif
         shadow.dir = ldir;
-        tr->stats->shadow_rays++;
         if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), tr->stats))
             continue;
         colour_t lit = v3_scale(kdc, ndl);

@@ -3,6 +3,9 @@
 # brute-force double-precision tracer written from docs/shading-model.md
 # alone. Every SPD size-1 and size-2 scene without patches is rendered at
 # 128x128, depth 5, by both; the double build must reach PSNR >= 70 dB.
+# The teapots (smooth patches, the patch policy of docs/shading-model.md)
+# must reach 55 dB: the two tracers may pick different fan triangles on
+# coplanar faces, which changes a few pixels.
 # Prints one line of figures per scene and "name: N passed, M failed".
 RT=${1:-build/asan/rt}
 OUT=${2:-build/asan/test-reference}
@@ -26,11 +29,13 @@ if ! ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/ref_tracer.c -
     echo "reference-tests: 0 passed, 1 failed"
     exit 1
 fi
-for s in balls-1 balls-2 gears-1 rings-1 rings-2 tetra-1 tetra-2; do
+for s in balls-1 balls-2 gears-1 rings-1 rings-2 tetra-1 tetra-2 teapot-1 teapot-2; do
     r="$OUT/$s-ref.ppm" d="$OUT/$s-double.png"
+    min=$PSNR_MIN
+    case $s in teapot-*) min=55 ;; esac
     if "$REF" scenes/spd/$s.nff -o "$r" --size $SIZE --depth $DEPTH 2>"$OUT/$s.err" &&
        "$RT" scenes/spd/$s.nff -o "$d" --size $SIZE --depth $DEPTH --double --quiet 2>>"$OUT/$s.err"; then
-        check "$s" "$RT" compare "$r" "$d" --psnr-min $PSNR_MIN
+        check "$s" "$RT" compare "$r" "$d" --psnr-min $min
     else
         fail=$((fail + 1)); printf '  FAIL  %-28s render failed: %s\n' "$s" "$(cat "$OUT/$s.err")"
     fi
