@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Numerical stress suite: the fixed build against the double build where
-fixed point is weakest (make stress; `--quick` runs inside make test).
+"""Numerical stress suite: the fixed build against the exact double
+reference (tolerances from double precision) where fixed point is weakest (make stress; `--quick` runs inside make test).
 
 Every image case renders a generated scene with the fixed and the double
 build of `rt` built with FX_COUNT_SATURATIONS=1 and sanitisers, and checks

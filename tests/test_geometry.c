@@ -34,32 +34,33 @@ typedef struct {
     const char *name;
     const char *body;
     double extent;   /* rays aim inside a cube of this half-size */
+    double offset_ulps; /* origin offset of rays leaving it (tolerance.h); 0: none */
 } test_shape_t;
 
 static const test_shape_t shapes[] = {
-    { "sphere", "s 0.3 -0.2 0.1 1.5\n", 1.6 },
-    { "small sphere", "s 0.01 0.02 0 0.05\n", 0.06 },
-    { "cylinder", "c 0 0 -1 0.5 0.2 0.3 1.2 0.5\n", 1.3 },
-    { "cone", "c 0 0 -1 1.0 0 0 1 0.2\n", 1.2 },
-    { "cone to a point", "c -0.5 0 0 0.8 1 0.5 0.5 0\n", 1.2 },
-    { "triangle", "p 3\n-1 0 -1\n1 0.2 -1\n0 -0.3 1.2\n", 1.2 },
+    { "sphere", "s 0.3 -0.2 0.1 1.5\n", 1.6, 0 },
+    { "small sphere", "s 0.01 0.02 0 0.05\n", 0.06, 0 },
+    { "cylinder", "c 0 0 -1 0.5 0.2 0.3 1.2 0.5\n", 1.3, 0 },
+    { "cone", "c 0 0 -1 1.0 0 0 1 0.2\n", 1.2, 0 },
+    { "cone to a point", "c -0.5 0 0 0.8 1 0.5 0.5 0\n", 1.2, 0 },
+    { "triangle", "p 3\n-1 0 -1\n1 0.2 -1\n0 -0.3 1.2\n", 1.2, 0 },
     { "concave polygon",
-      "p 8\n0 0 1.5\n0.4 0 0.4\n1.5 0 0\n0.4 0 -0.4\n0 0 -1.5\n-0.4 0 -0.4\n-1.5 0 0\n-0.4 0 0.4\n", 1.5 },
-    { "patch triangle", "pp 3\n-1 0 -1 -0.3 -1 0\n1 0 -1 0.3 -1 0\n0 0.5 1 0 -1 0.4\n", 1.2 },
+      "p 8\n0 0 1.5\n0.4 0 0.4\n1.5 0 0\n0.4 0 -0.4\n0 0 -1.5\n-0.4 0 -0.4\n-1.5 0 0\n-0.4 0 0.4\n", 1.5, 0 },
+    { "patch triangle", "pp 3\n-1 0 -1 -0.3 -1 0\n1 0 -1 0.3 -1 0\n0 0.5 1 0 -1 0.4\n", 1.2, 0 },
     { "patch fan",
-      "pp 4\n-1 0 -1 -0.2 -1 -0.2\n1 0 -1 0.2 -1 -0.2\n1 0 1 0.2 -1 0.2\n-1 0 1 -0.2 -1 0.2\n", 1.2 },
-    { "box", "transform\nrotate 1 2 3 30\nbox -1 -0.5 -0.7 1 0.5 0.7\nend\n", 1.3 },
-    { "torus", "transform\nrotate 1 0 0 60\ntorus 1 0.35\nend\n", 1.4 },
-    { "ellipsoid", "transform\nrotate 0 1 1 40\nellipsoid 1.2 0.6 0.9\nend\n", 1.3 },
-    { "paraboloid", "transform\ntranslate 0 0 -0.8\nparaboloid 0.8 0.8 1.5\nend\n", 1.3 },
-    { "hyperboloid", "transform\nrotate 1 1 0 25\nhyperboloid 0.5 0.5 0.7 1\nend\n", 1.3 },
-    { "hyperboloid2", "hyperboloid2 0.4 0.4 0.4 1.2\n", 1.3 },
-    { "quadcone", "quadcone 0.6 0.6 1\n", 1.1 },
-    { "quadcylinder", "transform\nscale 1 0.5 1\nquadcylinder 0.7 0.7 1\nend\n", 1.1 },
-    { "general quadric", "quadric 1 2 1 0.5 0 0 0 0 0 -1 -1 -1 -1 1 1 1\n", 1.1 },
-    { "CSG difference", "difference\nbox -0.8 -0.8 -0.8 0.8 0.8 0.8\ns 0.8 -0.8 0.8 0.7\nend\n", 1.2 },
-    { "CSG intersection lens", "intersection\ns 0 -0.6 0 1\ns 0 0.6 0 1\nend\n", 1.0 },
-    { "CSG union", "union\ntransform\nrotate 1 0 0 90\ntorus 0.8 0.25\nend\nbox -0.3 -0.3 -1 0.3 0.3 1\nend\n", 1.2 },
+      "pp 4\n-1 0 -1 -0.2 -1 -0.2\n1 0 -1 0.2 -1 -0.2\n1 0 1 0.2 -1 0.2\n-1 0 1 -0.2 -1 0.2\n", 1.2, 0 },
+    { "box", "transform\nrotate 1 2 3 30\nbox -1 -0.5 -0.7 1 0.5 0.7\nend\n", 1.3, 64 },
+    { "torus", "transform\nrotate 1 0 0 60\ntorus 1 0.35\nend\n", 1.4, 512 },
+    { "ellipsoid", "transform\nrotate 0 1 1 40\nellipsoid 1.2 0.6 0.9\nend\n", 1.3, 64 },
+    { "paraboloid", "transform\ntranslate 0 0 -0.8\nparaboloid 0.8 0.8 1.5\nend\n", 1.3, 64 },
+    { "hyperboloid", "transform\nrotate 1 1 0 25\nhyperboloid 0.5 0.5 0.7 1\nend\n", 1.3, 64 },
+    { "hyperboloid2", "hyperboloid2 0.4 0.4 0.4 1.2\n", 1.3, 64 },
+    { "quadcone", "quadcone 0.6 0.6 1\n", 1.1, 64 },
+    { "quadcylinder", "transform\nscale 1 0.5 1\nquadcylinder 0.7 0.7 1\nend\n", 1.1, 64 },
+    { "general quadric", "quadric 1 2 1 0.5 0 0 0 0 0 -1 -1 -1 -1 1 1 1\n", 1.1, 64 },
+    { "CSG difference", "difference\nbox -0.8 -0.8 -0.8 0.8 0.8 0.8\ns 0.8 -0.8 0.8 0.7\nend\n", 1.2, 64 },
+    { "CSG intersection lens", "intersection\ns 0 -0.6 0 1\ns 0 0.6 0 1\nend\n", 1.0, 64 },
+    { "CSG union", "union\ntransform\nrotate 1 0 0 90\ntorus 0.8 0.25\nend\nbox -0.3 -0.3 -1 0.3 0.3 1\nend\n", 1.2, 512 },
 };
 
 static bool load_both(const test_shape_t *s)
@@ -103,13 +104,31 @@ static void random_ray(double extent, bool inside, double o[3], double dir[3])
         dir[k] /= l;
 }
 
+/* How far the fixed build's hit point lies from the exact surface: the
+ * double build measures it along its normal, from 1e-3 outside. In units
+ * of the fixed last place (the test scenes are read at scale 1). -1 when
+ * another surface is in the way. */
+static double surface_distance_ulps(const probe_hit_t *hf, const probe_hit_t *hd)
+{
+    const double step = 1e-3;
+    double q[3], back[3];
+    for (int k = 0; k < 3; k++) {
+        q[k] = hf->point[k] + step * hd->normal[k];
+        back[k] = -hd->normal[k];
+    }
+    probe_hit_t h;
+    if (!rt_backend_double.probe(q, back, false, &h) || fabs(h.t - step) > step / 2)
+        return -1;
+    return fabs(h.t - step) * 1048576.0;
+}
+
 static void test_shape(const test_shape_t *s)
 {
     if (!load_both(s)) {
         CHECK(0, "%s: scene loads in both builds", s->name);
         return;
     }
-    double worst_t = 0, worst_n = 0;
+    double worst_t = 0, worst_n = 0, worst_dist = 0;
     int hits = 0, mismatch = 0, unexcused = 0;
     const double nudge = 1e-3 * s->extent;
     for (int i = 0; i < N_RAYS; i++) {
@@ -129,6 +148,8 @@ static void test_shape(const test_shape_t *s)
         if (!f)
             continue;
         hits++;
+        double dist = surface_distance_ulps(&hf, &hd);
+        worst_dist = dist > worst_dist ? dist : worst_dist;
         double cosine = fabs(hd.normal[0] * dir[0] + hd.normal[1] * dir[1] + hd.normal[2] * dir[2]);
         if (cosine < MIN_COS)
             continue;
@@ -143,9 +164,22 @@ static void test_shape(const test_shape_t *s)
     CHECK(worst_t <= 1, "%s: max |t error| %.2f of the tolerance %.0e + %.0e t", s->name, worst_t,
           TOL_T_ABS, TOL_T_REL);
     CHECK(worst_n <= TOL_N, "%s: max normal component error %.2e (tolerance %.0e)", s->name, worst_n, TOL_N);
-    CHECK((double)mismatch / N_RAYS <= MAX_MISMATCH && unexcused == 0,
-          "%s: results differ for %d rays (%.3f%%, limit %.1f%%), %d of them away from a silhouette or rim",
-          s->name, mismatch, 100.0 * mismatch / N_RAYS, 100 * MAX_MISMATCH, unexcused);
+    if (s->offset_ulps > 0)
+        CHECK(worst_dist <= s->offset_ulps / 2,
+              "%s: hit points within %.1f ulps of the exact surface (offset bound: half of %.0f)", s->name,
+              worst_dist, s->offset_ulps);
+    else
+        printf("        %s: hit points within %.1f ulps of the exact surface (rays leaving it skip it)\n",
+               s->name, worst_dist);
+    /* Tori (offset 512): the fixed build marches to 2^-13 of the surface in
+     * at most 128 steps, the exact reference to 2^-24 in 4096 (tolerance.h);
+     * rays that run long and close along the tube use up the fixed build's
+     * steps and miss: at most 0.1% of them. */
+    int unexcused_max = s->offset_ulps >= 512 ? N_RAYS / 1000 : 0;
+    CHECK((double)mismatch / N_RAYS <= MAX_MISMATCH && unexcused <= unexcused_max,
+          "%s: results differ for %d rays (%.3f%%, limit %.1f%%), %d of them away from a silhouette or rim "
+          "(limit %d)",
+          s->name, mismatch, 100.0 * mismatch / N_RAYS, 100 * MAX_MISMATCH, unexcused, unexcused_max);
 }
 
 static void test_camera(void)

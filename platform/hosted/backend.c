@@ -135,6 +135,9 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     out->normal[0] = to_double(n.x);
     out->normal[1] = to_double(n.y);
     out->normal[2] = to_double(n.z);
+    out->point[0] = w * to_double(p.x);
+    out->point[1] = w * to_double(p.y);
+    out->point[2] = w * to_double(p.z);
     out->kind = h.kind;
     out->index = h.index;
     return true;

@@ -24,6 +24,7 @@ typedef struct {
     double t;
     int64_t t_raw;      /* t exactly as the backend holds it (fixed: units of 2^-FX_FRAC_BITS) */
     double normal[3];   /* shading normal as the tracer uses it (unit, not flipped) */
+    double point[3];    /* the hit point as the backend computes it */
     int kind;           /* 0 sphere, 1 cone, 2 polygon/patch */
     uint32_t index;
 } probe_hit_t;
