@@ -9,6 +9,8 @@ const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
     if (!(view->angle > 0 && view->angle < r_from_int(180)))
         return "view: angle must be between 0 and 180 degrees (exclusive)";
     c->eye = view->from;
+    c->at = view->at;
+    c->start = 0;
     c->w = v3_unit(fwd);
     c->u = v3_unit_cross(c->w, view->up);
     if (c->u.x == 0 && c->u.y == 0 && c->u.z == 0)
@@ -19,23 +21,35 @@ const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
     int32_t span = (nx > ny ? nx : ny) - 1;
     real_wide_t tan_half = r_tan_deg_wide(view->angle / 2);
     c->half_step = span > 0 ? tan_half / span : 0;
+    c->half_span = r_wmul_real(c->half_step, v3_length(fwd));
     return 0;
+}
+
+void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
+{
+    vec3_t half = v3_scale(v3_sub(max, min), R_RATIO(1, 2));
+    vec3_t centre = v3_add(min, half);
+    real_t gap = v3_length(v3_sub(centre, c->eye)) - v3_length(half);
+    c->start = gap > 0 ? gap : 0;
 }
 
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
 {
-    /* Offsets in units of s/2 are integers; the products stay wide so the
-     * direction is rounded once, by the normalisation. */
-    real_t a = r_from_wide(c->half_step * (2 * i - (c->nx - 1)));
-    real_t b = r_from_wide(c->half_step * (2 * j - (c->ny - 1)));
+    /* T = at + a u - b v: the model's w + a' u - b' v scaled by |at - eye|,
+     * so eye -> T is the exact ray; offsets in units of s/2 are integers
+     * and each product is rounded once. */
+    real_t a = r_from_wide(c->half_span * (2 * i - (c->nx - 1)));
+    real_t b = r_from_wide(c->half_span * (2 * j - (c->ny - 1)));
+    vec3_t t = v3(r_from_wide(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
+                  r_from_wide(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
+                  r_from_wide(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));
+    vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
-    r.origin = c->eye;
+    r.dir = v3_unit(to_t);
+    /* back from T along the rounded direction to `start` from the eye
+     * (|to_t| as to_t . dir: an error along the ray moves nothing) */
+    r.origin = v3_madd(t, c->start - v3_dot(to_t, r.dir), r.dir);
     r.from = PRIM_NONE;
     r.from_far = false;
-    real_t d[3];
-    r_unit3(r_to_wide(c->w.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x),
-            r_to_wide(c->w.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y),
-            r_to_wide(c->w.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z), d);
-    r.dir = v3(d[0], d[1], d[2]);
     return r;
 }

@@ -6,14 +6,24 @@
 
 #include "geometry.h"
 
+/* Each eye ray is built through a point T on the exact ray at the distance
+ * of `at`, near the scene, and starts at `start` from the eye: a rounded
+ * direction then errs only across the scene, not over the whole distance
+ * from a far camera (a narrow lens from far away stays sharp). */
 typedef struct {
-    vec3_t eye, w, u, v;    /* forward, right, image up (unit) */
-    real_wide_t half_step;  /* s / 2 = tan(angle / 2) / (max(X, Y) - 1) */
-    int32_t nx, ny;         /* samples per row and column */
+    vec3_t eye, at, w, u, v;  /* forward, right, image up (unit) */
+    real_wide_t half_step;    /* s / 2 = tan(angle / 2) / (max(X, Y) - 1) */
+    real_wide_t half_span;    /* the same times |at - eye|: at T's distance */
+    real_t start;             /* rays start this far from the eye */
+    int32_t nx, ny;           /* samples per row and column */
 } camera_t;
 
-/* NULL, or why the view cannot make a camera. */
+/* NULL, or why the view cannot make a camera. Rays start at the eye. */
 const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny);
+
+/* Start eye rays where they reach the sphere around the box [min, max]
+ * (the scene's bounds), if the eye is outside it. */
+void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max);
 
 /* The eye ray through sample (i, j), column i from the left, row j from the top. */
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j);

@@ -119,6 +119,14 @@ static inline int fx_wsign_dot(fx_t dx, fx_t dy, fx_t dz, fx_wide_t nx, fx_wide_
     return (v > 0) - (v < 0);
 }
 
+/* w * a as Q.2F, rounded once: w is split at the binary point so both
+ * partial products fit in 64 bits (|w| < 2^(31+F) and |w a| < 2^(63-F)). */
+static inline fx_wide_t fx_wmul_fx(fx_wide_t w, fx_t a)
+{
+    int64_t hi = w >> FX_FRAC_BITS; /* floor */
+    int64_t lo = (int64_t)((uint64_t)w & (uint64_t)(FX_ONE - 1));
+    return hi * a + fx_round_shift(lo * a, FX_FRAC_BITS);
+}
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b); /* a / b of two Q.2F values, as Q.F */
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a); /* w / a, as Q.2F; a == 0 saturates */
 fx_t fx_sqrt(fx_t a);                 /* a < 0 gives 0 */

@@ -131,6 +131,8 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
         rt_error_set(err, 0, why);
         return -1;
     }
+    if (sc->n_bvh_nodes > 0)
+        camera_start_at_bounds(&cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
     static tracer_t tr; /* static like cam */
     tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
 

@@ -51,12 +51,14 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
  * this is parallel (its reciprocal would leave the range); a quadric whose
  * sigma^2 coefficient is below this is solved as linear; bounding spheres
  * are padded by this; the torus marches to within RT_TORUS_EPS of its
- * surface in at most RT_TORUS_STEPS distance evaluations. */
+ * surface in at most RT_TORUS_STEPS distance evaluations (128 missed
+ * 0.06% of random rays, those running long and close along the tube;
+ * 256 misses none of test_geometry's that the reference hits). */
 #define RT_OBJ_PARALLEL R_RATIO(1, 1 << 12)
 #define RT_QUADRIC_LINEAR R_RATIO(1, 1 << 14)
 #define RT_BOUND_PAD R_ULPS(16)
 #define RT_TORUS_EPS R_RATIO(1, 8192)
-#define RT_TORUS_STEPS 128
+#define RT_TORUS_STEPS 256
 /* Origin offset of secondary rays leaving a solid, along the geometric
  * normal. Hit point error of a solid: the object-space ray is the world
  * ray through M^-1 (each component rounded to 1/2 ulp, |M^-1| <= 64 by the
@@ -85,7 +87,7 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_QUADRIC_LINEAR ((real_t)0x1p-40f)
 #define RT_BOUND_PAD (16 * RT_FLOAT_ULP)
 #define RT_TORUS_EPS ((real_t)0x1p-13f)
-#define RT_TORUS_STEPS 128
+#define RT_TORUS_STEPS 256
 #define RT_SOLID_OFFSET (64 * RT_FLOAT_ULP)
 /* A float plane distance N . O - c rounds each of its three products and
  * sums (|O| <= 32): up to 3 * 32 * 2^-24 = 6 ulps off the plane, so a

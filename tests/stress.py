@@ -213,12 +213,16 @@ def distant():
     # reader scales it so the light or camera fits): tolerance 1% >8/255.
     for dist in (100, 1000):
         image_case("lights %d units away (balls-2)" % dist, far_lights(spd("balls-2"), dist), over8_max=1.0)
-    image_case("camera 100 units away (balls-2)", far_camera(spd("balls-2"), 100), over8_max=1.0)
-    # Where the range ends: from 1000 units the framing lens is so narrow
-    # that a pixel spans only ~16 units of a Q11.20 direction; edges get
-    # noisy (not garbage) and rt says so.
+    # Eye rays are built through a point near the scene and start at its
+    # bounds (camera.c), so a far camera's rounded directions err only
+    # across the scene: 100 units away meets the image tests' tolerance.
+    image_case("camera 100 units away (balls-2)", far_camera(spd("balls-2"), 100), psnr_min=50.0,
+               over8_max=0.25)
+    # Where the range ends: the camera 1000 units from a 2-unit scene sets
+    # the scale, so the geometry keeps 9 fewer bits; edges get noisy (not
+    # garbage) and rt says so.
     image_case("camera 1000 units away (balls-2): range end", far_camera(spd("balls-2"), 1000),
-               psnr_min=35, over8_max=3.0, warn="direction resolution")
+               psnr_min=40, over8_max=1.0, warn="direction resolution")
 
 
 def icosphere(levels):
