@@ -1,7 +1,7 @@
 /* camera.c - eye rays as docs/shading-model.md defines them. */
 #include "camera.h"
 
-const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
+RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
 {
     vec3_t fwd = v3_sub(view->at, view->from);
     if (fwd.x == 0 && fwd.y == 0 && fwd.z == 0)
@@ -25,7 +25,7 @@ const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
     return 0;
 }
 
-void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
+RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
 {
     vec3_t half = v3_scale(v3_sub(max, min), R_RATIO(1, 2));
     vec3_t centre = v3_add(min, half);
@@ -33,7 +33,7 @@ void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
     c->start = gap > 0 ? gap : 0;
 }
 
-ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
+RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
 {
     /* T = at + a u - b v: the model's w + a' u - b' v scaled by |at - eye|,
      * so eye -> T is the exact ray; offsets in units of s/2 are integers

@@ -77,7 +77,7 @@ static void plain_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint
     }
 }
 
-int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
+RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err)
 {
     uint16_t w = opts->width ? opts->width : sc->width;

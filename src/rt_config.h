@@ -169,6 +169,14 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_INLINE inline
 #endif
 
+/* Set-up code that runs once per frame or per pixel, next to thousands of
+ * instructions of tracing: optimised for size (GCC's cold functions). */
+#if defined(__GNUC__)
+#define RT_COLD __attribute__((cold))
+#else
+#define RT_COLD
+#endif
+
 /* Keeps a helper's locals out of the recursive trace_ray frame, which is
  * what bounds the stack (RT_MAX_DEPTH frames of it). */
 #if defined(__GNUC__)

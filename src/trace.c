@@ -11,7 +11,7 @@ typedef struct {
     bool entering;   /* D . Ng < 0 */
     bool smooth;     /* a patch: n and n_out may disagree */
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
-    real_t offset;   /* a solid's origin offset for rays leaving it */
+    real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
 } surface_t;
 
@@ -52,6 +52,7 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
         ng = p->normal;
         n = polygon_shading_normal(sc, p, s.point);
         s.smooth = p->normals != POLY_NO_NORMALS;
+        s.offset = RT_PLANE_OFFSET;
         mat = p->material;
         break;
     }
@@ -66,20 +67,13 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
 /* The start of a ray leaving surface s: to the side the incoming ray came
  * from, or `through` it. Spheres and cones say whether it goes into them
  * (from_far) or away (skipped); polygons are skipped; solids, which may be
- * met again anywhere, offset the origin by their error bound instead. */
+ * met again anywhere, offset the origin by their error bound instead
+ * (s->offset; 0 for the others except polygons in the float build). */
 static void leave(const surface_t *s, bool through, ray_t *out)
 {
-    out->origin = s->point;
+    out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
     out->from_far = PRIM_KIND(s->ref) != PRIM_POLYGON && through == s->entering;
-#if RT_USE_OBJECTS
-    if (s->ref == PRIM_NONE)
-        out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
-#endif
-#if RT_BACKEND_FLOAT
-    if (PRIM_KIND(s->ref) == PRIM_POLYGON)
-        out->origin = v3_madd(s->point, through ? -RT_PLANE_OFFSET : RT_PLANE_OFFSET, s->n_out);
-#endif
 }
 
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
