@@ -134,7 +134,7 @@ TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/as
         build/stress/rt build/stress/test_rayfuzz build/fuzz/fuzz_nff build/scenec/rt-scenec
 
 test: deps
-	$(MAKE) $(TESTS)
+	$(MAKE) -j2 $(TESTS)
 	@tests/run-all.sh build/asan
 
 # Fuzzing (clang's libFuzzer) over the reader and a tiny render, under

@@ -21,7 +21,7 @@ for s in balls-2 rings-2 teapot-2 tetra-2; do
         awk -v v="$dev" 'BEGIN { exit !(v > 1.0) }' && bad=1
     done
     if [ $bad -eq 0 ]; then pass=$((pass + 1)); echo "  ok    $s:$line"; else fail=$((fail + 1)); echo "  FAIL  $s:$line"; fi
-    if cmp=$("$RT" compare "$OUT/$s-fixed.png" "$OUT/$s-double.png" --psnr-min 40 --max-over8 0.5); then
+    if cmp=$("$RT" compare "$OUT/$s-fixed.png" "$OUT/$s-double.png" --psnr-min 50 --max-over8 0.25); then
         pass=$((pass + 1)); echo "  ok    $s SPD image: $cmp"
     else
         fail=$((fail + 1)); echo "  FAIL  $s SPD image: $cmp"
