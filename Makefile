@@ -108,7 +108,7 @@ host-run: deps
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
 	build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'fixed vs double: '
+	@printf 'fixed vs the exact double reference: '
 	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
 
 include platform/mps2-an385/board.mk

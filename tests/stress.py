@@ -163,7 +163,7 @@ def scale_sweep():
         text = spd(base)
         for e in exps:
             image_case("scale %s x1e%+d" % (base, e), transform_positions(text, Scale(10.0 ** e)),
-                       psnr_min=45)
+                       psnr_min=50, over8_max=0.25)
     # where the range ends: reported, not rendered
     error_case("scale balls-2 x1e+4 (too large)", transform_positions(spd("balls-2"), Scale(1e4)),
                "scene too large for the fixed range")

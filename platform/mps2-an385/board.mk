@@ -112,7 +112,7 @@ run: deps
 	@mkdir -p out
 	@$(BOARD_DIR)/qemu-run.sh $(FW_DIR)/fixed.elf out/$(NAME).png build/host/rt | tee $(FW_DIR)/report.txt
 	@build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board (fixed) vs host double: '
+	@printf 'board (fixed) vs the exact double reference: '
 	@build/host/rt compare out/$(NAME).png out/$(NAME)-double.png
 	@echo "image: out/$(NAME).png"
 
