@@ -21,7 +21,15 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     int32_t span = (nx > ny ? nx : ny) - 1;
     real_wide_t tan_half = r_tan_deg_wide(view->angle / 2);
     c->half_step = span > 0 ? tan_half / span : 0;
-    c->half_span = r_wmul_real(c->half_step, v3_length(fwd));
+    /* T at the distance of `at` (at most 32 sqrt 3 = 55.4: the reader keeps
+     * positions within 16), where up to 150 degrees its offsets stay below
+     * tan 75 * 55.4 = 207; wider views put T at unit distance instead */
+    real_t dist = v3_length(fwd);
+    if (view->angle > r_from_int(150)) {
+        c->at = v3_add(c->eye, c->w);
+        dist = R_ONE;
+    }
+    c->half_span = r_wmul_real(c->half_step, dist);
     return 0;
 }
 

@@ -218,6 +218,12 @@ def distant():
     # across the scene: 100 units away meets the image tests' tolerance.
     image_case("camera 100 units away (balls-2)", far_camera(spd("balls-2"), 100), psnr_min=50.0,
                over8_max=0.25)
+    # Wide lenses: up to 150 degrees eye rays go through a point at the
+    # distance of `at`, beyond at unit distance (camera.c); both sides.
+    for angle in (150, 170, 179):
+        text = "\n".join(("angle %d" % angle) if l.startswith("angle") else l
+                         for l in spd("balls-2").splitlines()) + "\n"
+        image_case("lens of %d degrees (balls-2)" % angle, text, psnr_min=50.0, over8_max=0.25)
     # Where the range ends: the camera 1000 units from a 2-unit scene sets
     # the scale, so the geometry keeps 9 fewer bits; edges get noisy (not
     # garbage) and rt says so.
