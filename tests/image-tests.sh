@@ -13,15 +13,7 @@ SIZE=128x128
 PSNR_MIN=50
 OVER8_MAX=0.25
 mkdir -p "$OUT"
-pass=0 fail=0
-check() { # name, command...
-    name=$1; shift
-    if out=$("$@" 2>&1); then
-        pass=$((pass + 1)); printf '  ok    %-28s %s\n' "$name" "$out"
-    else
-        fail=$((fail + 1)); printf '  FAIL  %-28s %s\n' "$name" "$out"
-    fi
-}
+. tests/check.sh
 echo "image tests: fixed and float vs the exact double build at $SIZE (PSNR >= $PSNR_MIN dB, <= $OVER8_MAX% of pixels off by > 8/255)"
 for f in scenes/spd/balls-1.nff scenes/spd/gears-1.nff scenes/spd/rings-1.nff scenes/spd/teapot-1.nff \
          scenes/spd/tetra-1.nff scenes/spd/balls-2.nff scenes/spd/rings-2.nff scenes/spd/teapot-2.nff \

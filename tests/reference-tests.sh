@@ -14,15 +14,7 @@ DEPTH=5
 PSNR_MIN=70
 REF=$OUT/ref_tracer
 mkdir -p "$OUT"
-pass=0 fail=0
-check() { # name, command...
-    name=$1; shift
-    if out=$("$@" 2>&1); then
-        pass=$((pass + 1)); printf '  ok    %-28s %s\n' "$name" "$out"
-    else
-        fail=$((fail + 1)); printf '  FAIL  %-28s %s\n' "$name" "$out"
-    fi
-}
+. tests/check.sh
 echo "reference tests: double build vs tests/ref_tracer.c at $SIZE depth $DEPTH (PSNR >= $PSNR_MIN dB)"
 if ! ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/ref_tracer.c -lm; then
     echo "  FAIL  ref_tracer does not compile"

@@ -1,0 +1,12 @@
+# check.sh - sourced by the shell test scripts: pass/fail counters and
+# check NAME COMMAND..., which runs the command and counts it, printing
+# its output as the figures of that check.
+pass=0 fail=0
+check() {
+    name=$1; shift
+    if out=$("$@" 2>&1); then
+        pass=$((pass + 1)); printf '  ok    %-28s %s\n' "$name" "$out"
+    else
+        fail=$((fail + 1)); printf '  FAIL  %-28s %s\n' "$name" "$out"
+    fi
+}
