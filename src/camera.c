@@ -19,13 +19,13 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     c->nx = nx;
     c->ny = ny;
     int32_t span = (nx > ny ? nx : ny) - 1;
-    real_wide_t tan_half = r_tan_deg_wide(view->angle / 2);
+    real_wide_t tan_half = view->tan_half;
     c->half_step = span > 0 ? tan_half / span : 0;
-    /* T at the distance of `at` (at most 32 sqrt 3 = 55.4: the reader keeps
-     * positions within 16), where up to 150 degrees its offsets stay below
-     * tan 75 * 55.4 = 207; wider views put T at unit distance instead */
+    /* T at the distance of `at` (within 16, like all geometry), unless the
+     * view is so wide there that T's offsets would pass 256 (a wide lens,
+     * or a far camera): then at unit distance */
     real_t dist = v3_length(fwd);
-    if (view->angle > r_from_int(150)) {
+    if (tan_half > r_to_wide(R_RATIO(64, 1)) || r_wmul_real(tan_half, dist) > r_to_wide(R_RATIO(256, 1))) {
         c->at = v3_add(c->eye, c->w);
         dist = R_ONE;
     }

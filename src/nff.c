@@ -217,10 +217,11 @@ bool rd_pos(reader_t *r, const char *what, real_t *out)
             /* inside transform blocks sizes may grow by their scales */
             int32_t p = decimal_exp2_bound(d.mant, d.exp10) +
                         (r->n_blocks ? r->blocks[r->n_blocks - 1].extent_exp2 : 0);
-            if (p > r->max_exp2) {
-                r->max_exp2 = p;
-                r->max_line = r->tok_line;
-                r->max_what = what;
+            unsigned f = r->far;
+            if (p > r->max_exp2[f]) {
+                r->max_exp2[f] = p;
+                r->max_line[f] = r->tok_line;
+                r->max_what[f] = what;
             }
         }
         return true;
@@ -297,10 +298,17 @@ static bool read_view(reader_t *r)
         uint32_t w = 0, h = 0;
         bool ok = true;
         switch (k) {
-        case 0: ok = rd_pos3(r, "from", &v->from); break;
+        case 0:
+            r->far = true;
+            ok = rd_pos3(r, "from", &v->from);
+            r->far = false;
+            break;
         case 1: ok = rd_pos3(r, "at", &v->at); break;
         case 2: ok = rd_vec3(r, "up", &v->up); break;
-        case 3: ok = rd_real(r, "angle", &v->angle); break;
+        case 3:
+            ok = rd_real(r, "angle", &v->angle);
+            v->tan_half = ok && v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
+            break;
         case 4: ok = rd_real(r, "hither", &hither); break; /* ignored by the model */
         default:
             ok = rd_count(r, "resolution", 1, RT_MAX_WIDTH, &w) &&
@@ -328,7 +336,10 @@ static bool read_light(reader_t *r)
     if (!r->measuring && !CHECK_ROOM(r, sc->n_lights, RT_MAX_LIGHTS, "lights"))
         return false;
     light_t scratch = { 0 }, *l = r->measuring ? &scratch : &r->st->lights[sc->n_lights];
-    if (!rd_pos3(r, "l", &l->pos))
+    r->far = true;
+    bool ok = rd_pos3(r, "l", &l->pos);
+    r->far = false;
+    if (!ok)
         return false;
     l->colour = v3(R_ONE, R_ONE, R_ONE);
     /* optional colour: three more numbers on the same line */
@@ -528,19 +539,35 @@ static bool read_entity(reader_t *r)
     return rd_fail_tok(r, "", "unknown entity (expected v, b, l, f, c, s, p, pp, a solid or a block)");
 }
 
-/* The power of two that brings the scene's largest coordinate below
- * RT_SCENE_EXTENT (so squared distances stay inside the scalar's range),
- * as large as possible (so positions keep the most fraction bits). */
+/* The power of two that brings the geometry's largest coordinate below
+ * 2^RT_SCENE_EXTENT_LOG2 and the camera's and lights' below
+ * 2^RT_FAR_EXTENT_LOG2 (so distances stay inside the scalar's range), as
+ * large as possible (so positions keep the most fraction bits). */
 static bool choose_scale(reader_t *r)
 {
-    int32_t k = r->max_exp2 == INT32_MIN ? 0 : RT_SCENE_EXTENT_LOG2 - r->max_exp2;
+    static const int32_t extent[2] = { RT_SCENE_EXTENT_LOG2, RT_FAR_EXTENT_LOG2 };
+    unsigned f = 2; /* which extent binds; 2: nothing measured */
+    int32_t k = 0;
+    for (unsigned i = 0; i < 2; i++) {
+        if (r->max_exp2[i] == INT32_MIN)
+            continue;
+        int32_t ki = extent[i] - r->max_exp2[i];
+        if (f == 2 || ki < k) {
+            k = ki;
+            f = i;
+        }
+    }
+    if (f == 2) {
+        r->scale_log2 = 0;
+        return true;
+    }
     if (k < RT_SCALE_LOG2_MIN || k > RT_SCALE_LOG2_MAX) {
-        rt_error_set(r->err, r->max_line, r->max_what);
+        rt_error_set(r->err, r->max_line[f], r->max_what[f]);
         rt_error_append(r->err, k < RT_SCALE_LOG2_MIN ? ": scene too large for the fixed range (coordinates up to 2^"
                                                       : ": scene too small for the fixed range (coordinates only up to 2^");
-        rt_error_append_int(r->err, r->max_exp2);
+        rt_error_append_int(r->err, r->max_exp2[f]);
         rt_error_append(r->err, k < RT_SCALE_LOG2_MIN ? ", at most 2^" : ", at least 2^");
-        rt_error_append_int(r->err, RT_SCENE_EXTENT_LOG2 - (k < RT_SCALE_LOG2_MIN ? RT_SCALE_LOG2_MIN : RT_SCALE_LOG2_MAX));
+        rt_error_append_int(r->err, extent[f] - (k < RT_SCALE_LOG2_MIN ? RT_SCALE_LOG2_MIN : RT_SCALE_LOG2_MAX));
         rt_error_append(r->err, ")");
         return false;
     }
@@ -576,7 +603,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     reader_t r;
     reader_start(&r, text, len, store, err);
     r.measuring = true;
-    r.max_exp2 = INT32_MIN;
+    r.max_exp2[0] = r.max_exp2[1] = INT32_MIN;
     err->line = 0;
     err->msg[0] = '\0';
     if (!read_pass(&r))

@@ -42,9 +42,10 @@ typedef struct {
      * largest binary exponent); the second converts every position times
      * 2^scale_log2, exactly, so the scene fills the fixed range. */
     bool measuring;
-    int32_t max_exp2;
-    uint32_t max_line;     /* where the largest position is */
-    const char *max_what;
+    bool far;              /* reading the camera or a light (range: far) */
+    int32_t max_exp2[2];   /* [0] the geometry, [1] the camera and lights */
+    uint32_t max_line[2];  /* where the largest position is */
+    const char *max_what[2];
     int32_t scale_log2;
     block_t blocks[RT_MAX_BLOCK_DEPTH];
     uint32_t n_blocks;

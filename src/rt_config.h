@@ -35,6 +35,12 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #ifndef RT_SCENE_EXTENT_LOG2
 #define RT_SCENE_EXTENT_LOG2 4
 #endif
+/* The camera and the lights may lie farther out, below 2^RT_FAR_EXTENT_LOG2
+ * (512 in Q11.20; their distances to the scene stay below 2048), so a far
+ * camera or light does not take the geometry's fraction bits. */
+#ifndef RT_FAR_EXTENT_LOG2
+#define RT_FAR_EXTENT_LOG2 (FX_FRAC_BITS > 20 ? 29 - FX_FRAC_BITS : 9)
+#endif
 #ifndef RT_SCALE_LOG2_MIN              /* keeps >= 8 fraction bits */
 #define RT_SCALE_LOG2_MIN (8 - FX_FRAC_BITS)
 #endif
@@ -187,6 +193,8 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 
 _Static_assert(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16, "RT_MAX_DEPTH out of 1..16");
 _Static_assert(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24, "FX_FRAC_BITS out of 8..24");
+_Static_assert(RT_FAR_EXTENT_LOG2 >= RT_SCENE_EXTENT_LOG2 && RT_FAR_EXTENT_LOG2 <= 29 - FX_FRAC_BITS,
+               "RT_FAR_EXTENT_LOG2: at least the scene's extent, and distances must fit the fixed range");
 _Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POLY_VERTS out of 3..65535");
 _Static_assert(RT_MAX_POLYGONS <= 0xFFFFFF && RT_MAX_SPHERES <= 0xFFFFFF && RT_MAX_CONES <= 0xFFFFFF,
                "primitive indices are 24-bit");

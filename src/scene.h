@@ -130,6 +130,7 @@ typedef struct {
 typedef struct {
     vec3_t from, at, up;
     real_t angle;         /* degrees, full field of view */
+    real_wide_t tan_half; /* tan(angle / 2), set by the reader */
 } view_t;
 
 typedef struct {

@@ -143,20 +143,6 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     return true;
 }
 
-static double pixel_angle(int32_t nx, int32_t ny)
-{
-    double a = to_double(store.scene.view.angle) * 3.14159265358979323846 / 180;
-    int32_t span = (nx > ny ? nx : ny) - 1;
-    return span > 0 ? 2 * tan(a / 2) / span : a;
-}
-
-#if RT_BACKEND_FIXED
-#define DIRECTION_RESOLUTION (1.0 / FX_ONE)
-#elif RT_BACKEND_FLOAT
-#define DIRECTION_RESOLUTION 0x1p-24
-#else
-#define DIRECTION_RESOLUTION 0x1p-53
-#endif
 
 static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 {
@@ -172,5 +158,4 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 
 const rt_backend_t BACKEND_SYMBOL = {
     BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
-    pixel_angle, DIRECTION_RESOLUTION,
 };

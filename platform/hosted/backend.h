@@ -51,10 +51,6 @@ typedef struct {
     bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */
     bool (*eye_dir)(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3]);
-    /* Angle between neighbouring pixels' eye rays (radians) for an image
-     * of nx x ny, and the resolution of a unit direction (its last unit). */
-    double (*pixel_angle)(int32_t nx, int32_t ny);
-    double direction_resolution;
 } rt_backend_t;
 
 extern const rt_backend_t rt_backend_fixed;

@@ -3,6 +3,7 @@
  * fixed or the double build of the core, or compare two images.
  */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -158,11 +159,27 @@ static double now_seconds(void)
     return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
+/* How many fraction bits the geometry gave up so that a far camera or
+ * light fits the range (the reader puts the largest coordinate of the
+ * geometry in [8, 16) otherwise). */
+static int geometry_bits_lost(const rt_backend_t *be)
+{
+    double mn[3], mx[3], m = 0;
+    if (!be->bounds(mn, mx))
+        return 0;
+    for (int k = 0; k < 3; k++)
+        m = fmax(m, fmax(fabs(mn[k]), fabs(mx[k])));
+    double scaled = ldexp(m, (int)be->scale_log2());
+    int lost = scaled > 0 ? 3 - (int)floor(log2(scaled)) : 0;
+    return lost > 0 ? lost : 0;
+}
+
 static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int h, double secs)
 {
     bvh_stats_t bs;
     be->bvh_stats(&bs);
     fprintf(stderr, "scene scale      2^%d (positions read times this)\n", (int)be->scale_log2());
+    fprintf(stderr, "range bits lost  %d (to a far camera or light)\n", geometry_bits_lost(be));
     if (be->saturations(false) >= 0)
         fprintf(stderr, "saturations      %lld\n", (long long)be->saturations(false));
     fprintf(stderr,
@@ -292,19 +309,13 @@ static int cmd_render(int argc, char **argv)
     if (be->flat_skipped())
         fprintf(stderr, "%s: note: skipped %u zero-area polygon(s)\n", scene_path,
                 (unsigned)be->flat_skipped());
+    int lost = geometry_bits_lost(be);
+    if (be == &rt_backend_fixed && lost >= 4)
+        fprintf(stderr, "%s: warning: the camera or a light lies so far beyond the geometry that the fixed "
+                        "build keeps %d fewer bits for it: expect noisy edges (keep them within 500 times "
+                        "the geometry's extent)\n",
+                scene_path, lost);
 
-    {
-        /* Where precision runs out: neighbouring pixels' rays must differ by
-         * many units of the direction's last place, or edges get noisy. */
-        uint16_t w0, h0;
-        be->resolution(&w0, &h0);
-        int nx = opts.width ? opts.width : w0, ny = opts.height ? opts.height : h0;
-        double units = be->pixel_angle(nx, ny) / be->direction_resolution;
-        if (units < 64)
-            fprintf(stderr, "%s: warning: a pixel spans only %.0f units of the %s build's direction resolution "
-                            "(want >= 64): expect noisy edges; use fewer pixels or a nearer camera\n",
-                    scene_path, units, be->name);
-    }
     if (opts.spd && !opts.width) {
         opts.width = opts.height = 512;
     }

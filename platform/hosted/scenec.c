@@ -196,7 +196,8 @@ static void emit_tables(FILE *f, const scene_t *sc)
     emit_vec(f, v->at);
     fprintf(f, ", .up = ");
     emit_vec(f, v->up);
-    fprintf(f, ", .angle = %" PRId32 " },\n    .background = ", v->angle);
+    fprintf(f, ", .angle = %" PRId32 ", .tan_half = %" PRId64 " },\n    .background = ", v->angle,
+            (int64_t)v->tan_half);
     emit_vec(f, sc->background);
     fprintf(f, ",\n    .width = %u, .height = %u, .light_intensity = %" PRId32 ",\n", (unsigned)sc->width,
             (unsigned)sc->height, sc->light_intensity);
