@@ -7,13 +7,16 @@
  * Each random scene holds one primitive (sphere, cylinder, cone, triangle,
  * quad, or smooth patch) of random size (0.01..4 units), place and
  * orientation; rays come from outside (3..8 sizes away, aimed at the
- * object's box) and, one in four, from inside. Asserted:
+ * object's box) and, one in four, from inside. The view's `at` lies 8
+ * sizes out, so the reader's range (which `at` belongs to, like all
+ * geometry) holds every ray origin, as it holds render rays'. Asserted:
  *  - hit/miss agrees except where the double result itself flips when the
  *    ray is nudged by SILHOUETTE of the object's size (silhouettes, rims);
  *  - for hits at |D.N| >= 0.25: |t error| <= T_ABS extent + T_REL t, where
- *    extent is the scene's (camera included), and each normal component
- *    within N_TOL; rays that start within 1e-3 of the object's size from its
- *    surface are left out (secondary rays start off the surface);
+ *    extent is 6 sizes plus the object's distance from the origin, and
+ *    each normal component within N_TOL; rays that start within 1e-3 of
+ *    the object's size from its surface are left out (secondary rays skip
+ *    their own surface);
  *  - no fixed-point saturation;
  *  - rays aimed exactly at the shared edges and corners of closed meshes
  *    all hit (no cracks).
@@ -58,7 +61,7 @@ static double random_scene(char *buf, size_t cap, int kind, double c[3])
     int n = snprintf(buf, cap,
                      "v\nfrom %.9g %.9g %.9g\nat %.9g %.9g %.9g\nup 0 0 1\nangle 45\nhither 1\n"
                      "resolution 8 8\nl 1 2 3\nf 1 1 1 0.8 0.2 10 0 1\n",
-                     c[0], c[1] - 6 * size, c[2], c[0], c[1], c[2]);
+                     c[0], c[1] - 6 * size, c[2], c[0], c[1] + 8 * size, c[2]);
     double a[3], b[3], e[3];
     rnd_dir(a);
     rnd_dir(e);
@@ -149,8 +152,8 @@ static void edge_rays(long n)
         int nf = cube ? 12 : 8;
         char text[4096];
         int len = snprintf(text, sizeof text,
-                           "v\nfrom 0 %.9g 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 8 8\n"
-                           "l 1 2 3\nf 1 1 1 0.8 0.2 10 0 1\n", -6 * size);
+                           "v\nfrom 0 %.9g 0\nat 0 %.9g 0\nup 0 0 1\nangle 45\nhither 1\nresolution 8 8\n"
+                           "l 1 2 3\nf 1 1 1 0.8 0.2 10 0 1\n", -6 * size, 8 * size);
         for (int f = 0; f < nf; f++) {
             len += snprintf(text + len, sizeof text - len, "p 3\n");
             for (int k = 0; k < 3; k++)
