@@ -2,7 +2,8 @@
  * tolerance.h - every robustness epsilon of the core, per numeric backend.
  *
  * Lengths are in scene units after the reader's power-of-two scale, so the
- * scene's largest coordinate lies in [8, 16) and no ray is longer than 64.
+ * geometry's largest coordinate lies in [8, 16) and no hit is farther than
+ * 64 from a ray's origin.
  *
  * - double (the reference) renders the model of docs/shading-model.md:
  *   its epsilons come from double precision, about 1e-9 of the scene's
@@ -14,10 +15,12 @@
  *   reference splits into "number format" and "tolerances".
  *
  * Secondary rays need no surface offset where geometry rules a self-hit
- * out (trace.c, ray_from_t): a plane is never met again by a ray leaving
- * it, a ray leaving a sphere's or cone's outside never comes back, and a
- * ray going in meets that surface only at its far root. Only solids
- * (quadrics, tori, boxes, CSG) keep an offset, RT_SOLID_OFFSET.
+ * out (ray_t.from in geometry.h, leave() in trace.c): a plane is never met
+ * again by a ray leaving it, a ray leaving a sphere's or cone's outside
+ * never comes back, and a ray going in meets that surface only at its far
+ * root. Only solids (quadrics, tori, boxes, CSG) keep an offset, and
+ * polygons in the float build (RT_SOLID_OFFSET, RT_TORUS_OFFSET,
+ * RT_PLANE_OFFSET).
  */
 #ifndef TOLERANCE_H
 #define TOLERANCE_H
