@@ -25,6 +25,8 @@ if [ -n "$need" ]; then
     echo "installing:$need"
     SUDO=""
     [ "$(id -u)" = 0 ] || SUDO="sudo"
-    $SUDO apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $need >/dev/null
+    # wait for another install to finish rather than fail on its lock
+    LOCK="-o DPkg::Lock::Timeout=600"
+    $SUDO apt-get $LOCK update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get $LOCK install -y -qq $need >/dev/null
 fi

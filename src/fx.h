@@ -1,7 +1,7 @@
 /*
  * fx.h - signed fixed point for the tracer, Q(31-F).F with F = FX_FRAC_BITS.
  *
- * Default F = 16: range +-32767.99998, resolution 2^-16 = 1.5e-5.
+ * Default F = 20 (rt_config.h): range +-2047.999999, resolution 2^-20 = 9.5e-7.
  * Products keep a 64-bit intermediate; every conversion back to fx_t rounds
  * to nearest and saturates to +-FX_MAX (never wraps). FX_ON_SATURATE() is
  * called on each saturation so a debug build can count them.

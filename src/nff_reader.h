@@ -11,9 +11,6 @@
 #include "rt_error.h"
 #include "scene.h"
 
-#ifndef RT_MAX_BLOCK_DEPTH /* nested transform and CSG blocks */
-#define RT_MAX_BLOCK_DEPTH 8
-#endif
 
 /* An open transform or CSG block. */
 typedef struct {

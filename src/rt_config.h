@@ -105,6 +105,9 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #ifndef RT_CSG_MAX_DEPTH
 #define RT_CSG_MAX_DEPTH 4
 #endif
+#ifndef RT_MAX_BLOCK_DEPTH          /* nested transform and CSG blocks in a scene file */
+#define RT_MAX_BLOCK_DEPTH 8
+#endif
 #ifndef RT_USE_OBJECTS
 #define RT_USE_OBJECTS 1
 #endif
@@ -202,6 +205,7 @@ _Static_assert(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535, "materials ar
 _Static_assert(RT_MAX_SHAPES < 0x8000 && RT_MAX_CSG_NODES < 0x8000 && RT_MAX_XFORMS < 0xFFFF,
                "shape, CSG node and transform indices are 15/16-bit");
 _Static_assert(RT_CSG_MAX_SPANS >= 2 && RT_CSG_MAX_SPANS <= 32, "RT_CSG_MAX_SPANS out of 2..32");
+_Static_assert(RT_MAX_BLOCK_DEPTH >= 1 && RT_MAX_BLOCK_DEPTH <= 64, "RT_MAX_BLOCK_DEPTH out of 1..64");
 _Static_assert(RT_BVH_MAX_DEPTH >= 8 && RT_BVH_MAX_DEPTH <= 64, "RT_BVH_MAX_DEPTH out of 8..64");
 _Static_assert(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16, "RT_BVH_LEAF_SIZE out of 1..16");
 _Static_assert(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255, "RT_MAX_LIGHTS out of 1..255");

@@ -48,12 +48,6 @@ static void resolution(uint16_t *w, uint16_t *h)
     *h = store.scene.height;
 }
 
-static uint32_t primitive_count(void)
-{
-    const scene_t *s = &store.scene;
-    return s->n_spheres + s->n_cones + s->n_polygons;
-}
-
 static uint32_t flat_skipped(void) { return store.scene.n_flat_skipped; }
 
 static int32_t scale_log2(void) { return store.scene.scale_log2; }
@@ -157,5 +151,5 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    BACKEND_NAME, load, resolution, primitive_count, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
+    BACKEND_NAME, load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
 };

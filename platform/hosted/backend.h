@@ -34,7 +34,6 @@ typedef struct {
     /* Read NFF text into the backend's own static scene. */
     bool (*load)(const char *text, size_t len, rt_error_t *err);
     void (*resolution)(uint16_t *width, uint16_t *height);
-    uint32_t (*primitive_count)(void);
     uint32_t (*flat_skipped)(void); /* zero-area polygons the reader dropped */
     int32_t (*scale_log2)(void);    /* positions were read times 2^this */
     /* Fixed-point saturations so far (-1 unless built with

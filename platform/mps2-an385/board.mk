@@ -40,9 +40,6 @@ PORT_SRC  = startup.c uart.c icount.c semihost.c libc_min.c fb_uart.c main.c
 CORE_NAMES = $(notdir $(CORE_SRC:.c=))
 PORT_NAMES = $(PORT_SRC:.c=)
 
-QEMU_FLAGS = -M mps2-an385 -nographic -monitor none \
-             -semihosting-config enable=on,target=native -icount shift=0
-
 # ---- scene compiler (a host tool, with the firmware's capacities) -------
 
 $(SCENEC_DIR)/%.o: src/%.c $(wildcard src/*.h) $(BOARD_DIR)/board.mk

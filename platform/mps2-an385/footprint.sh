@@ -9,8 +9,12 @@ arm-none-eabi-size -A "$elf" | awk '
     END {
         code = s[".vectors"] + s[".text"] + s[".ARM.exidx"]
         printf "flash: code %d bytes, scene tables %d bytes, data image %d bytes\n", code, s[".scene"], s[".data"]
-        printf "ram:   data+bss %d bytes (stack region %d bytes separate)\n", s[".data"] + s[".bss"], s[".stack"]
+        printf "ram:   data+bss %d bytes\n", s[".data"] + s[".bss"]
     }'
+# the stack region itself (its section also holds alignment padding)
+lim=$(arm-none-eabi-nm "$elf" | awk '$3 == "__stack_limit" { print $1 }')
+top=$(arm-none-eabi-nm "$elf" | awk '$3 == "__stack_top" { print $1 }')
+echo "ram:   stack region $((0x${top:-0} - 0x${lim:-0})) bytes (separate)"
 hex=$(arm-none-eabi-nm -S "$elf" | awk '$4 == "band" { print $2 }')
 echo "ram:   of which band buffer $((0x${hex:-0})) bytes"
 python3 "$here/stack_usage.py" "$objdir" --root Reset_Handler --depth "${DEPTH:-5}" \
