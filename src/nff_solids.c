@@ -376,7 +376,9 @@ bool rd_solid_entity(reader_t *r, bool *handled)
         xform_scale(&x, v3(a, a, a));
         if (!current_xform(r, &x, &sh.xform))
             return false;
-        shape_init_quadric(&sh, q, v3(-R_ONE, -R_ONE, -R_ONE), v3(R_ONE, R_ONE, R_ONE));
+        const char *why = shape_init_quadric(&sh, q, v3(-R_ONE, -R_ONE, -R_ONE), v3(R_ONE, R_ONE, R_ONE));
+        if (why) /* cannot happen: the unit box is valid */
+            return rd_fail(r, line, why);
         sh.material = r->material;
         scene_t *sc = &r->st->scene;
         if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))

@@ -79,6 +79,12 @@ void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
     mat_mul(x->im, rt, x->im);
 }
 
+/* world -> object: M^-1 (p - t) */
+static vec3_t to_object(const xform_t *x, vec3_t p)
+{
+    return mat_vec(x->im, v3(p.x - x->t[0], p.y - x->t[1], p.z - x->t[2]));
+}
+
 vec3_t xform_point(const xform_t *x, vec3_t p)
 {
     return v3_add(mat_vec(x->m, p), v3(x->t[0], x->t[1], x->t[2]));
@@ -216,7 +222,7 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
     o->k = R_ONE;
     if (s->xform != XFORM_NONE) {
         const xform_t *x = &sc->xforms[s->xform];
-        org = mat_vec(x->im, v3(org.x - x->t[0], org.y - x->t[1], org.z - x->t[2]));
+        org = to_object(x, org);
         vec3_t d = mat_vec(x->im, r->dir);
         o->k = v3_length(d);
         o->u = v3_unit(d);
@@ -581,7 +587,7 @@ vec3_t shape_normal(const scene_t *sc, uint16_t id, uint8_t face, vec3_t p)
     vec3_t x = p, n;
     const xform_t *xf = s->xform == XFORM_NONE ? 0 : &sc->xforms[s->xform];
     if (xf)
-        x = mat_vec(xf->im, v3(p.x - xf->t[0], p.y - xf->t[1], p.z - xf->t[2]));
+        x = to_object(xf, p);
     switch (face) {
     case FACE_XMIN: n = v3(-R_ONE, 0, 0); break;
     case FACE_XMAX: n = v3(R_ONE, 0, 0); break;
