@@ -11,25 +11,25 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     c->eye = view->from;
     c->at = view->at;
     c->start = 0;
-    c->w = v3_unit(fwd);
-    c->u = v3_unit_cross(c->w, view->up);
+    vec3_t w = v3_unit(fwd); /* forward */
+    c->u = v3_unit_cross(w, view->up);
     if (c->u.x == 0 && c->u.y == 0 && c->u.z == 0)
         return "view: 'up' is zero or parallel to the view direction";
-    c->v = v3_unit_cross(c->u, c->w);
+    c->v = v3_unit_cross(c->u, w);
     c->nx = nx;
     c->ny = ny;
     int32_t span = (nx > ny ? nx : ny) - 1;
     real_wide_t tan_half = view->tan_half;
-    c->half_step = span > 0 ? tan_half / span : 0;
+    real_wide_t half_step = span > 0 ? tan_half / span : 0;
     /* T at the distance of `at` (within 16, like all geometry), unless the
      * view is so wide there that T's offsets would pass 256 (a wide lens,
      * or a far camera): then at unit distance */
     real_t dist = v3_length(fwd);
     if (tan_half > r_to_wide(R_RATIO(64, 1)) || r_wmul_real(tan_half, dist) > r_to_wide(R_RATIO(256, 1))) {
-        c->at = v3_add(c->eye, c->w);
+        c->at = v3_add(c->eye, w);
         dist = R_ONE;
     }
-    c->half_span = r_wmul_real(c->half_step, dist);
+    c->half_span = r_wmul_real(half_step, dist);
     return 0;
 }
 

@@ -11,9 +11,9 @@
  * direction then errs only across the scene, not over the whole distance
  * from a far camera (a narrow lens from far away stays sharp). */
 typedef struct {
-    vec3_t eye, at, w, u, v;  /* forward, right, image up (unit) */
-    real_wide_t half_step;    /* s / 2 = tan(angle / 2) / (max(X, Y) - 1) */
-    real_wide_t half_span;    /* the same times |at - eye|: at T's distance */
+    vec3_t eye, at, u, v;     /* T's reference point; right, image up (unit) */
+    real_wide_t half_span;    /* s / 2 = tan(angle / 2) / (max(X, Y) - 1),
+                               * times |at - eye|: at T's distance */
     real_t start;             /* rays start this far from the eye */
     int32_t nx, ny;           /* samples per row and column */
 } camera_t;

@@ -307,6 +307,8 @@ static bool read_view(reader_t *r)
         case 2: ok = rd_vec3(r, "up", &v->up); break;
         case 3:
             ok = rd_real(r, "angle", &v->angle);
+            /* valid angles only (the fixed tangent's argument must stay in
+             * range); camera_init reports the others */
             v->tan_half = ok && v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
             break;
         case 4: ok = rd_real(r, "hither", &hither); break; /* ignored by the model */

@@ -404,10 +404,8 @@ static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
 
 /* Torus roots by sphere tracing the exact distance along the bounding
  * chord (it never steps over a surface), each root polished by up to three
- * Newton steps on the distance. At most TORUS_MAX_STEPS distance evaluations per
- * ray; a boundary is where the distance falls below TORUS_EPS. */
-#define TORUS_MAX_STEPS RT_TORUS_STEPS
-#define TORUS_EPS RT_TORUS_EPS
+ * Newton steps on the distance. At most RT_TORUS_STEPS distance evaluations per
+ * ray; a boundary is where the distance falls below RT_TORUS_EPS. */
 
 static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
 {
@@ -417,7 +415,7 @@ static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
         if (r_abs(slope) < R_RATIO(1, 64))
             break; /* grazing: Newton would wander */
         real_t d = torus_sdf(s, x);
-        if (r_abs(d) > 4 * TORUS_EPS)
+        if (r_abs(d) > 4 * RT_TORUS_EPS)
             break; /* wandered off: keep the last point near the surface */
         sigma -= r_div(d, slope);
     }
@@ -427,28 +425,28 @@ static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
 RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
     real_t sigma = -o->half_chord, end = o->half_chord, entry = 0;
-    real_t last = sigma - 8 * TORUS_EPS; /* the last boundary crossed */
+    real_t last = sigma - 8 * RT_TORUS_EPS; /* the last boundary crossed */
     bool inside = false;
-    for (int step = 0; step < TORUS_MAX_STEPS && sigma <= end; step++) {
+    for (int step = 0; step < RT_TORUS_STEPS && sigma <= end; step++) {
         real_t d = torus_sdf(s, v3_madd(o->p0, sigma, o->u));
         real_t dist = inside ? -d : d;
-        if (dist > TORUS_EPS) {
+        if (dist > RT_TORUS_EPS) {
             sigma += dist;
             continue;
         }
-        if (sigma - last < 4 * TORUS_EPS) { /* still at the surface just crossed */
-            sigma += TORUS_EPS;
+        if (sigma - last < 4 * RT_TORUS_EPS) { /* still at the surface just crossed */
+            sigma += RT_TORUS_EPS;
             continue;
         }
         real_t at = polish(s, o, sigma);
         if (!inside) {
             entry = at;
-        } else if (at - entry > 4 * TORUS_EPS) {
+        } else if (at - entry > 4 * RT_TORUS_EPS) {
             push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, at), id, FACE_CURVED));
         } /* else a tangent touch: no span (at most two spans remain) */
         inside = !inside;
         last = r_max(sigma, at);
-        sigma = last + 2 * TORUS_EPS; /* step through the surface */
+        sigma = last + 2 * RT_TORUS_EPS; /* step through the surface */
     }
     if (inside) /* ran out of steps inside: close the span where we are */
         push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));

@@ -9,13 +9,13 @@
 #include "solid.h"
 #include "trace.h"
 
-#if RT_BACKEND_DOUBLE && RT_TOLERANCES_FIXED
+#if RT_BACKEND_DOUBLE
+#if RT_TOLERANCES_FIXED
 #define BACKEND_SYMBOL rt_backend_double_ftol
 #define BACKEND_NAME "double-ftol"
-static real_t to_real(double v) { return v; }
-static double to_double(real_t v) { return v; }
-#elif RT_BACKEND_DOUBLE
+#else
 #define BACKEND_SYMBOL rt_backend_double
+#endif
 static real_t to_real(double v) { return v; }
 static double to_double(real_t v) { return v; }
 #elif RT_BACKEND_FLOAT
