@@ -16,7 +16,7 @@ host_time() { # scene, extra args: median render time of 3 runs (after a warm-up
     f=$1; shift
     "$RT" "$f" -o "$OUT/warm.png" --quiet "$@" 2>/dev/null
     for i in 1 2 3; do
-        "$RT" "$f" -o "$OUT/t.png" --stats --quiet "$@" 2>&1 | awk '/^render time/ { print $3 }'
+        "$RT" "$f" -o "$OUT/t.png" --stats --quiet "$@" 2>&1 | awk '$1 == "render_seconds" { print $2 }'
     done | median3
 }
 
@@ -42,9 +42,9 @@ for s in balls gears rings teapot tetra; do
     for b in fixed double; do
         t=$(host_time scenes/spd/$s-default.nff --spd --$b)
         "$RT" scenes/spd/$s-default.nff -o "$OUT/$s-$b.png" --spd --$b --stats --quiet 2>"$OUT/$s-$b.stats"
-        st() { awk -v k="$1" 'index($0, k) == 1 { print $'"$2"' }' "$OUT/$s-$b.stats"; }
-        printf '%-16s %7s %9s %9s %10s %10s %10s %10s %12s\n' "$s-default" $b "$t" "$(st primitives 2)" \
-            "$(st 'bvh nodes  ' 3)" "$(st 'eye hits' 3)" "$(st 'reflect rays' 3)" "$(st 'refract rays' 3)" "$(st 'shadow rays' 3)"
+        st() { awk -v k="$1" '$1 == k { print $2 }' "$OUT/$s-$b.stats"; }
+        printf '%-16s %7s %9s %9s %10s %10s %10s %10s %12s\n' "$s-default" $b "$t" "$(st primitives)" \
+            "$(st bvh_nodes)" "$(st eye_hits)" "$(st reflect_rays)" "$(st refract_rays)" "$(st shadow_rays)"
     done
 done
 

@@ -62,7 +62,7 @@ def scene_path(scene):
 def render(cfg, scene, size, out, extra=()):
     rt, flag = host_rt(cfg)
     r = run([rt, scene_path(scene), "-o", out, "--size", size, flag, "--quiet", "--stats"] + list(extra))
-    m = re.search(r"render time\s+([0-9.]+) s", r.stderr)
+    m = re.search(r"^render_seconds\s+([0-9.]+)$", r.stderr, re.M)
     return float(m.group(1))
 
 

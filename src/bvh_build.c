@@ -9,7 +9,7 @@
  */
 #include "bvh.h"
 
-#include "geometry.h"
+#include "prims.h"
 
 #define BVH_BINS 12
 /* Cost of visiting a node (two box tests) in units of one primitive test:
@@ -59,36 +59,7 @@ static real_wide_t sah_cost(real_wide_t half_area, uint32_t count)
 
 void prim_box(const scene_t *sc, prim_ref_t ref, vec3_t *min, vec3_t *max)
 {
-    uint32_t i = PRIM_INDEX(ref);
-    vec3_t lo, hi;
-    real_t pad = BOX_SLACK;
-    switch (PRIM_KIND(ref)) {
-    case PRIM_SPHERE: {
-        const sphere_t *s = &sc->spheres[i];
-        lo = hi = s->centre;
-        pad += s->radius;
-        break;
-    }
-    case PRIM_CONE: {
-        /* both end discs fit in boxes of their larger radius */
-        const cone_t *c = &sc->cones[i];
-        vec3_t apex = v3_madd(c->base, c->height, c->axis);
-        lo = v3(r_min(c->base.x, apex.x), r_min(c->base.y, apex.y), r_min(c->base.z, apex.z));
-        hi = v3(r_max(c->base.x, apex.x), r_max(c->base.y, apex.y), r_max(c->base.z, apex.z));
-        pad += r_max(c->r0, c->r0 + r_mul(c->slope, c->height));
-        break;
-    }
-    case PRIM_OBJECT:
-        lo = sc->objects[i].box_min; /* already padded */
-        hi = sc->objects[i].box_max;
-        break;
-    default:
-        lo = sc->polygons[i].box_min; /* already padded */
-        hi = sc->polygons[i].box_max;
-        break;
-    }
-    *min = v3(lo.x - pad, lo.y - pad, lo.z - pad);
-    *max = v3(hi.x + pad, hi.y + pad, hi.z + pad);
+    prim_bounds(sc, ref, BOX_SLACK, min, max);
 }
 
 typedef struct {
@@ -214,20 +185,18 @@ const char *bvh_build(scene_store_t *st)
 {
     scene_t *sc = &st->scene;
     uint32_t n = 0;
-    for (uint32_t i = 0; i < sc->n_spheres; i++)
-        st->bvh_prims[n++] = PRIM_REF(PRIM_SPHERE, i);
-    for (uint32_t i = 0; i < sc->n_cones; i++)
-        st->bvh_prims[n++] = PRIM_REF(PRIM_CONE, i);
-    for (uint32_t i = 0; i < sc->n_polygons; i++)
-        st->bvh_prims[n++] = PRIM_REF(PRIM_POLYGON, i);
-    for (uint32_t i = 0; i < sc->n_objects; i++)
-        st->bvh_prims[n++] = PRIM_REF(PRIM_OBJECT, i);
+#define RT_LIST_KIND(type, table, cap, KIND, name, use) \
+    for (uint32_t i = 0; i < sc->n_##table; i++) \
+        st->bvh_prims[n++] = PRIM_REF(PRIM_##KIND, i);
+    RT_PRIM_KINDS(RT_LIST_KIND)
+#undef RT_LIST_KIND
     builder_t b = { st, 0, 0 };
     if (n > 0)
         build(&b, 0, n, 0);
     sc->bvh_nodes = st->bvh_nodes;
     sc->bvh_prims = st->bvh_prims;
     sc->n_bvh_nodes = b.n_nodes;
+    sc->n_bvh_prims = n;
     return b.error;
 }
 
@@ -260,7 +229,7 @@ static uint32_t to_milli(real_t v)
 void bvh_tree_stats(const scene_t *sc, bvh_stats_t *out)
 {
     *out = (bvh_stats_t){ 0 };
-    out->primitives = sc->n_spheres + sc->n_cones + sc->n_polygons + sc->n_objects;
+    out->primitives = scene_prim_count(sc);
     if (sc->n_bvh_nodes == 0)
         return;
     box_t root = { sc->bvh_nodes[0].min, sc->bvh_nodes[0].max };

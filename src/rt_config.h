@@ -112,9 +112,9 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_USE_OBJECTS 1
 #endif
 
-/* Bounding volume hierarchy: nodes (at most 2 per primitive) and the
+/* Bounding volume hierarchy: nodes (at most 2 per primitive; the sum of
+ * the kinds' capacities, RT_MAX_PRIMITIVES, is in prim_kinds.h) and the
  * depth of the tree, which bounds the traversal stack. */
-#define RT_MAX_PRIMITIVES (RT_MAX_SPHERES + RT_MAX_CONES + RT_MAX_POLYGONS + RT_MAX_OBJECTS)
 #ifndef RT_MAX_BVH_NODES
 #define RT_MAX_BVH_NODES (2 * RT_MAX_PRIMITIVES)
 #endif
@@ -186,6 +186,14 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_COLD
 #endif
 
+/* A path the caller guarantees is never taken (lets the compiler drop
+ * range checks on a switch). */
+#if defined(__GNUC__)
+#define RT_UNREACHABLE() __builtin_unreachable()
+#else
+#define RT_UNREACHABLE() ((void)0)
+#endif
+
 /* Keeps a helper's locals out of the recursive trace_ray frame, which is
  * what bounds the stack (RT_MAX_DEPTH frames of it). */
 #if defined(__GNUC__)
@@ -199,8 +207,6 @@ _Static_assert(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24, "FX_FRAC_BITS out of 8..
 _Static_assert(RT_FAR_EXTENT_LOG2 >= RT_SCENE_EXTENT_LOG2 && RT_FAR_EXTENT_LOG2 <= 29 - FX_FRAC_BITS,
                "RT_FAR_EXTENT_LOG2: at least the scene's extent, and distances must fit the fixed range");
 _Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POLY_VERTS out of 3..65535");
-_Static_assert(RT_MAX_POLYGONS <= 0xFFFFFF && RT_MAX_SPHERES <= 0xFFFFFF && RT_MAX_CONES <= 0xFFFFFF,
-               "primitive indices are 24-bit");
 _Static_assert(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535, "materials are indexed by uint16_t");
 _Static_assert(RT_MAX_SHAPES < 0x8000 && RT_MAX_CSG_NODES < 0x8000 && RT_MAX_XFORMS < 0xFFFF,
                "shape, CSG node and transform indices are 15/16-bit");

@@ -4,7 +4,9 @@
  *
  * scene_t only points at its tables, so they can live in RAM (filled by the
  * NFF reader into a scene_store_t) or in flash (emitted as const data by the
- * scene compiler for a board).
+ * scene compiler for a board). Every table and every element type is
+ * declared from a list (RT_PRIM_KINDS, RT_SCENE_TABLES, FIELDS_<type>), and
+ * the scene compiler writes the tables from the same lists.
  */
 #ifndef SCENE_H
 #define SCENE_H
@@ -12,72 +14,34 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "prim_kinds.h"
 #include "rt_config.h"
 #include "vec3.h"
 
-typedef struct {
-    colour_t colour;  /* C */
-    real_t kd, ks, t, ior;
-    shine_t shine;
-} material_t;
+#define FIELDS_material_t(X) \
+    X(colour_t, colour, ) /* C */ \
+    X(real_t, kd, ) \
+    X(real_t, ks, ) \
+    X(real_t, t, ) \
+    X(real_t, ior, ) \
+    X(shine_t, shine, )
+typedef struct { FIELDS_material_t(RT_DECLARE_FIELD) } material_t;
 
-typedef struct {
-    vec3_t pos;
-    colour_t colour;  /* Lc, (1, 1, 1) unless given */
-} light_t;
+#define FIELDS_light_t(X) \
+    X(vec3_t, pos, ) \
+    X(colour_t, colour, ) /* Lc, (1, 1, 1) unless given */
+typedef struct { FIELDS_light_t(RT_DECLARE_FIELD) } light_t;
 
-typedef struct {
-    vec3_t centre;
-    real_t radius;
-    real_wide_t radius2; /* exact r^2 */
-    uint16_t material;
-} sphere_t;
-
-/* Open cone/cylinder: radius r0 at `base`, growing by `slope` per unit of
- * height along the unit `axis`, up to `height` (the apex end). */
-typedef struct {
-    vec3_t base, axis;
-    real_t height, r0, slope;
-    vec3_t bound_centre;      /* bounding sphere, for early rejection */
-    real_t bound_radius;
-    real_wide_t bound_radius2;
-    uint16_t material;
-} cone_t;
-
-#define POLY_NO_NORMALS UINT32_MAX
-
-/* Planar polygon ('p') or patch ('pp'): vertices [first, first + count) of
- * the scene's vertex pool; a patch also has normals at the same indices.
- * Inside tests work in the plane of the two axes other than `drop_axis`. */
-typedef struct {
-    vec3_t normal;        /* Ng, unit, from the first three vertices */
-    real_t offset;        /* Ng . v0 */
-    vec3_t box_min, box_max;
-    uint32_t first;
-    uint32_t normals;     /* first normal, or POLY_NO_NORMALS for 'p' */
-    uint16_t count;
-    uint16_t material;
-    uint8_t drop_axis;
-    uint8_t convex;       /* inside test by edge sides (watertight) */
-} polygon_t;
-
-/* A primitive of any kind: kind in the top 8 bits, table index below. */
-typedef uint32_t prim_ref_t;
-#define PRIM_REF(kind, index) ((prim_ref_t)(kind) << 24 | (prim_ref_t)(index))
-#define PRIM_KIND(ref) ((ref) >> 24)
-#define PRIM_INDEX(ref) ((ref) & 0xFFFFFFu)
-enum prim_kind { PRIM_SPHERE, PRIM_CONE, PRIM_POLYGON, PRIM_OBJECT };
-#define PRIM_NONE UINT32_MAX
-
-/* ---- solids beyond NFF (src/solid.c) --------------------------------- */
+/* ---- solids beyond NFF (solid.h; the BVH sees them as objects) -------- */
 
 /* An affine map kept with its inverse: world = m p + t, p = im (world - t).
  * Built from translate/rotate/scale steps, so the inverse is exact to the
  * same rounding as the map (no matrix inversion). */
-typedef struct {
-    real_t m[3][3], t[3];
-    real_t im[3][3];
-} xform_t;
+#define FIELDS_xform_t(X) \
+    X(real_t, m, [3][3]) \
+    X(real_t, t, [3]) \
+    X(real_t, im, [3][3])
+typedef struct { FIELDS_xform_t(RT_DECLARE_FIELD) } xform_t;
 
 #define XFORM_NONE 0xFFFFu
 
@@ -90,93 +54,98 @@ enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX };
  *   box      [lo, hi]
  * `bound` is the radius of a sphere about the object-space origin that
  * holds the solid (early rejection, root bracketing). */
-typedef struct {
-    real_t q[10];
-    vec3_t lo, hi;
-    real_t bound;
-    uint16_t xform;
-    uint16_t material;
-    uint8_t kind;
-} shape_t;
+#define FIELDS_shape_t(X) \
+    X(real_t, q, [10]) \
+    X(vec3_t, lo, ) \
+    X(vec3_t, hi, ) \
+    X(real_t, bound, ) \
+    X(uint16_t, xform, ) \
+    X(uint16_t, material, ) \
+    X(uint8_t, kind, ) /* enum shape_kind */
+typedef struct { FIELDS_shape_t(RT_DECLARE_FIELD) } shape_t;
 
 enum csg_op { CSG_UNION, CSG_INTERSECTION, CSG_DIFFERENCE };
 
 /* A binary CSG node; a child is a shape (index) or another node
  * (index | CSG_NODE_BIT). */
 #define CSG_NODE_BIT 0x8000u
-typedef struct {
-    uint16_t a, b;
-    uint8_t op;
-} csg_node_t;
+#define FIELDS_csg_node_t(X) \
+    X(uint16_t, a, ) \
+    X(uint16_t, b, ) \
+    X(uint8_t, op, ) /* enum csg_op */
+typedef struct { FIELDS_csg_node_t(RT_DECLARE_FIELD) } csg_node_t;
 
-/* What the BVH sees: one shape, or the root of a CSG tree. */
-typedef struct {
-    vec3_t box_min, box_max;  /* world bounds */
-    uint16_t root;            /* shape index, or node index | CSG_NODE_BIT */
-} object_t;
+/* ---- BVH, view, the scene ----------------------------------------------- */
 
 /* BVH node, depth-first order: an interior node's left child follows it,
  * `index` is its right child; a leaf's primitives are
  * bvh_prims[index .. index + count). Boxes are conservative: they hold
  * their primitives whatever the rounding. */
-typedef struct {
-    vec3_t min, max;
-    uint32_t index;
-    uint16_t count;   /* 0 for an interior node */
-    uint8_t axis;     /* interior: the split axis (near child first) */
-} bvh_node_t;
+#define FIELDS_bvh_node_t(X) \
+    X(vec3_t, min, ) \
+    X(vec3_t, max, ) \
+    X(uint32_t, index, ) \
+    X(uint16_t, count, ) /* 0 for an interior node */ \
+    X(uint8_t, axis, )   /* interior: the split axis (near child first) */
+typedef struct { FIELDS_bvh_node_t(RT_DECLARE_FIELD) } bvh_node_t;
 
 /* The NFF viewpoint; the camera basis is derived per render resolution. */
-typedef struct {
-    vec3_t from, at, up;
-    real_t angle;         /* degrees, full field of view */
-    real_wide_t tan_half; /* tan(angle / 2), set by the reader */
-} view_t;
+#define FIELDS_view_t(X) \
+    X(vec3_t, from, ) \
+    X(vec3_t, at, ) \
+    X(vec3_t, up, ) \
+    X(real_t, angle, )         /* degrees, full field of view */ \
+    X(real_wide_t, tan_half, ) /* tan(angle / 2), set by the reader */
+typedef struct { FIELDS_view_t(RT_DECLARE_FIELD) } view_t;
 
-typedef struct {
-    view_t view;
-    colour_t background;
-    uint16_t width, height;   /* the file's resolution */
-    real_t light_intensity;   /* I = sqrt(n) / (2 n) */
+/* The scene's tables besides the primitive kinds':
+ * X(element type, scene_t member, capacity). */
+#define RT_SCENE_TABLES(X) \
+    X(material_t, materials, RT_MAX_MATERIALS) \
+    X(light_t, lights, RT_MAX_LIGHTS) \
+    X(vec3_t, vertices, RT_MAX_VERTICES)  /* the polygons' vertex pool */ \
+    X(vec3_t, normals, RT_MAX_VERTICES)   /* per-vertex normals of patches (unit) */ \
+    X(xform_t, xforms, RT_MAX_XFORMS) \
+    X(shape_t, shapes, RT_MAX_SHAPES) \
+    X(csg_node_t, csg_nodes, RT_MAX_CSG_NODES) \
+    X(bvh_node_t, bvh_nodes, RT_MAX_BVH_NODES) \
+    X(prim_ref_t, bvh_prims, RT_MAX_PRIMITIVES)
 
-    const material_t *materials;
-    const light_t *lights;
-    const sphere_t *spheres;
-    const cone_t *cones;
-    const polygon_t *polygons;
-    const vec3_t *vertices;
-    const vec3_t *normals;    /* per-vertex normals of patches (unit) */
-    const bvh_node_t *bvh_nodes;
-    const prim_ref_t *bvh_prims;
-    const xform_t *xforms;
-    const shape_t *shapes;
-    const csg_node_t *csg_nodes;
-    const object_t *objects;
+/* The scene's settings, besides its tables. */
+#define FIELDS_scene_t(X) \
+    X(view_t, view, ) \
+    X(colour_t, background, ) \
+    X(uint16_t, width, )           /* the file's resolution */ \
+    X(uint16_t, height, ) \
+    X(real_t, light_intensity, )   /* I = sqrt(n) / (2 n) */ \
+    X(uint32_t, n_flat_skipped, )  /* zero-area polygons dropped by the reader */ \
+    X(int32_t, scale_log2, )       /* positions were read times 2^scale_log2 */
 
-    uint32_t n_materials, n_lights, n_spheres, n_cones, n_polygons;
-    uint32_t n_vertices, n_normals;
-    uint32_t n_xforms, n_shapes, n_csg_nodes, n_objects;
-    uint32_t n_flat_skipped;  /* zero-area polygons dropped by the reader */
-    int32_t scale_log2;       /* positions were read times 2^scale_log2 */
-    uint32_t n_bvh_nodes;
-} scene_t;
+/* Each table is a pointer and a length: `const T *name; uint32_t n_name;`. */
+#define RT_DECLARE_TABLE(type, table, cap) const type *table; uint32_t n_##table;
+#define RT_DECLARE_PRIM_TABLE(type, table, cap, KIND, name, use) RT_DECLARE_TABLE(type, table, cap)
+
+struct scene {
+    FIELDS_scene_t(RT_DECLARE_FIELD)
+    RT_PRIM_KINDS(RT_DECLARE_PRIM_TABLE)
+    RT_SCENE_TABLES(RT_DECLARE_TABLE)
+};
 
 /* RAM tables at the configured capacities, for scenes read at run time. */
+#define RT_STORE_TABLE(type, table, cap) type table[cap];
+#define RT_STORE_PRIM_TABLE(type, table, cap, KIND, name, use) RT_STORE_TABLE(type, table, cap)
 typedef struct {
     scene_t scene;
-    material_t materials[RT_MAX_MATERIALS];
-    light_t lights[RT_MAX_LIGHTS];
-    sphere_t spheres[RT_MAX_SPHERES];
-    cone_t cones[RT_MAX_CONES];
-    polygon_t polygons[RT_MAX_POLYGONS];
-    vec3_t vertices[RT_MAX_VERTICES];
-    vec3_t normals[RT_MAX_VERTICES];
-    xform_t xforms[RT_MAX_XFORMS];
-    shape_t shapes[RT_MAX_SHAPES];
-    csg_node_t csg_nodes[RT_MAX_CSG_NODES];
-    object_t objects[RT_MAX_OBJECTS];
-    bvh_node_t bvh_nodes[RT_MAX_BVH_NODES];
-    prim_ref_t bvh_prims[RT_MAX_PRIMITIVES];
+    RT_PRIM_KINDS(RT_STORE_PRIM_TABLE)
+    RT_SCENE_TABLES(RT_STORE_TABLE)
 } scene_store_t;
+
+/* Primitives of every kind together. */
+static inline uint32_t scene_prim_count(const scene_t *sc)
+{
+#define RT_PRIM_COUNT(type, table, cap, KIND, name, use) + sc->n_##table
+    return 0 RT_PRIM_KINDS(RT_PRIM_COUNT);
+#undef RT_PRIM_COUNT
+}
 
 #endif

@@ -11,7 +11,7 @@
  */
 #include "scene_hit.h"
 
-#include "solid.h"
+#include "prims.h"
 
 /* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h). */
 
@@ -65,49 +65,15 @@ static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, rea
     return true;
 }
 
+/* A primitive against the ray; the primitive the ray leaves is skipped
+ * unless the ray goes into it (ray.h). */
 static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
                      rt_stats_t *st, hit_t *h)
 {
-    uint32_t i = PRIM_INDEX(ref);
     bool self = ref == r->from;
     if (self && !r->from_far)
         return false; /* leaving its outside, or a plane: cannot meet it again */
-    switch (PRIM_KIND(ref)) {
-#if RT_USE_OBJECTS
-    case PRIM_OBJECT: {
-        uint16_t shape;
-        uint8_t face;
-        bool flip;
-        st->tests_object++;
-        if (!ray_hit_object(sc, &sc->objects[i], r, tmin, t, &shape, &face, &flip))
-            return false;
-        if (h) {
-            h->shape = shape;
-            h->face = face;
-            h->flip = flip;
-        }
-        return true;
-    }
-#endif
-#if RT_USE_SPHERES
-    case PRIM_SPHERE:
-        st->tests_sphere++;
-        return ray_hit_sphere(&sc->spheres[i], r, tmin, t, self);
-#endif
-#if RT_USE_CONES
-    case PRIM_CONE:
-        st->tests_cone++;
-        return ray_hit_cone(&sc->cones[i], r, tmin, t, self);
-#endif
-#if RT_USE_POLYGONS
-    case PRIM_POLYGON:
-        st->tests_polygon++;
-        return ray_hit_polygon(sc, &sc->polygons[i], r, tmin, t);
-#endif
-    default:
-        (void)sc, (void)r, (void)tmin, (void)t, (void)i, (void)st, (void)h, (void)self;
-        return false;
-    }
+    return prim_hit(sc, ref, r, tmin, t, self, st, h);
 }
 
 typedef struct {
@@ -147,7 +113,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
     bool found = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
-        st->bvh_nodes++;
+        st->bvh_nodes_visited++;
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count; k++) {
                 /* Ties go to the lowest reference, as in table order: a
@@ -206,7 +172,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     uint32_t node = 0;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
-        st->bvh_nodes++;
+        st->bvh_nodes_visited++;
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count; k++) {
                 real_t t = tmax;
@@ -233,15 +199,15 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     bool found = false;
-    const uint32_t counts[4] = { sc->n_spheres, sc->n_cones, sc->n_polygons, sc->n_objects };
-    for (uint32_t kind = 0; kind < 4; kind++) {
-        for (uint32_t i = 0; i < counts[kind]; i++) {
-            if (hit_prim(sc, PRIM_REF(kind, i), r, tmin, &h->t, st, h)) {
-                h->kind = (uint8_t)kind;
-                h->index = i;
-                found = true;
-            }
-        }
+#define RT_BRUTE_KIND(type, table, cap, KIND, name, use) \
+    for (uint32_t i = 0; i < sc->n_##table; i++) { \
+        if (hit_prim(sc, PRIM_REF(PRIM_##KIND, i), r, tmin, &h->t, st, h)) { \
+            h->kind = PRIM_##KIND; \
+            h->index = i; \
+            found = true; \
+        } \
     }
+    RT_PRIM_KINDS(RT_BRUTE_KIND)
+#undef RT_BRUTE_KIND
     return found;
 }

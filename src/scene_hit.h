@@ -8,16 +8,6 @@
 #include "geometry.h"
 #include "stats.h"
 
-typedef struct {
-    real_t t;
-    uint8_t kind;     /* enum prim_kind */
-    uint32_t index;   /* into the kind's table */
-    /* PRIM_OBJECT: the shape, face and flip of the boundary hit */
-    uint16_t shape;
-    uint8_t face;
-    bool flip;
-} hit_t;
-
 /* Nearest hit with tmin < t < h->t (set h->t to the ray's far limit). */
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);
 

@@ -45,10 +45,7 @@ void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *m
 uint32_t solid_max_spans(const scene_t *sc, uint16_t root);
 uint32_t solid_depth(const scene_t *sc, uint16_t root);
 
-/* Nearest boundary of the object in (tmin, *t): sets *t, the shape, face
- * and flip of that boundary. */
-bool ray_hit_object(const scene_t *sc, const object_t *o, const ray_t *r, real_t tmin, real_t *t,
-                    uint16_t *shape, uint8_t *face, bool *flip);
+/* ray_hit_object, the nearest boundary of an object: object.h. */
 
 /* Outward unit normal (world space) of a shape's face at world point p. */
 vec3_t shape_normal(const scene_t *sc, uint16_t shape, uint8_t face, vec3_t p);

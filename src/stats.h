@@ -1,14 +1,38 @@
-/* stats.h - ray and intersection-test counters (rt --stats). */
+/*
+ * stats.h - the render's counters: one list, read by `rt --stats` (text
+ * or JSON), the firmware's report and the benchmarks, with the same keys
+ * everywhere.
+ */
 #ifndef STATS_H
 #define STATS_H
 
 #include <stdint.h>
 
+#include "prim_kinds.h"
+
+/* X(key, what it counts). Besides these, one "<kind>_tests" counter per
+ * primitive kind (prim_kinds.h): intersection tests of that kind. */
+#define RT_STATS_COUNTERS(X) \
+    X(eye_rays, "eye rays traced") \
+    X(eye_hits, "eye rays that hit something") \
+    X(reflect_rays, "reflection rays traced") \
+    X(refract_rays, "refraction rays traced") \
+    X(shadow_rays, "shadow rays, including lights a patch hides from itself") \
+    X(bvh_nodes_visited, "BVH nodes visited")
+
+#define RT_STATS_DECLARE(key, what) uint64_t key;
 typedef struct {
-    uint64_t eye_rays, eye_hits;
-    uint64_t reflect_rays, refract_rays, shadow_rays;
-    uint64_t tests_sphere, tests_cone, tests_polygon, tests_object;
-    uint64_t bvh_nodes;     /* BVH nodes visited */
+    RT_STATS_COUNTERS(RT_STATS_DECLARE)
+    uint64_t prim_tests[PRIM_KIND_COUNT]; /* by enum prim_kind */
 } rt_stats_t;
+#undef RT_STATS_DECLARE
+
+/* Calls visit(ctx, key, value) for every counter, in list order, then
+ * the per-kind tests. */
+typedef void rt_stats_visit_fn(void *ctx, const char *key, uint64_t value);
+void rt_stats_each(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
+
+/* Intersection tests of every kind together. */
+uint64_t rt_stats_tests(const rt_stats_t *st);
 
 #endif

@@ -1,8 +1,8 @@
 /* trace.c - the recursive Whitted tracer; recursion depth <= RT_MAX_DEPTH. */
 #include "trace.h"
 
+#include "prims.h"
 #include "scene_hit.h"
-#include "solid.h"
 
 typedef struct {
     vec3_t point;
@@ -11,6 +11,7 @@ typedef struct {
     bool entering;   /* D . Ng < 0 */
     bool smooth;     /* a patch: n and n_out may disagree */
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
+    bool far_root;   /* a ray going through meets it again only at its far root */
     real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
 } surface_t;
@@ -18,49 +19,17 @@ typedef struct {
 RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
 {
     surface_t s;
-    vec3_t ng, n;
-    uint16_t mat;
+    prim_surface_t ps;
     s.point = ray_at(ray, h->t);
-    s.ref = PRIM_REF(h->kind, h->index);
-    s.smooth = false;
-    s.offset = 0;
-    switch (h->kind) {
-#if RT_USE_SPHERES
-    case PRIM_SPHERE:
-        ng = n = sphere_normal(&sc->spheres[h->index], s.point);
-        mat = sc->spheres[h->index].material;
-        break;
-#endif
-#if RT_USE_CONES
-    case PRIM_CONE:
-        ng = n = cone_normal(&sc->cones[h->index], s.point);
-        mat = sc->cones[h->index].material;
-        break;
-#endif
-#if RT_USE_OBJECTS
-    case PRIM_OBJECT:
-        ng = n = shape_normal(sc, h->shape, h->face, s.point);
-        if (h->flip) /* a subtracted solid's surface faces the other way */
-            ng = n = v3_neg(ng);
-        mat = sc->shapes[h->shape].material;
-        s.ref = PRIM_NONE;
-        s.offset = sc->shapes[h->shape].kind == SHAPE_TORUS ? RT_TORUS_OFFSET : RT_SOLID_OFFSET;
-        break;
-#endif
-    default: {
-        const polygon_t *p = &sc->polygons[h->index];
-        ng = p->normal;
-        n = polygon_shading_normal(sc, p, s.point);
-        s.smooth = p->normals != POLY_NO_NORMALS;
-        s.offset = RT_PLANE_OFFSET;
-        mat = p->material;
-        break;
-    }
-    }
-    s.entering = v3_dot(ray->dir, ng) < 0;
-    s.n_out = s.entering ? ng : v3_neg(ng);
-    s.n = v3_dot(n, ray->dir) < 0 ? n : v3_neg(n);
-    s.m = &sc->materials[mat];
+    prim_surface(sc, h, s.point, &ps);
+    s.ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
+    s.far_root = ps.leave == LEAVE_FAR_ROOT;
+    s.smooth = ps.smooth;
+    s.offset = ps.offset;
+    s.entering = v3_dot(ray->dir, ps.ng) < 0;
+    s.n_out = s.entering ? ps.ng : v3_neg(ps.ng);
+    s.n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+    s.m = &sc->materials[ps.material];
     return s;
 }
 
@@ -73,7 +42,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 {
     out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
-    out->from_far = PRIM_KIND(s->ref) != PRIM_POLYGON && through == s->entering;
+    out->from_far = s->far_root && through == s->entering;
 }
 
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)

@@ -64,8 +64,8 @@ fi
 # and stay within the image tolerance of the full tree.
 "$RT" scenes/spd/rings-2.nff -o "$OUT/rings-2-full.png" --size 96x96 --stats --quiet 2>"$OUT/full.stats"
 "$RT" scenes/spd/rings-2.nff -o "$OUT/rings-2-adaptive.png" --size 96x96 --adaptive 0.1 --stats --quiet 2>"$OUT/adaptive.stats"
-full=$(awk '/^reflect rays/ { print $3 }' "$OUT/full.stats")
-adap=$(awk '/^reflect rays/ { print $3 }' "$OUT/adaptive.stats")
+full=$(awk '$1 == "reflect_rays" { print $2 }' "$OUT/full.stats")
+adap=$(awk '$1 == "reflect_rays" { print $2 }' "$OUT/adaptive.stats")
 if [ -n "$full" ] && [ -n "$adap" ] && [ "$adap" -lt "$full" ] &&
    cmp=$("$RT" compare "$OUT/rings-2-adaptive.png" "$OUT/rings-2-full.png" --psnr-min 40); then
     pass=$((pass + 1)); printf '  ok    %-28s reflect rays %s -> %s, %s\n' "adaptive depth 0.1" "$full" "$adap" "$cmp"

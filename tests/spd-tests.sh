@@ -8,13 +8,13 @@ OUT=${2:-build/test-spd}
 mkdir -p "$OUT"
 pass=0 fail=0
 echo "SPD-mode tests: ray statistics, fixed vs double, within 1%"
-stat() { awk -v k="$1" 'index($0, k) == 1 { print $NF }' "$2"; }
+stat() { awk -v k="$1" '$1 == k { print $2 }' "$2"; }
 for s in balls-2 rings-2 teapot-2 tetra-2; do
     "$RT" scenes/spd/$s.nff -o "$OUT/$s-fixed.png" --spd --fixed --stats --quiet 2>"$OUT/$s-fixed.stats" &&
     "$RT" scenes/spd/$s.nff -o "$OUT/$s-double.png" --spd --double --stats --quiet 2>"$OUT/$s-double.stats" || {
         fail=$((fail + 1)); echo "  FAIL  $s: render failed"; continue; }
     line="" bad=0
-    for k in "eye rays" "eye hits" "reflect rays" "refract rays" "shadow rays"; do
+    for k in eye_rays eye_hits reflect_rays refract_rays shadow_rays; do
         f=$(stat "$k" "$OUT/$s-fixed.stats") d=$(stat "$k" "$OUT/$s-double.stats")
         dev=$(awk -v f="$f" -v d="$d" 'BEGIN { x = f - d; if (x < 0) x = -x; y = (d > 0) ? 100 * x / d : ((x > 0) ? 100 : 0); printf "%.3f", y }')
         line="$line $k $f/$d ($dev%);"

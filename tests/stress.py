@@ -97,7 +97,7 @@ def render(path, backend, size=None, extra=()):
         raise RuntimeError(r.stderr.strip())
     stats = {}
     for line in r.stderr.splitlines():
-        m = re.match(r"^([a-z ]+?)\s{2,}(-?\d+)", line)
+        m = re.match(r"^([a-z0-9_]+)\s+(-?\d+)$", line)
         if m:
             stats[m.group(1).strip()] = int(m.group(2))
     return png, stats
@@ -336,8 +336,8 @@ def recursion():
     rays = {}
 
     def bounded(fp, dp, fs, ds):
-        eye = fs.get("eye rays", 0)
-        sec = fs.get("reflect rays", 0) + fs.get("refract rays", 0)
+        eye = fs.get("eye_rays", 0)
+        sec = fs.get("reflect_rays", 0) + fs.get("refract_rays", 0)
         limit = eye * (2 ** 5 - 2)  # two children per ray, depth 5
         return sec <= limit, "secondary rays %d <= %d (depth 5 bound)" % (sec, limit)
     mirrors = ("b 0 0 0\n" + view([0.5, -1.5, 0.3], [0, 3, 0], 60) + "l 0 0 2.5\n"

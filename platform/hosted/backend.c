@@ -5,8 +5,8 @@
 
 #include "camera.h"
 #include "nff.h"
+#include "prims.h"
 #include "scene_hit.h"
-#include "solid.h"
 #include "trace.h"
 
 #if RT_BACKEND_DOUBLE
@@ -109,17 +109,10 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     h.t = RT_T_FAR;
     if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
         return false;
-    vec3_t p = ray_at(&r, h.t), n;
-    switch (h.kind) {
-    case PRIM_OBJECT:
-        n = shape_normal(sc, h.shape, h.face, p);
-        if (h.flip)
-            n = v3_neg(n);
-        break;
-    case PRIM_SPHERE: n = sphere_normal(&sc->spheres[h.index], p); break;
-    case PRIM_CONE: n = cone_normal(&sc->cones[h.index], p); break;
-    default: n = polygon_shading_normal(sc, &sc->polygons[h.index], p); break;
-    }
+    vec3_t p = ray_at(&r, h.t);
+    prim_surface_t surf;
+    prim_surface(sc, &h, p, &surf);
+    vec3_t n = surf.n;
     out->t = w * to_double(h.t);
 #if RT_BACKEND_FIXED
     out->t_raw = (int64_t)h.t;
@@ -151,5 +144,6 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    BACKEND_NAME, load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, probe, bounds, eye_dir,
+    BACKEND_NAME, load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, rt_stats_each, probe,
+    bounds, eye_dir,
 };

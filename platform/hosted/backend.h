@@ -25,7 +25,7 @@ typedef struct {
     int64_t t_raw;      /* t exactly as the backend holds it (fixed: units of 2^-FX_FRAC_BITS) */
     double normal[3];   /* shading normal as the tracer uses it (unit, not flipped) */
     double point[3];    /* the hit point as the backend computes it */
-    int kind;           /* 0 sphere, 1 cone, 2 polygon/patch */
+    int kind;           /* enum prim_kind */
     uint32_t index;
 } probe_hit_t;
 
@@ -42,6 +42,8 @@ typedef struct {
 
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
+    /* rt_stats_each (stats.h): the counters by key. */
+    void (*stats_each)(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
     /* Nearest hit of one ray against the loaded scene (for tests), through
      * the BVH or, with `brute`, by testing every primitive. Origin and t
      * are in the file's units (the backend applies the reader's scale). */

@@ -13,6 +13,7 @@
 #include "backend.h"
 #include "image.h"
 #include "receive.h"
+#include "report.h"
 
 #define EXIT_BAD_INPUT 2
 
@@ -174,42 +175,6 @@ static int geometry_bits_lost(const rt_backend_t *be)
     return lost > 0 ? lost : 0;
 }
 
-static void print_stats(const rt_backend_t *be, const rt_stats_t *st, int w, int h, double secs)
-{
-    bvh_stats_t bs;
-    be->bvh_stats(&bs);
-    fprintf(stderr, "scene scale      2^%d (positions read times this)\n", (int)be->scale_log2());
-    fprintf(stderr, "range bits lost  %d (to a far camera or light)\n", geometry_bits_lost(be));
-    if (be->saturations(false) >= 0)
-        fprintf(stderr, "saturations      %lld\n", (long long)be->saturations(false));
-    fprintf(stderr,
-            "primitives       %u\n"
-            "bvh nodes        %u (%u leaves, depth %u, largest leaf %u)\n"
-            "bvh SAH estimate %.2f node visits, %.2f primitive tests per ray\n",
-            (unsigned)bs.primitives, (unsigned)bs.nodes, (unsigned)bs.leaves, (unsigned)bs.max_depth,
-            (unsigned)bs.max_leaf_size, bs.sah_nodes_milli / 1000.0, bs.sah_tests_milli / 1000.0);
-    fprintf(stderr,
-            "backend          %s\n"
-            "image            %dx%d\n"
-            "eye rays         %llu\n"
-            "eye hits         %llu\n"
-            "reflect rays     %llu\n"
-            "refract rays     %llu\n"
-            "shadow rays      %llu\n"
-            "sphere tests     %llu\n"
-            "cone tests       %llu\n"
-            "polygon tests    %llu\n"
-            "object tests     %llu\n"
-            "bvh nodes visited %llu\n"
-            "render time      %.6f s\n",
-            be->name, w, h, (unsigned long long)st->eye_rays, (unsigned long long)st->eye_hits,
-            (unsigned long long)st->reflect_rays, (unsigned long long)st->refract_rays,
-            (unsigned long long)st->shadow_rays, (unsigned long long)st->tests_sphere,
-            (unsigned long long)st->tests_cone, (unsigned long long)st->tests_polygon,
-            (unsigned long long)st->tests_object,
-            (unsigned long long)st->bvh_nodes, secs);
-}
-
 static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
@@ -346,7 +311,7 @@ static int cmd_render(int argc, char **argv)
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
     if (stats)
-        print_stats(be, &st, hs.img.width, hs.img.height, secs);
+        report_stats(stderr, REPORT_TEXT, be, &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
     char why[256];
     if (image_write(out_path, &hs.img, why, sizeof why) != 0) {
         fprintf(stderr, "rt: %s\n", why);

@@ -11,6 +11,7 @@
  * contains, so the firmware can be built for exactly that scene.
  * --text instead embeds the NFF text, for builds that read it at boot.
  */
+#include <ctype.h>
 #include <errno.h>
 #include <inttypes.h>
 #include <stdio.h>
@@ -26,198 +27,113 @@
 
 static scene_store_t store;
 
-static void emit_vec(FILE *f, vec3_t v) { fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }", v.x, v.y, v.z); }
+/* ---- values: one emitter per field type, in the fixed format --------- */
 
-static void emit_mat(FILE *f, const real_t m[3][3])
+typedef void emit_fn(FILE *f, const void *value);
+
+static void emit_i32(FILE *f, const void *v) { fprintf(f, "%" PRId32, *(const int32_t *)v); }
+static void emit_u32(FILE *f, const void *v) { fprintf(f, "%" PRIu32 "u", *(const uint32_t *)v); }
+static void emit_u16(FILE *f, const void *v) { fprintf(f, "%u", (unsigned)*(const uint16_t *)v); }
+static void emit_u8(FILE *f, const void *v) { fprintf(f, "%u", (unsigned)*(const uint8_t *)v); }
+static void emit_i64(FILE *f, const void *v) { fprintf(f, "INT64_C(%" PRId64 ")", *(const int64_t *)v); }
+static void emit_vec3_t(FILE *f, const void *v)
 {
+    const vec3_t *p = v;
+    fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }", p->x, p->y, p->z);
+}
+static void emit_prim_ref_t(FILE *f, const void *v) { fprintf(f, "0x%08" PRIx32 "u", *(const prim_ref_t *)v); }
+static void emit_view_t(FILE *f, const void *v);
+
+/* The emitter of a field type (real_t is int32_t, shine_t uint32_t and
+ * colour_t vec3_t in the fixed build). */
+#define EMITTER(type) \
+    _Generic((type){ 0 }, int32_t: emit_i32, uint32_t: emit_u32, uint16_t: emit_u16, uint8_t: emit_u8, \
+             int64_t: emit_i64, vec3_t: emit_vec3_t, view_t: emit_view_t)
+
+/* n values of an array field with dimensions dims ("" for a scalar,
+ * "[3][3]" for a matrix), as nested braces. */
+static void emit_array(FILE *f, const char *dims, const unsigned char *p, size_t n, size_t elem, emit_fn *fn)
+{
+    if (!*dims) {
+        fn(f, p);
+        return;
+    }
+    char *rest;
+    size_t groups = strtoul(dims + 1, &rest, 10);
     fprintf(f, "{ ");
-    for (int i = 0; i < 3; i++)
-        fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }%s", m[i][0], m[i][1], m[i][2], i < 2 ? ", " : " }");
+    for (size_t i = 0; i < groups; i++) {
+        emit_array(f, rest + 1, p + i * (n / groups) * elem, n / groups, elem, fn);
+        fprintf(f, i + 1 < groups ? ", " : " }");
+    }
 }
 
-/* A table of vectors (vertices, patch normals); nothing for an empty one. */
-static void emit_vec_table(FILE *f, const char *name, const vec3_t *v, uint32_t n)
+static void emit_field(FILE *f, const char *name, const char *dims, const void *p, size_t size, size_t elem,
+                       emit_fn *fn)
+{
+    fprintf(f, ".%s = ", name);
+    emit_array(f, dims, p, size / elem, elem, fn);
+    fprintf(f, ", ");
+}
+
+/* A struct, field by field from its FIELDS_<type> list (scene.h and the
+ * kind headers), so the tables cannot miss a field the tracer reads. */
+#define EMIT_FIELD(type, name, dims) emit_field(f, #name, #dims, &e->name, sizeof e->name, sizeof(type), EMITTER(type));
+#define DEFINE_EMIT_STRUCT(type) \
+    static void emit_##type(FILE *f, const void *v) \
+    { \
+        const type *e = v; \
+        fprintf(f, "{ "); \
+        FIELDS_##type(EMIT_FIELD) fprintf(f, "}"); \
+    }
+#define DEFINE_EMIT_PRIM(type, table, cap, KIND, name, use) DEFINE_EMIT_STRUCT(type)
+/* the element types of scene.h's tables, and the view */
+DEFINE_EMIT_STRUCT(material_t)
+DEFINE_EMIT_STRUCT(light_t)
+DEFINE_EMIT_STRUCT(xform_t)
+DEFINE_EMIT_STRUCT(shape_t)
+DEFINE_EMIT_STRUCT(csg_node_t)
+DEFINE_EMIT_STRUCT(bvh_node_t)
+DEFINE_EMIT_STRUCT(view_t)
+RT_PRIM_KINDS(DEFINE_EMIT_PRIM)
+
+/* ---- tables and the scene ------------------------------------------------ */
+
+static void emit_table(FILE *f, const char *type, const char *name, const void *rows, uint32_t n, size_t size,
+                       emit_fn *fn)
 {
     if (!n)
         return;
-    fprintf(f, "static const vec3_t %s[%" PRIu32 "] TABLE = {\n", name, n);
+    fprintf(f, "static const %s %s[%" PRIu32 "] TABLE = {\n", type, name, n);
     for (uint32_t i = 0; i < n; i++) {
         fprintf(f, "    ");
-        emit_vec(f, v[i]);
+        fn(f, (const unsigned char *)rows + i * size);
         fprintf(f, ",\n");
     }
     fprintf(f, "};\n\n");
 }
 
-static void emit_wide(FILE *f, real_wide_t w) { fprintf(f, "INT64_C(%" PRId64 ")", w); }
+static void emit_table_ref(FILE *f, const char *name, uint32_t n)
+{
+    fprintf(f, "    .%s = %s, .n_%s = %" PRIu32 ",\n", name, n ? name : "0", name, n);
+}
 
 static void emit_tables(FILE *f, const scene_t *sc)
 {
     fprintf(f, "#define TABLE __attribute__((section(\".scene.tables\")))\n\n");
-    if (sc->n_materials) {
-        fprintf(f, "static const material_t materials[%" PRIu32 "] TABLE = {\n", sc->n_materials);
-        for (uint32_t i = 0; i < sc->n_materials; i++) {
-            const material_t *m = &sc->materials[i];
-            fprintf(f, "    { .colour = ");
-            emit_vec(f, m->colour);
-            fprintf(f, ", .kd = %" PRId32 ", .ks = %" PRId32 ", .t = %" PRId32 ", .ior = %" PRId32
-                       ", .shine = %" PRIu32 "u },\n",
-                    m->kd, m->ks, m->t, m->ior, m->shine);
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_lights) {
-        fprintf(f, "static const light_t lights[%" PRIu32 "] TABLE = {\n", sc->n_lights);
-        for (uint32_t i = 0; i < sc->n_lights; i++) {
-            fprintf(f, "    { .pos = ");
-            emit_vec(f, sc->lights[i].pos);
-            fprintf(f, ", .colour = ");
-            emit_vec(f, sc->lights[i].colour);
-            fprintf(f, " },\n");
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_spheres) {
-        fprintf(f, "static const sphere_t spheres[%" PRIu32 "] TABLE = {\n", sc->n_spheres);
-        for (uint32_t i = 0; i < sc->n_spheres; i++) {
-            const sphere_t *s = &sc->spheres[i];
-            fprintf(f, "    { .centre = ");
-            emit_vec(f, s->centre);
-            fprintf(f, ", .radius = %" PRId32 ", .radius2 = ", s->radius);
-            emit_wide(f, s->radius2);
-            fprintf(f, ", .material = %u },\n", (unsigned)s->material);
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_cones) {
-        fprintf(f, "static const cone_t cones[%" PRIu32 "] TABLE = {\n", sc->n_cones);
-        for (uint32_t i = 0; i < sc->n_cones; i++) {
-            const cone_t *c = &sc->cones[i];
-            fprintf(f, "    { .base = ");
-            emit_vec(f, c->base);
-            fprintf(f, ", .axis = ");
-            emit_vec(f, c->axis);
-            fprintf(f, ", .height = %" PRId32 ", .r0 = %" PRId32 ", .slope = %" PRId32 ",\n      .bound_centre = ",
-                    c->height, c->r0, c->slope);
-            emit_vec(f, c->bound_centre);
-            fprintf(f, ", .bound_radius = %" PRId32 ", .bound_radius2 = ", c->bound_radius);
-            emit_wide(f, c->bound_radius2);
-            fprintf(f, ", .material = %u },\n", (unsigned)c->material);
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_polygons) {
-        fprintf(f, "static const polygon_t polygons[%" PRIu32 "] TABLE = {\n", sc->n_polygons);
-        for (uint32_t i = 0; i < sc->n_polygons; i++) {
-            const polygon_t *p = &sc->polygons[i];
-            fprintf(f, "    { .normal = ");
-            emit_vec(f, p->normal);
-            fprintf(f, ", .offset = %" PRId32 ", .box_min = ", p->offset);
-            emit_vec(f, p->box_min);
-            fprintf(f, ", .box_max = ");
-            emit_vec(f, p->box_max);
-            fprintf(f, ",\n      .first = %" PRIu32 ", .normals = %" PRIu32 "u, .count = %u, .material = %u, .drop_axis = %u, .convex = %u },\n",
-                    p->first, p->normals, (unsigned)p->count, (unsigned)p->material, (unsigned)p->drop_axis,
-                    (unsigned)p->convex);
-        }
-        fprintf(f, "};\n\n");
-    }
-    emit_vec_table(f, "vertices", sc->vertices, sc->n_vertices);
-    emit_vec_table(f, "normals", sc->normals, sc->n_normals);
+#define EMIT_TABLE(type, table, cap) emit_table(f, #type, #table, sc->table, sc->n_##table, sizeof(type), emit_##type);
+#define EMIT_PRIM_TABLE(type, table, cap, KIND, name, use) EMIT_TABLE(type, table, cap)
+    RT_PRIM_KINDS(EMIT_PRIM_TABLE)
+    RT_SCENE_TABLES(EMIT_TABLE)
 
-    if (sc->n_xforms) {
-        fprintf(f, "static const xform_t xforms[%" PRIu32 "] TABLE = {\n", sc->n_xforms);
-        for (uint32_t i = 0; i < sc->n_xforms; i++) {
-            const xform_t *x = &sc->xforms[i];
-            fprintf(f, "    { .m = ");
-            emit_mat(f, x->m);
-            fprintf(f, ",\n      .t = { %" PRId32 ", %" PRId32 ", %" PRId32 " },\n      .im = ", x->t[0], x->t[1], x->t[2]);
-            emit_mat(f, x->im);
-            fprintf(f, " },\n");
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_shapes) {
-        fprintf(f, "static const shape_t shapes[%" PRIu32 "] TABLE = {\n", sc->n_shapes);
-        for (uint32_t i = 0; i < sc->n_shapes; i++) {
-            const shape_t *p = &sc->shapes[i];
-            fprintf(f, "    { .q = {");
-            for (int k = 0; k < 10; k++)
-                fprintf(f, " %" PRId32 ",", p->q[k]);
-            fprintf(f, " },\n      .lo = ");
-            emit_vec(f, p->lo);
-            fprintf(f, ", .hi = ");
-            emit_vec(f, p->hi);
-            fprintf(f, ", .bound = %" PRId32 ", .xform = %u, .material = %u, .kind = %u },\n", p->bound,
-                    (unsigned)p->xform, (unsigned)p->material, (unsigned)p->kind);
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_csg_nodes) {
-        fprintf(f, "static const csg_node_t csg_nodes[%" PRIu32 "] TABLE = {\n", sc->n_csg_nodes);
-        for (uint32_t i = 0; i < sc->n_csg_nodes; i++)
-            fprintf(f, "    { .a = %u, .b = %u, .op = %u },\n", (unsigned)sc->csg_nodes[i].a,
-                    (unsigned)sc->csg_nodes[i].b, (unsigned)sc->csg_nodes[i].op);
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_objects) {
-        fprintf(f, "static const object_t objects[%" PRIu32 "] TABLE = {\n", sc->n_objects);
-        for (uint32_t i = 0; i < sc->n_objects; i++) {
-            fprintf(f, "    { .box_min = ");
-            emit_vec(f, sc->objects[i].box_min);
-            fprintf(f, ", .box_max = ");
-            emit_vec(f, sc->objects[i].box_max);
-            fprintf(f, ", .root = %u },\n", (unsigned)sc->objects[i].root);
-        }
-        fprintf(f, "};\n\n");
-    }
-    if (sc->n_bvh_nodes) {
-        fprintf(f, "static const bvh_node_t bvh_nodes[%" PRIu32 "] TABLE = {\n", sc->n_bvh_nodes);
-        for (uint32_t i = 0; i < sc->n_bvh_nodes; i++) {
-            const bvh_node_t *n = &sc->bvh_nodes[i];
-            fprintf(f, "    { ");
-            emit_vec(f, n->min);
-            fprintf(f, ", ");
-            emit_vec(f, n->max);
-            fprintf(f, ", %" PRIu32 ", %u, %u },\n", n->index, (unsigned)n->count, (unsigned)n->axis);
-        }
-        fprintf(f, "};\n\n");
-        uint32_t n_prims = sc->n_spheres + sc->n_cones + sc->n_polygons + sc->n_objects;
-        fprintf(f, "static const prim_ref_t bvh_prims[%" PRIu32 "] TABLE = {", n_prims);
-        for (uint32_t i = 0; i < n_prims; i++)
-            fprintf(f, "%s0x%08" PRIx32 "u,", i % 8 ? " " : "\n    ", sc->bvh_prims[i]);
-        fprintf(f, "\n};\n\n");
-    }
-
-    const view_t *v = &sc->view;
-    fprintf(f, "const scene_t rt_scene TABLE = {\n    .view = { .from = ");
-    emit_vec(f, v->from);
-    fprintf(f, ", .at = ");
-    emit_vec(f, v->at);
-    fprintf(f, ", .up = ");
-    emit_vec(f, v->up);
-    fprintf(f, ", .angle = %" PRId32 ", .tan_half = %" PRId64 " },\n    .background = ", v->angle,
-            (int64_t)v->tan_half);
-    emit_vec(f, sc->background);
-    fprintf(f, ",\n    .width = %u, .height = %u, .light_intensity = %" PRId32 ",\n", (unsigned)sc->width,
-            (unsigned)sc->height, sc->light_intensity);
-    fprintf(f, "    .materials = %s, .lights = %s, .spheres = %s, .cones = %s,\n",
-            sc->n_materials ? "materials" : "0", sc->n_lights ? "lights" : "0",
-            sc->n_spheres ? "spheres" : "0", sc->n_cones ? "cones" : "0");
-    fprintf(f, "    .polygons = %s, .vertices = %s, .normals = %s,\n", sc->n_polygons ? "polygons" : "0",
-            sc->n_vertices ? "vertices" : "0", sc->n_normals ? "normals" : "0");
-    fprintf(f, "    .bvh_nodes = %s, .bvh_prims = %s, .n_bvh_nodes = %" PRIu32 ",\n",
-            sc->n_bvh_nodes ? "bvh_nodes" : "0", sc->n_bvh_nodes ? "bvh_prims" : "0", sc->n_bvh_nodes);
-    fprintf(f, "    .xforms = %s, .shapes = %s, .csg_nodes = %s, .objects = %s,\n", sc->n_xforms ? "xforms" : "0",
-            sc->n_shapes ? "shapes" : "0", sc->n_csg_nodes ? "csg_nodes" : "0", sc->n_objects ? "objects" : "0");
-    fprintf(f, "    .n_xforms = %" PRIu32 ", .n_shapes = %" PRIu32 ", .n_csg_nodes = %" PRIu32 ", .n_objects = %" PRIu32 ",\n",
-            sc->n_xforms, sc->n_shapes, sc->n_csg_nodes, sc->n_objects);
-    fprintf(f, "    .scale_log2 = %" PRId32 ",\n", sc->scale_log2);
-    fprintf(f, "    .n_materials = %" PRIu32 ", .n_lights = %" PRIu32 ", .n_spheres = %" PRIu32
-               ", .n_cones = %" PRIu32 ", .n_polygons = %" PRIu32 ",\n",
-            sc->n_materials, sc->n_lights, sc->n_spheres, sc->n_cones, sc->n_polygons);
-    fprintf(f, "    .n_vertices = %" PRIu32 ", .n_normals = %" PRIu32 ", .n_flat_skipped = %" PRIu32 ",\n};\n",
-            sc->n_vertices, sc->n_normals, sc->n_flat_skipped);
+    const scene_t *e = sc;
+    fprintf(f, "const scene_t rt_scene TABLE = {\n    ");
+    FIELDS_scene_t(EMIT_FIELD)
+    fprintf(f, "\n");
+#define EMIT_TABLE_REF(type, table, cap) emit_table_ref(f, #table, sc->n_##table);
+#define EMIT_PRIM_TABLE_REF(type, table, cap, KIND, name, use) EMIT_TABLE_REF(type, table, cap)
+    RT_PRIM_KINDS(EMIT_PRIM_TABLE_REF)
+    RT_SCENE_TABLES(EMIT_TABLE_REF)
+    fprintf(f, "};\n");
 }
 
 static void emit_text(FILE *f, const char *text, size_t len)
@@ -226,6 +142,15 @@ static void emit_text(FILE *f, const char *text, size_t len)
     for (size_t i = 0; i < len; i++)
         fprintf(f, "%s%d,", i % 20 ? " " : "\n    ", (unsigned char)text[i]);
     fprintf(f, "\n};\nconst size_t rt_scene_text_len = %zu;\n", len);
+}
+
+/* "SCENE_N_" and the table's name in capitals. */
+static void emit_count(FILE *f, const char *table, uint32_t n)
+{
+    fprintf(f, "#define SCENE_N_");
+    for (const char *c = table; *c; c++)
+        fputc(toupper((unsigned char)*c), f);
+    fprintf(f, " %" PRIu32 "\n", n);
 }
 
 /* What the scene uses, for building firmware for exactly that scene. */
@@ -243,34 +168,39 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
     fprintf(f, "/* Generated by rt-scenec from %s: do not edit. */\n", src);
     fprintf(f, "#ifndef SCENE_DATA_H\n#define SCENE_DATA_H\n\n");
     fprintf(f, "#define SCENE_WIDTH %u\n#define SCENE_HEIGHT %u\n", (unsigned)sc->width, (unsigned)sc->height);
-    fprintf(f, "#define SCENE_N_MATERIALS %" PRIu32 "\n#define SCENE_N_LIGHTS %" PRIu32 "\n", sc->n_materials,
-            sc->n_lights);
-    fprintf(f, "#define SCENE_N_SPHERES %" PRIu32 "\n#define SCENE_N_CONES %" PRIu32 "\n", sc->n_spheres,
-            sc->n_cones);
-    fprintf(f, "#define SCENE_N_POLYGONS %" PRIu32 "\n#define SCENE_N_VERTICES %" PRIu32 "\n\n",
-            sc->n_polygons, sc->n_vertices);
+#define EMIT_COUNT(type, table, cap) emit_count(f, #table, sc->n_##table);
+#define EMIT_PRIM_COUNT(type, table, cap, KIND, name, use) EMIT_COUNT(type, table, cap)
+    RT_PRIM_KINDS(EMIT_PRIM_COUNT)
+    RT_SCENE_TABLES(EMIT_COUNT)
     bvh_stats_t bs;
     bvh_tree_stats(sc, &bs);
-    fprintf(f, "/* BVH: %" PRIu32 " nodes, %" PRIu32 " leaves, depth %" PRIu32 ", largest leaf %" PRIu32
-               ";\n * SAH estimate per ray: %.2f node visits, %.2f primitive tests */\n",
+    fprintf(f, "\n/* BVH: %" PRIu32 " nodes, %" PRIu32 " leaves, depth %" PRIu32 ", largest leaf %" PRIu32
+               ";\n * SAH estimate per ray: %.2f node visits, %.2f primitive tests */\n\n",
             bs.nodes, bs.leaves, bs.max_depth, bs.max_leaf_size, bs.sah_nodes_milli / 1000.0,
             bs.sah_tests_milli / 1000.0);
-    fprintf(f, "#define SCENE_N_BVH_NODES %" PRIu32 "\n\n", bs.nodes);
+    /* RT_USE_<X> (rt_config.h) is set from SCENE_USES_<X> */
     fprintf(f, "/* What the scene uses; with PRUNE=1 the firmware is built with these\n"
                " * as its RT_USE_* switches (src/rt_config.h). */\n");
-    fprintf(f, "#define SCENE_USES_SPHERES %d\n", sc->n_spheres > 0);
-    fprintf(f, "#define SCENE_USES_CONES %d\n", sc->n_cones > 0);
-    fprintf(f, "#define SCENE_USES_POLYGONS %d\n", sc->n_polygons > 0);
-    fprintf(f, "#define SCENE_USES_OBJECTS %d\n", sc->n_objects > 0);
-    fprintf(f, "#define SCENE_USES_PATCHES %d\n", patches);
-    fprintf(f, "#define SCENE_USES_SHADOWS %d\n", sc->n_lights > 0);
-    fprintf(f, "#define SCENE_USES_SPECULAR %d\n", specular);
-    fprintf(f, "#define SCENE_USES_REFLECTION %d\n", reflection);
-    fprintf(f, "#define SCENE_USES_REFRACTION %d\n\n", refraction);
-    fprintf(f, "#if SCENE_PRUNE\n");
-    static const char *const names[] = { "SPHERES", "CONES", "POLYGONS", "OBJECTS", "PATCHES", "SHADOWS", "SPECULAR", "REFLECTION", "REFRACTION" };
-    for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)
-        fprintf(f, "#define RT_USE_%s SCENE_USES_%s\n", names[i], names[i]);
+    const char *use_prefix = "RT_USE_";
+    size_t skip = strlen(use_prefix);
+    struct {
+        const char *name;
+        bool used;
+    } uses[] = {
+#define USE_OF_KIND(type, table, cap, KIND, name, use) { #use, sc->n_##table > 0 },
+        RT_PRIM_KINDS(USE_OF_KIND)
+        { "RT_USE_PATCHES", patches },
+        { "RT_USE_SHADOWS", sc->n_lights > 0 },
+        { "RT_USE_SPECULAR", specular },
+        { "RT_USE_REFLECTION", reflection },
+        { "RT_USE_REFRACTION", refraction },
+    };
+    size_t n_uses = sizeof uses / sizeof uses[0];
+    for (size_t i = 0; i < n_uses; i++)
+        fprintf(f, "#define SCENE_USES_%s %d\n", uses[i].name + skip, uses[i].used);
+    fprintf(f, "\n#if SCENE_PRUNE\n");
+    for (size_t i = 0; i < n_uses; i++)
+        fprintf(f, "#define %s SCENE_USES_%s\n", uses[i].name, uses[i].name + skip);
     fprintf(f, "#endif\n\n#endif\n");
 }
 

@@ -41,7 +41,7 @@ int main(void)
             hits += scene_nearest(sc, &r, RT_T_MIN, &h, &st);
         }
     uint64_t total = icount_read() - t0 - rays_only;
-    uint64_t tests = st.tests_sphere + st.tests_cone + st.tests_polygon + st.tests_object;
+    uint64_t tests = rt_stats_tests(&st);
     uart_report_value("rays", (uint64_t)GRID * GRID);
     uart_report_value("hits", hits);
     uart_report_value("tests", tests);

@@ -28,6 +28,13 @@ _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out
 
 static uint8_t band[BOARD_BAND_LINES * BOARD_WIDTH * BOARD_BPP];
 
+/* The core's counters, keyed as on the host (stats.h). */
+static void report_counter(void *ctx, const char *key, uint64_t value)
+{
+    (void)ctx;
+    uart_report_value(key, value);
+}
+
 int main(void)
 {
     uart_init();
@@ -55,16 +62,7 @@ int main(void)
     uart_report_value("pixels", pixels);
     uart_report_value("render_instructions", instr);
     uart_report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
-    uart_report_value("eye_rays", st.eye_rays);
-    uart_report_value("eye_hits", st.eye_hits);
-    uart_report_value("reflect_rays", st.reflect_rays);
-    uart_report_value("refract_rays", st.refract_rays);
-    uart_report_value("shadow_rays", st.shadow_rays);
-    uart_report_value("sphere_tests", st.tests_sphere);
-    uart_report_value("cone_tests", st.tests_cone);
-    uart_report_value("polygon_tests", st.tests_polygon);
-    uart_report_value("object_tests", st.tests_object);
-    uart_report_value("bvh_nodes_visited", st.bvh_nodes);
+    rt_stats_each(&st, report_counter, 0);
     uart_report_value("stack_high_water", stack_high_water());
     uart_report_value("stack_size", stack_size());
     int guard = stack_guard_intact();

@@ -1,0 +1,51 @@
+/* sphere.h - the NFF 's' primitive (sphere.c). */
+#ifndef SPHERE_H
+#define SPHERE_H
+
+#include "ray.h"
+
+#define FIELDS_sphere_t(X) \
+    X(vec3_t, centre, ) \
+    X(real_t, radius, ) \
+    X(real_wide_t, radius2, ) /* exact r^2 */ \
+    X(uint16_t, material, )
+typedef struct { FIELDS_sphere_t(RT_DECLARE_FIELD) } sphere_t;
+
+/* NULL, or why the sphere is degenerate. */
+const char *sphere_init(sphere_t *s, vec3_t centre, real_t radius, uint16_t material);
+
+/* *t holds the nearest hit so far; a hit in (tmin, *t) replaces it and
+ * returns true. far_only: the ray starts on this surface going in. */
+bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only);
+
+/* Outward unit normal at a point on the surface. */
+vec3_t sphere_normal(const sphere_t *s, vec3_t p);
+
+/* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
+
+static inline bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
+                                   real_t *t, bool self, hit_t *h)
+{
+    (void)sc, (void)h;
+    return ray_hit_sphere(s, r, tmin, t, self);
+}
+
+/* Box [lo - pad, hi + pad] around it; returns pad. */
+static inline real_t sphere_prim_bounds(const sphere_t *s, vec3_t *lo, vec3_t *hi)
+{
+    *lo = *hi = s->centre;
+    return s->radius;
+}
+
+static inline void sphere_prim_surface(const scene_t *sc, const sphere_t *s, const hit_t *h, vec3_t p,
+                                       prim_surface_t *out)
+{
+    (void)sc, (void)h;
+    out->ng = out->n = sphere_normal(s, p);
+    out->material = s->material;
+    out->leave = LEAVE_FAR_ROOT;
+    out->offset = 0;
+    out->smooth = false;
+}
+
+#endif
