@@ -104,7 +104,7 @@ firmware: $(FW_DIR)/fixed.elf
 
 # ---- running it ------------------------------------------------------------
 
-run: deps
+run: deps-board
 	$(MAKE) build/host/rt $(FW_DIR)/fixed.elf
 	@mkdir -p out
 	@$(BOARD_DIR)/qemu-run.sh $(FW_DIR)/fixed.elf out/$(NAME).png build/host/rt | tee $(FW_DIR)/report.txt
