@@ -2,8 +2,9 @@
 #
 #   make            build the hosted CLI (build/host/rt)
 #   make run        render SCENE on the emulated board (QEMU mps2-an385),
-#                   write out/<scene>.png, print instructions per pixel and
-#                   the error against the host's double build
+#                   write out/<scene>.png, print instructions per pixel,
+#                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
+#                   error against the host's double build
 #   make host-run   the same render on the host, fixed and double
 #   make size       flash/RAM by section and stack use of the firmware
 #   make test       install missing packages, build, run every test
