@@ -2,8 +2,9 @@
 #
 #   make            build the hosted CLI (build/host/rt)
 #   make run        render SCENE on the emulated board (QEMU mps2-an385),
-#                   write out/<scene>.png, print instructions per pixel and
-#                   the error against the host's double build
+#                   write out/<scene>.png, print instructions per pixel,
+#                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
+#                   error against the host's double build
 #   make host-run   the same render on the host, fixed and double
 #   make size       flash/RAM by section and stack use of the firmware
 #   make test       install missing packages, build, run every test
@@ -40,7 +41,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps size bench bench-quick firmware print-fwdir stress fuzz fuzz-coverage
+.PHONY: all run host-run test clean deps deps-board size bench bench-quick firmware print-fwdir stress fuzz fuzz-coverage
 all: build/host/rt
 
 # $(1) variant, $(2) backend name, $(3) backend flags
@@ -103,7 +104,7 @@ build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 
 NAME := $(basename $(notdir $(SCENE)))
 
-host-run: deps
+host-run: deps-board
 	$(MAKE) build/host/rt
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
@@ -113,8 +114,12 @@ host-run: deps
 
 include platform/mps2-an385/board.mk
 
+# deps: everything the tests and benchmarks use; deps-board: only what
+# rendering needs (make run, make host-run).
 deps:
-	@sh platform/ensure-deps.sh
+	@sh platform/ensure-deps.sh all
+deps-board:
+	@sh platform/ensure-deps.sh board
 
 # Run time against error over the numeric configurations (bench/results.md,
 # results.csv, plot.svg), then the BVH and pruning figures.

@@ -1,28 +1,39 @@
 #!/bin/sh
-# Installs the Debian packages the build and tests need, when missing.
+# ensure-deps.sh [board|all]: installs the Debian packages that are missing.
+#   board  what rendering needs: the host CLI (make host-run, and `rt
+#          receive` for make run), the cross compiler and QEMU
+#   all    (default) that plus the tests' and benchmarks' tools
 set -e
+mode=${1:-all}
+case $mode in
+board | all) ;;
+*) echo "usage: sh platform/ensure-deps.sh [board|all]" >&2; exit 2 ;;
+esac
 need=""
 command -v cc >/dev/null 2>&1 || need="$need gcc"
 command -v make >/dev/null 2>&1 || need="$need make"
 command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
-command -v python3 >/dev/null 2>&1 || need="$need python3"
-command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
-command -v cppcheck >/dev/null 2>&1 || need="$need cppcheck"
-# libFuzzer: clang and its runtime
-command -v clang >/dev/null 2>&1 || need="$need clang"
-ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
-    ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1 || need="$need libclang-rt-dev"
+[ -f /usr/include/png.h ] || need="$need libpng-dev"
 # the board: cross compiler, newlib (libm for the soft-float comparison), QEMU
 command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
 [ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"
 command -v qemu-system-arm >/dev/null 2>&1 || need="$need qemu-system-arm"
-# The sanitiser runtimes come with gcc's libasan/libubsan on Debian.
-if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
-    need="$need libasan8 libubsan1"
+if [ "$mode" = all ]; then
+    command -v python3 >/dev/null 2>&1 || need="$need python3"   # stress suite, benchmarks, make size
+    command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
+    command -v cppcheck >/dev/null 2>&1 || need="$need cppcheck"
+    # libFuzzer: clang and its runtime
+    command -v clang >/dev/null 2>&1 || need="$need clang"
+    ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
+        ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-*.a >/dev/null 2>&1 || need="$need libclang-rt-dev"
+    # The sanitiser runtimes come with gcc's libasan/libubsan on Debian.
+    if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
+        need="$need libasan8 libubsan1"
+    fi
 fi
 if [ -n "$need" ]; then
-    echo "installing:$need"
+    echo "installing ($mode):$need"
     SUDO=""
     [ "$(id -u)" = 0 ] || SUDO="sudo"
     # wait for another install to finish rather than fail on its lock

@@ -105,8 +105,7 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     r.from = PRIM_NONE;
     r.from_far = false;
     rt_stats_t st = { 0 };
-    hit_t h;
-    h.t = RT_T_FAR;
+    hit_t h = { .t = RT_T_FAR };
     if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
         return false;
     vec3_t p = ray_at(&r, h.t);

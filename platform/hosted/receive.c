@@ -63,7 +63,7 @@ int cmd_receive(int argc, char **argv)
         }
     }
     image_t img = { 0, 0, NULL };
-    unsigned fmt = 0, bpp = 3, lines_done = 0;
+    unsigned bpp = 3, lines_done = 0;
     uLong frame_adler = adler32(0L, Z_NULL, 0);
     bool started = false, finished = false;
     unsigned char *band = NULL;
@@ -81,7 +81,7 @@ int cmd_receive(int argc, char **argv)
         } else if (c == 'R') {
             if (!get(&s, h, 8) || memcmp(h, "TF1", 3) != 0) { rc = fail(&s, "bad frame header"); break; }
             if (started) { rc = fail(&s, "a second frame header inside a frame"); break; }
-            fmt = h[3];
+            unsigned fmt = h[3];
             img.width = (int)u16(h + 4);
             img.height = (int)u16(h + 6);
             if (fmt > 1 || img.width == 0 || img.height == 0) { rc = fail(&s, "bad frame header values"); break; }
@@ -95,8 +95,9 @@ int cmd_receive(int argc, char **argv)
             unsigned y = u16(h), n = u16(h + 2);
             if (y != lines_done || n == 0 || y + n > (unsigned)img.height) { rc = fail(&s, "band out of order or out of the frame"); break; }
             size_t bytes = (size_t)n * img.width * bpp;
-            band = realloc(band, bytes);
-            if (!band) { rc = fail(&s, "out of memory"); break; }
+            unsigned char *grown = realloc(band, bytes);
+            if (!grown) { rc = fail(&s, "out of memory"); break; } /* band is freed below */
+            band = grown;
             if (!get(&s, band, bytes) || !get(&s, h, 4)) { rc = fail(&s, "stream truncated in a band"); break; }
             if (adler32(adler32(0L, Z_NULL, 0), band, (uInt)bytes) != u32(h)) { rc = fail(&s, "band checksum mismatch"); break; }
             frame_adler = adler32(frame_adler, band, (uInt)bytes);

@@ -245,8 +245,12 @@ int main(int argc, char **argv)
     size_t got;
     while (text && (got = fread(text + len, 1, cap - len, fin)) > 0) {
         len += got;
-        if (len == cap)
-            text = realloc(text, cap *= 2);
+        if (len == cap) {
+            char *grown = realloc(text, cap *= 2);
+            if (!grown)
+                free(text);
+            text = grown;
+        }
     }
     int read_failed = ferror(fin);
     fclose(fin);

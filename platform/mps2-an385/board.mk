@@ -10,6 +10,10 @@ ARM_CC    ?= arm-none-eabi-gcc
 ARM_NM    ?= arm-none-eabi-nm
 ARM_SIZE  ?= arm-none-eabi-size
 BOARD_DIR := platform/mps2-an385
+# make run turns the render's instruction count into time on a board
+# with this clock (the MPS2 AN385's FPGA runs the Cortex-M3 at 25 MHz),
+# assuming one instruction per cycle.
+BOARD_CLOCK_HZ ?= 25000000
 
 # Flash tables make these limits of the scene compiler, not of RAM.
 BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
@@ -104,13 +108,19 @@ firmware: $(FW_DIR)/fixed.elf
 
 # ---- running it ------------------------------------------------------------
 
-run: deps
+# The reference is the double build in the board's pixel format, so with
+# FORMAT=rgb565 the figure is the renderer's error, not the format's.
+RUN_REF = out/$(NAME)-double$(if $(filter rgb565,$(FORMAT)),-rgb565).png
+RUN_REF_IS = $(if $(filter rgb565,$(FORMAT)),the double reference quantised to rgb565 as well,the exact double reference)
+
+run: deps-board
 	$(MAKE) build/host/rt $(FW_DIR)/fixed.elf
 	@mkdir -p out
-	@$(BOARD_DIR)/qemu-run.sh $(FW_DIR)/fixed.elf out/$(NAME).png build/host/rt | tee $(FW_DIR)/report.txt
-	@build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board (fixed) vs the exact double reference: '
-	@build/host/rt compare out/$(NAME).png out/$(NAME)-double.png
+	@$(BOARD_DIR)/qemu-run.sh $(FW_DIR)/fixed.elf out/$(NAME).png build/host/rt $(BOARD_CLOCK_HZ) >$(FW_DIR)/report.txt; \
+	    status=$$?; cat $(FW_DIR)/report.txt; exit $$status
+	@build/host/rt $(SCENE) -o $(RUN_REF) --double --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board (fixed, $(FORMAT)) vs $(RUN_REF_IS): '
+	@build/host/rt compare out/$(NAME).png $(RUN_REF)
 	@echo "image: out/$(NAME).png"
 
 size: $(FW_DIR)/fixed.elf
