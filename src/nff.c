@@ -18,46 +18,40 @@
 
 /* ---- entities --------------------------------------------------------- */
 
+/* The next token must be the viewpoint's field `key`. */
+static bool view_key(reader_t *r, const char *key)
+{
+    if (!lex_next(&r->lx))
+        return false;
+    if (!lex_is(&r->lx, key))
+        return lex_fail_tok(&r->lx, "v: expected ", key);
+    return true;
+}
+
 static bool read_view(reader_t *r)
 {
-    static const char *const keys[] = { "from", "at", "up", "angle", "hither", "resolution" };
     view_t *v = &r->st->scene.view;
-    uint32_t line = r->lx.tok_line;
+    uint32_t line = r->lx.tok_line, w = 0, h = 0;
+    real_t hither; /* ignored by the model */
     if (r->have_view)
         return lex_fail(&r->lx, line, "v: a second viewpoint");
-    for (unsigned k = 0; k < 6; k++) {
-        if (!lex_next(&r->lx))
-            return false;
-        if (!lex_is(&r->lx, keys[k]))
-            return lex_fail_tok(&r->lx, "v: expected ", keys[k]);
-        real_t hither;
-        uint32_t w = 0, h = 0;
-        bool ok = true;
-        switch (k) {
-        case 0:
-            r->far = true;
-            ok = rd_pos3(r, "from", &v->from);
-            r->far = false;
-            break;
-        case 1: ok = rd_pos3(r, "at", &v->at); break;
-        case 2: ok = lex_vec3(&r->lx, "up", &v->up); break;
-        case 3:
-            ok = lex_real(&r->lx, "angle", &v->angle);
-            /* valid angles only (the fixed tangent's argument must stay in
-             * range); camera_init reports the others */
-            v->tan_half = ok && v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
-            break;
-        case 4: ok = lex_real(&r->lx, "hither", &hither); break; /* ignored by the model */
-        default:
-            ok = lex_count(&r->lx, "resolution", 1, RT_MAX_WIDTH, &w) &&
-                 lex_count(&r->lx, "resolution", 1, RT_MAX_HEIGHT, &h);
-            r->st->scene.width = (uint16_t)w;
-            r->st->scene.height = (uint16_t)h;
-            break;
-        }
-        if (!ok)
-            return false;
-    }
+    r->far = true;
+    bool ok = view_key(r, "from") && rd_pos3(r, "from", &v->from);
+    r->far = false;
+    if (!ok || !view_key(r, "at") || !rd_pos3(r, "at", &v->at) || !view_key(r, "up") ||
+        !lex_vec3(&r->lx, "up", &v->up) || !view_key(r, "angle"))
+        return false;
+    ok = lex_real(&r->lx, "angle", &v->angle);
+    /* valid angles only (the fixed tangent's argument must stay in range);
+     * camera_init reports the others */
+    v->tan_half = ok && v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
+    if (!ok || !view_key(r, "hither") || !lex_real(&r->lx, "hither", &hither) || !view_key(r, "resolution"))
+        return false;
+    ok = lex_count(&r->lx, "resolution", 1, RT_MAX_WIDTH, &w) && lex_count(&r->lx, "resolution", 1, RT_MAX_HEIGHT, &h);
+    r->st->scene.width = (uint16_t)w;
+    r->st->scene.height = (uint16_t)h;
+    if (!ok)
+        return false;
     r->have_view = true;
     if (r->measuring)
         return true;
