@@ -1,5 +1,8 @@
 /*
- * nff_solids.c - the scene syntax beyond NFF (README "Solids"):
+ * nff_solids.c - the solids grammar, the scene syntax beyond NFF (README
+ * "Solids"); layers: nff_lex.h. Its handlers are entries of nff.c's
+ * keyword table; they use the lexer, the reader state (nff_scene.h) and
+ * the solids' set-up (solid.h), never nff.c.
  *
  *   transform ... end        translate x y z | rotate ax ay az deg |
  *                            scale sx sy sz, applied to what follows
@@ -11,11 +14,11 @@
  *
  * Plain NFF files never use these words, so they read as before.
  */
-#include "bvh.h"
-#include "nff_reader.h"
+#include "nff_solids.h"
+
 #include "solid.h"
 
-static block_t *top(reader_t *r) { return r->n_blocks ? &r->blocks[r->n_blocks - 1] : 0; }
+/* ---- building solids ---------------------------------------------------- */
 
 /* The innermost open CSG block, if any (transform blocks pass through). */
 static block_t *csg_parent(reader_t *r)
@@ -26,10 +29,11 @@ static block_t *csg_parent(reader_t *r)
     return 0;
 }
 
-/* The index of the current transform in the table (stored on first use). */
+/* The index of the current transform in the table (stored on first use),
+ * or of `extra` (the current transform with more applied), stored anew. */
 static bool current_xform(reader_t *r, const xform_t *extra, uint16_t *out)
 {
-    block_t *b = top(r);
+    block_t *b = rd_top_block(r);
     scene_t *sc = &r->st->scene;
     if (!extra && (!b || b->identity)) {
         *out = XFORM_NONE;
@@ -79,6 +83,7 @@ static void solid_box(const scene_t *sc, uint16_t ref, vec3_t *lo, vec3_t *hi)
 static bool place_solid(reader_t *r, uint16_t ref, uint32_t line)
 {
     scene_t *sc = &r->st->scene;
+    rt_error_t *err = r->lx.err;
     block_t *c = csg_parent(r);
     if (c) {
         c->children++;
@@ -99,18 +104,18 @@ static bool place_solid(reader_t *r, uint16_t ref, uint32_t line)
     if (!CHECK_ROOM(r, sc->n_objects, RT_MAX_OBJECTS, "objects (solids and CSG trees)"))
         return false;
     if (solid_depth(sc, ref) > RT_CSG_MAX_DEPTH) {
-        rt_error_set(r->err, line, "CSG nested deeper than RT_CSG_MAX_DEPTH = ");
-        rt_error_append_int(r->err, RT_CSG_MAX_DEPTH);
-        rt_error_append(r->err, " (raise it with -DRT_CSG_MAX_DEPTH=N)");
+        rt_error_set(err, line, "CSG nested deeper than RT_CSG_MAX_DEPTH = ");
+        rt_error_append_int(err, RT_CSG_MAX_DEPTH);
+        rt_error_append(err, " (raise it with -DRT_CSG_MAX_DEPTH=N)");
         return false;
     }
     uint32_t spans = solid_max_spans(sc, ref);
     if (spans > RT_CSG_MAX_SPANS) {
-        rt_error_set(r->err, line, "CSG solid may need ");
-        rt_error_append_int(r->err, (int32_t)spans);
-        rt_error_append(r->err, " spans along a ray: capacity RT_CSG_MAX_SPANS = ");
-        rt_error_append_int(r->err, RT_CSG_MAX_SPANS);
-        rt_error_append(r->err, " (raise it with -DRT_CSG_MAX_SPANS=N)");
+        rt_error_set(err, line, "CSG solid may need ");
+        rt_error_append_int(err, (int32_t)spans);
+        rt_error_append(err, " spans along a ray: capacity RT_CSG_MAX_SPANS = ");
+        rt_error_append_int(err, RT_CSG_MAX_SPANS);
+        rt_error_append(err, " (raise it with -DRT_CSG_MAX_SPANS=N)");
         return false;
     }
     object_t *o = &r->st->objects[sc->n_objects++];
@@ -125,12 +130,12 @@ static bool add_shape(reader_t *r, shape_t *proto, const char *why, const vec3_t
 {
     scene_t *sc = &r->st->scene;
     if (why)
-        return rd_fail(r, line, why);
+        return lex_fail(&r->lx, line, why);
     if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
         return false;
     if (extra_scale) {
         xform_t x;
-        block_t *b = top(r);
+        const block_t *b = rd_top_block(r);
         if (b)
             x = b->xf;
         else
@@ -154,91 +159,22 @@ static bool sizes_ok(reader_t *r, vec3_t v, const char *what, uint32_t line)
 {
     if (v.x >= MIN_OBJECT_SCALE && v.y >= MIN_OBJECT_SCALE && v.z >= MIN_OBJECT_SCALE)
         return true;
-    rt_error_set(r->err, line, what);
-    rt_error_append(r->err, ": sizes must be positive and at least 1/64 of the scene scale");
+    rt_error_set(r->lx.err, line, what);
+    rt_error_append(r->lx.err, ": sizes must be positive and at least 1/64 of the scene scale");
     return false;
 }
 
-/* The named quadrics: unit shapes q <= 0 in a clip box, scaled by s. */
-static bool named_quadric(reader_t *r, const char *what, uint32_t line)
-{
-    vec3_t s;
-    real_t h = 0;
-    bool has_h = !rd_tok_is(r, "ellipsoid");
-    bool three_radii = rd_tok_is(r, "ellipsoid") || rd_tok_is(r, "hyperboloid") || rd_tok_is(r, "hyperboloid2");
-    bool ellipsoid = rd_tok_is(r, "ellipsoid"), paraboloid = rd_tok_is(r, "paraboloid");
-    bool hyper1 = rd_tok_is(r, "hyperboloid"), hyper2 = rd_tok_is(r, "hyperboloid2");
-    bool cone = rd_tok_is(r, "quadcone");
-    if (!rd_pos(r, what, &s.x) || !rd_pos(r, what, &s.y))
-        return false;
-    s.z = 0;
-    if (three_radii && !rd_pos(r, what, &s.z))
-        return false;
-    if (has_h && !rd_pos(r, what, &h))
-        return false;
-    if (r->measuring)
-        return true;
-    if (!three_radii)
-        s.z = h; /* the unit shape spans z in [0, 1] or [-1, 1] */
-    if (!sizes_ok(r, s, what, line) || (has_h && !sizes_ok(r, v3(h, h, h), what, line)))
-        return false;
-    real_t q[10] = { R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, 0, 0 };
-    vec3_t lo = v3(-R_ONE, -R_ONE, -R_ONE), hi = v3(R_ONE, R_ONE, R_ONE);
-    if (ellipsoid) {
-        q[2] = R_ONE, q[9] = -R_ONE;
-    } else if (paraboloid) {
-        q[8] = -R_ONE; /* x^2 + y^2 - z */
-        lo.z = 0;
-    } else if (hyper1 || hyper2) {
-        /* unit hyperboloid x^2 + y^2 - z^2 -+ 1 clipped at |z| <= h / rz */
-        real_t zc = r_div(h, s.z);
-        q[2] = -R_ONE, q[9] = hyper1 ? -R_ONE : R_ONE;
-        real_wide_t m2 = r_wmul(zc, zc) + (hyper1 ? r_to_wide(R_ONE) : -r_to_wide(R_ONE));
-        if (m2 <= 0)
-            return rd_fail(r, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
-        real_t m = r_wsqrt(m2);
-        lo = v3(-m, -m, -zc);
-        hi = v3(m, m, zc);
-    } else if (cone) {
-        q[2] = -R_ONE; /* x^2 + y^2 - z^2 */
-    } else {
-        q[9] = -R_ONE; /* cylinder x^2 + y^2 - 1 */
-    }
-    shape_t sh = { 0 };
-    const char *why = shape_init_quadric(&sh, q, lo, hi);
-    return add_shape(r, &sh, why, &s, line);
-}
+/* ---- blocks ------------------------------------------------------------- */
 
-/* A general quadric's coefficients follow the scene scale 2^k like the
- * positions do: q(x / 2^k) 2^2k keeps the same surface. */
-static bool read_quadric(reader_t *r, uint32_t line)
-{
-    real_t q[10];
-    vec3_t lo, hi;
-    for (int i = 0; i < 10; i++)
-        if (!rd_real(r, "quadric", &q[i]))
-            return false;
-    if (!rd_pos3(r, "quadric", &lo) || !rd_pos3(r, "quadric", &hi))
-        return false;
-    if (r->measuring)
-        return true;
-    int32_t k = r->scale_log2;
-    for (int i = 6; i < 10; i++)
-        if (!r_ldexp(q[i], i == 9 ? 2 * k : k, &q[i]))
-            return rd_out_of_range(r, "quadric");
-    shape_t sh = { 0 };
-    const char *why = shape_init_quadric(&sh, q, lo, hi);
-    return add_shape(r, &sh, why, 0, line);
-}
-
-static bool open_block(reader_t *r, uint8_t csg)
+static bool open_block(reader_t *r, const char *name, uint8_t csg)
 {
     if (r->n_blocks == RT_MAX_BLOCK_DEPTH)
-        return rd_over_capacity(r, "nested blocks", "RT_MAX_BLOCK_DEPTH", RT_MAX_BLOCK_DEPTH);
-    block_t *parent = top(r), *b = &r->blocks[r->n_blocks++];
+        return lex_over_capacity(&r->lx, "nested blocks", "RT_MAX_BLOCK_DEPTH", RT_MAX_BLOCK_DEPTH);
+    block_t *parent = rd_top_block(r), *b = &r->blocks[r->n_blocks++];
     *b = (block_t){ 0 };
+    b->name = name;
     b->csg = csg;
-    b->line = r->tok_line;
+    b->line = r->lx.tok_line;
     b->xf_index = XFORM_NONE;
     if (parent) {
         b->xf = parent->xf;
@@ -254,151 +190,255 @@ static bool open_block(reader_t *r, uint8_t csg)
     return true;
 }
 
-static bool close_block(reader_t *r)
+bool rd_transform_block(reader_t *r) { return open_block(r, "transform", 0); }
+bool rd_union_block(reader_t *r) { return open_block(r, "union", 1 + CSG_UNION); }
+bool rd_intersection_block(reader_t *r) { return open_block(r, "intersection", 1 + CSG_INTERSECTION); }
+bool rd_difference_block(reader_t *r) { return open_block(r, "difference", 1 + CSG_DIFFERENCE); }
+
+bool rd_end_block(reader_t *r)
 {
-    block_t *b = top(r);
+    const block_t *b = rd_top_block(r);
     if (!b)
-        return rd_fail(r, r->tok_line, "'end' without an open block");
+        return lex_fail(&r->lx, r->lx.tok_line, "'end' without an open block");
     block_t done = *b;
     r->n_blocks--;
     if (!done.csg || r->measuring)
         return true;
     if (done.children < 2) {
-        static const char *const names[] = { "union", "intersection", "difference" };
-        rt_error_set(r->err, done.line, names[done.csg - 1]);
-        rt_error_append(r->err, " needs at least two solids");
+        rt_error_set(r->lx.err, done.line, done.name);
+        rt_error_append(r->lx.err, " needs at least two solids");
         return false;
     }
     return place_solid(r, done.acc, done.line);
 }
 
-static bool transform_step(reader_t *r)
+bool rd_blocks_closed(reader_t *r)
 {
-    block_t *b = top(r);
-    if (!b || b->csg)
-        return rd_fail_tok(r, "", "transform steps belong right inside a 'transform' block");
-    vec3_t v;
-    real_t deg = 0;
-    if (rd_tok_is(r, "translate")) {
-        if (!rd_pos3(r, "translate", &v))
-            return false;
-        if (!r->measuring)
-            xform_translate(&b->xf, v);
-    } else if (rd_tok_is(r, "rotate")) {
-        if (!rd_vec3(r, "rotate", &v) || !rd_real(r, "rotate", &deg))
-            return false;
-        if (v.x == 0 && v.y == 0 && v.z == 0)
-            return rd_fail(r, r->tok_line, "rotate: the axis is zero");
-        if (!r->measuring)
-            xform_rotate(&b->xf, v, deg);
-    } else {
-        if (!rd_vec3(r, "scale", &v))
-            return false;
-        const real_t lo = R_RATIO(1, 64), hi = R_RATIO(64, 1);
-        real_t a[3] = { r_abs(v.x), r_abs(v.y), r_abs(v.z) };
-        for (int i = 0; i < 3; i++)
-            if (a[i] < lo || a[i] > hi)
-                return rd_fail(r, r->tok_line, "scale: factors must be 1/64 to 64 in size (fixed range)");
-        if (r->measuring) {
-            real_t m = r_max(a[0], r_max(a[1], a[2]));
-            while (m > R_ONE) { /* sizes inside grow by up to this */
-                m = m / 2;
-                b->extent_exp2++;
-            }
-        } else {
-            xform_scale(&b->xf, v);
-        }
+    const block_t *b = rd_top_block(r);
+    if (!b)
+        return true;
+    rt_error_set(r->lx.err, b->line, "'");
+    rt_error_append(r->lx.err, b->name);
+    rt_error_append(r->lx.err, "' block never closed with 'end'");
+    return false;
+}
+
+/* ---- transform steps ---------------------------------------------------- */
+
+/* The block a step changes: the innermost, which must be a transform block. */
+static block_t *step_block(reader_t *r)
+{
+    block_t *b = rd_top_block(r);
+    if (!b || b->csg) {
+        lex_fail_tok(&r->lx, "", "transform steps belong right inside a 'transform' block");
+        return 0;
     }
+    return b;
+}
+
+/* The block's transform changed: store it again on next use. */
+static bool stepped(block_t *b)
+{
     b->identity = false;
-    b->xf_index = XFORM_NONE; /* changed: store again on next use */
+    b->xf_index = XFORM_NONE;
     return true;
 }
 
-bool rd_solid_entity(reader_t *r, bool *handled)
+bool rd_translate(reader_t *r)
 {
-    static const char *const words[] = {
-        "transform", "union", "intersection", "difference", "end", "translate", "rotate", "scale",
-        "box", "torus", "quadric", "ellipsoid", "paraboloid", "hyperboloid", "hyperboloid2",
-        "quadcone", "quadcylinder", "s",
-    };
-    unsigned w = 0;
-    while (w < sizeof words / sizeof words[0] && !rd_tok_is(r, words[w]))
-        w++;
-    *handled = w < sizeof words / sizeof words[0] && !(w == 17 && r->n_blocks == 0);
-    if (!*handled)
+    block_t *b = step_block(r);
+    vec3_t v;
+    if (!b || !rd_pos3(r, "translate", &v))
         return false;
-    uint32_t line = r->tok_line;
-    if (!r->have_view && w != 4)
-        return rd_fail(r, line, "a solid or block before the 'v' viewpoint");
-    switch (w) {
-    case 0: return open_block(r, 0);
-    case 1: case 2: case 3: return open_block(r, (uint8_t)(1 + w - 1));
-    case 4: return close_block(r);
-    case 5: case 6: case 7: return transform_step(r);
-    default: break;
-    }
-    if (!rd_need_material(r, words[w]))
-        return false;
-    shape_t sh = { 0 };
-    vec3_t lo, hi;
-    real_t a, b;
-    switch (w) {
-    case 8:
-        if (!rd_pos3(r, "box", &lo) || !rd_pos3(r, "box", &hi))
-            return false;
-        if (r->measuring)
-            return true;
-        return add_shape(r, &sh, shape_init_box(&sh, lo, hi), 0, line);
-    case 9:
-        if (!rd_pos(r, "torus", &a) || !rd_pos(r, "torus", &b))
-            return false;
-        if (r->measuring)
-            return true;
-        return add_shape(r, &sh, shape_init_torus(&sh, a, b), 0, line);
-    case 10:
-        return read_quadric(r, line);
-    case 17: { /* a sphere inside a block: the unit sphere, placed and scaled */
-        vec3_t c;
-        if (!rd_pos3(r, "s", &c) || !rd_pos(r, "s", &a))
-            return false;
-        if (r->measuring)
-            return true;
-        a = r_abs(a);
-        if (a == 0)
-            return rd_fail(r, line, "sphere radius is zero");
-        if (!sizes_ok(r, v3(a, a, a), "s", line))
-            return false;
-        const real_t q[10] = { R_ONE, R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, -R_ONE };
-        xform_t x;
-        block_t *bl = top(r);
-        x = bl->xf;
-        xform_translate(&x, c);
-        xform_scale(&x, v3(a, a, a));
-        if (!current_xform(r, &x, &sh.xform))
-            return false;
-        const char *why = shape_init_quadric(&sh, q, v3(-R_ONE, -R_ONE, -R_ONE), v3(R_ONE, R_ONE, R_ONE));
-        if (why) /* cannot happen: the unit box is valid */
-            return rd_fail(r, line, why);
-        sh.material = r->material;
-        scene_t *sc = &r->st->scene;
-        if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
-            return false;
-        r->st->shapes[sc->n_shapes] = sh;
-        return place_solid(r, (uint16_t)sc->n_shapes++, line);
-    }
-    default:
-        return named_quadric(r, words[w], line);
-    }
+    if (!r->measuring)
+        xform_translate(&b->xf, v);
+    return stepped(b);
 }
 
-bool rd_blocks_closed(reader_t *r)
+bool rd_rotate(reader_t *r)
 {
-    block_t *b = top(r);
-    if (!b)
+    block_t *b = step_block(r);
+    vec3_t v;
+    real_t deg;
+    if (!b || !lex_vec3(&r->lx, "rotate", &v) || !lex_real(&r->lx, "rotate", &deg))
+        return false;
+    if (v.x == 0 && v.y == 0 && v.z == 0)
+        return lex_fail(&r->lx, r->lx.tok_line, "rotate: the axis is zero");
+    if (!r->measuring)
+        xform_rotate(&b->xf, v, deg);
+    return stepped(b);
+}
+
+bool rd_scale(reader_t *r)
+{
+    block_t *b = step_block(r);
+    vec3_t v;
+    if (!b || !lex_vec3(&r->lx, "scale", &v))
+        return false;
+    const real_t lo = R_RATIO(1, 64), hi = R_RATIO(64, 1);
+    real_t a[3] = { r_abs(v.x), r_abs(v.y), r_abs(v.z) };
+    for (int i = 0; i < 3; i++)
+        if (a[i] < lo || a[i] > hi)
+            return lex_fail(&r->lx, r->lx.tok_line, "scale: factors must be 1/64 to 64 in size (fixed range)");
+    if (r->measuring) {
+        real_t m = r_max(a[0], r_max(a[1], a[2]));
+        while (m > R_ONE) { /* sizes inside grow by up to this */
+            m = m / 2;
+            b->extent_exp2++;
+        }
+    } else {
+        xform_scale(&b->xf, v);
+    }
+    return stepped(b);
+}
+
+/* ---- shapes ------------------------------------------------------------- */
+
+bool rd_box(reader_t *r)
+{
+    uint32_t line = r->lx.tok_line;
+    vec3_t lo, hi;
+    if (!rd_need_material(r, "box") || !rd_pos3(r, "box", &lo) || !rd_pos3(r, "box", &hi))
+        return false;
+    if (r->measuring)
         return true;
-    static const char *const names[] = { "transform", "union", "intersection", "difference" };
-    rt_error_set(r->err, b->line, "'");
-    rt_error_append(r->err, names[b->csg]);
-    rt_error_append(r->err, "' block never closed with 'end'");
-    return false;
+    shape_t sh = { 0 };
+    return add_shape(r, &sh, shape_init_box(&sh, lo, hi), 0, line);
+}
+
+bool rd_torus(reader_t *r)
+{
+    uint32_t line = r->lx.tok_line;
+    real_t major, minor;
+    if (!rd_need_material(r, "torus") || !rd_pos(r, "torus", &major) || !rd_pos(r, "torus", &minor))
+        return false;
+    if (r->measuring)
+        return true;
+    shape_t sh = { 0 };
+    return add_shape(r, &sh, shape_init_torus(&sh, major, minor), 0, line);
+}
+
+/* A general quadric's coefficients follow the scene scale 2^k like the
+ * positions do: q(x / 2^k) 2^2k keeps the same surface. */
+bool rd_quadric(reader_t *r)
+{
+    uint32_t line = r->lx.tok_line;
+    real_t q[10];
+    vec3_t lo, hi;
+    if (!rd_need_material(r, "quadric"))
+        return false;
+    for (int i = 0; i < 10; i++)
+        if (!lex_real(&r->lx, "quadric", &q[i]))
+            return false;
+    if (!rd_pos3(r, "quadric", &lo) || !rd_pos3(r, "quadric", &hi))
+        return false;
+    if (r->measuring)
+        return true;
+    int32_t k = r->scale_log2;
+    for (int i = 6; i < 10; i++)
+        if (!r_ldexp(q[i], i == 9 ? 2 * k : k, &q[i]))
+            return lex_out_of_range(&r->lx, "quadric");
+    shape_t sh = { 0 };
+    const char *why = shape_init_quadric(&sh, q, lo, hi);
+    return add_shape(r, &sh, why, 0, line);
+}
+
+/* The named quadrics: unit shapes q <= 0 in a clip box, scaled. */
+typedef enum { ELLIPSOID, PARABOLOID, HYPERBOLOID, HYPERBOLOID2, QUADCONE, QUADCYLINDER } named_quadric_t;
+
+static bool named_quadric(reader_t *r, const char *what, named_quadric_t kind)
+{
+    uint32_t line = r->lx.tok_line;
+    vec3_t s;
+    real_t h = 0;
+    bool has_h = kind != ELLIPSOID;
+    bool three_radii = kind == ELLIPSOID || kind == HYPERBOLOID || kind == HYPERBOLOID2;
+    if (!rd_need_material(r, what) || !rd_pos(r, what, &s.x) || !rd_pos(r, what, &s.y))
+        return false;
+    s.z = 0;
+    if (three_radii && !rd_pos(r, what, &s.z))
+        return false;
+    if (has_h && !rd_pos(r, what, &h))
+        return false;
+    if (r->measuring)
+        return true;
+    if (!three_radii)
+        s.z = h; /* the unit shape spans z in [0, 1] or [-1, 1] */
+    if (!sizes_ok(r, s, what, line) || (has_h && !sizes_ok(r, v3(h, h, h), what, line)))
+        return false;
+    real_t q[10] = { R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, 0, 0 };
+    vec3_t lo = v3(-R_ONE, -R_ONE, -R_ONE), hi = v3(R_ONE, R_ONE, R_ONE);
+    switch (kind) {
+    case ELLIPSOID:
+        q[2] = R_ONE, q[9] = -R_ONE;
+        break;
+    case PARABOLOID:
+        q[8] = -R_ONE; /* x^2 + y^2 - z */
+        lo.z = 0;
+        break;
+    case HYPERBOLOID:
+    case HYPERBOLOID2: {
+        /* unit hyperboloid x^2 + y^2 - z^2 -+ 1 clipped at |z| <= h / rz */
+        bool one_sheet = kind == HYPERBOLOID;
+        real_t zc = r_div(h, s.z);
+        q[2] = -R_ONE, q[9] = one_sheet ? -R_ONE : R_ONE;
+        real_wide_t m2 = r_wmul(zc, zc) + (one_sheet ? r_to_wide(R_ONE) : -r_to_wide(R_ONE));
+        if (m2 <= 0)
+            return lex_fail(&r->lx, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
+        real_t m = r_wsqrt(m2);
+        lo = v3(-m, -m, -zc);
+        hi = v3(m, m, zc);
+        break;
+    }
+    case QUADCONE:
+        q[2] = -R_ONE; /* x^2 + y^2 - z^2 */
+        break;
+    default:
+        q[9] = -R_ONE; /* cylinder x^2 + y^2 - 1 */
+        break;
+    }
+    shape_t sh = { 0 };
+    const char *why = shape_init_quadric(&sh, q, lo, hi);
+    return add_shape(r, &sh, why, &s, line);
+}
+
+bool rd_ellipsoid(reader_t *r) { return named_quadric(r, "ellipsoid", ELLIPSOID); }
+bool rd_paraboloid(reader_t *r) { return named_quadric(r, "paraboloid", PARABOLOID); }
+bool rd_hyperboloid(reader_t *r) { return named_quadric(r, "hyperboloid", HYPERBOLOID); }
+bool rd_hyperboloid2(reader_t *r) { return named_quadric(r, "hyperboloid2", HYPERBOLOID2); }
+bool rd_quadcone(reader_t *r) { return named_quadric(r, "quadcone", QUADCONE); }
+bool rd_quadcylinder(reader_t *r) { return named_quadric(r, "quadcylinder", QUADCYLINDER); }
+
+/* The unit sphere, placed and scaled by the block's transform. */
+bool rd_sphere_solid(reader_t *r)
+{
+    uint32_t line = r->lx.tok_line;
+    vec3_t c;
+    real_t a;
+    if (!rd_need_material(r, "s") || !rd_pos3(r, "s", &c) || !rd_pos(r, "s", &a))
+        return false;
+    if (r->measuring)
+        return true;
+    a = r_abs(a);
+    if (a == 0)
+        return lex_fail(&r->lx, line, "sphere radius is zero");
+    if (!sizes_ok(r, v3(a, a, a), "s", line))
+        return false;
+    const real_t q[10] = { R_ONE, R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, -R_ONE };
+    shape_t sh = { 0 };
+    xform_t x = rd_top_block(r)->xf;
+    xform_translate(&x, c);
+    xform_scale(&x, v3(a, a, a));
+    /* the transform first: a full table reports transforms, not shapes */
+    if (!current_xform(r, &x, &sh.xform))
+        return false;
+    const char *why = shape_init_quadric(&sh, q, v3(-R_ONE, -R_ONE, -R_ONE), v3(R_ONE, R_ONE, R_ONE));
+    if (why) /* cannot happen: the unit box is valid */
+        return lex_fail(&r->lx, line, why);
+    sh.material = r->material;
+    scene_t *sc = &r->st->scene;
+    if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
+        return false;
+    r->st->shapes[sc->n_shapes] = sh;
+    return place_solid(r, (uint16_t)sc->n_shapes++, line);
 }

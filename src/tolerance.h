@@ -50,7 +50,7 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
  * parallel, plus the drift d * tmax and this margin. */
 #define RT_SLAB_PARALLEL R_RATIO(1, (int64_t)1 << (29 - FX_FRAC_BITS))
 #define RT_SLAB_MARGIN R_ULPS(4)
-/* Solids, in object space (solid.c): a box axis whose direction is below
+/* Solids, in object space (shape.c): a box axis whose direction is below
  * this is parallel (its reciprocal would leave the range); a quadric whose
  * sigma^2 coefficient is below this is solved as linear; bounding spheres
  * are padded by this; the torus marches to within RT_TORUS_EPS of its
@@ -119,7 +119,7 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #endif
 
 /* A torus boundary is found to within RT_TORUS_EPS before Newton polishing,
- * whose steps are limited to 4 RT_TORUS_EPS (solid.c): rays leaving a torus
+ * whose steps are limited to 4 RT_TORUS_EPS (shape.c): rays leaving a torus
  * start beyond both. */
 #define RT_TORUS_OFFSET (4 * RT_TORUS_EPS)
 

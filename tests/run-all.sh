@@ -27,6 +27,7 @@ run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
 run python3 tests/stress.py --quick
 run tests/lint.sh
+run python3 tests/layers.py "$B/fixed"
 run tests/hygiene.sh
 run tests/fuzz-smoke.sh
 echo

@@ -1,5 +1,7 @@
 /*
- * solid.c - quadrics, tori and boxes in object space, transforms, CSG.
+ * shape.c - quadrics, tori and boxes in object space (layers: xform.h):
+ * set-up, the spans of a ray through one shape, and surface normals.
+ * Uses xform.h; csg.c calls shape_spans, nothing here calls csg.c.
  *
  * A world ray goes into a shape's object space by the inverse transform
  * (direction renormalised, with k = |M^-1 d| so that world t = s / k), and
@@ -7,97 +9,9 @@
  * shape's bounding sphere rejects it there, and every root is found close
  * to that point, where the numbers are small.
  */
-#include "solid.h"
+#include "shape.h"
 
-/* ---- transforms -------------------------------------------------------- */
-
-static real_t row_dot(const real_t row[3], vec3_t v)
-{
-    return r_from_wide(r_wmul(row[0], v.x) + r_wmul(row[1], v.y) + r_wmul(row[2], v.z));
-}
-
-static vec3_t mat_vec(const real_t m[3][3], vec3_t v)
-{
-    return v3(row_dot(m[0], v), row_dot(m[1], v), row_dot(m[2], v));
-}
-
-/* out = a * b (out may be a or b) */
-static void mat_mul(real_t out[3][3], const real_t a[3][3], const real_t b[3][3])
-{
-    real_t r[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            r[i][j] = r_from_wide(r_wmul(a[i][0], b[0][j]) + r_wmul(a[i][1], b[1][j]) + r_wmul(a[i][2], b[2][j]));
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            out[i][j] = r[i][j];
-}
-
-void xform_identity(xform_t *x)
-{
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++)
-            x->m[i][j] = x->im[i][j] = i == j ? R_ONE : 0;
-        x->t[i] = 0;
-    }
-}
-
-/* world = M (p + v) + t: only t moves */
-void xform_translate(xform_t *x, vec3_t v)
-{
-    vec3_t mv = mat_vec(x->m, v);
-    x->t[0] += mv.x;
-    x->t[1] += mv.y;
-    x->t[2] += mv.z;
-}
-
-void xform_scale(xform_t *x, vec3_t s)
-{
-    const real_t d[3][3] = { { s.x, 0, 0 }, { 0, s.y, 0 }, { 0, 0, s.z } };
-    const real_t di[3][3] = { { r_recip(s.x), 0, 0 }, { 0, r_recip(s.y), 0 }, { 0, 0, r_recip(s.z) } };
-    mat_mul(x->m, x->m, d);
-    mat_mul(x->im, di, x->im);
-}
-
-void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
-{
-    real_t s, c;
-    r_sincos_deg(deg, &s, &c);
-    vec3_t a = v3_unit(axis);
-    real_t oc = R_ONE - c;
-    /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T; the inverse is R^T */
-    real_t r[3][3] = {
-        { c + r_mul(oc, r_mul(a.x, a.x)), r_mul(oc, r_mul(a.x, a.y)) - r_mul(s, a.z), r_mul(oc, r_mul(a.x, a.z)) + r_mul(s, a.y) },
-        { r_mul(oc, r_mul(a.y, a.x)) + r_mul(s, a.z), c + r_mul(oc, r_mul(a.y, a.y)), r_mul(oc, r_mul(a.y, a.z)) - r_mul(s, a.x) },
-        { r_mul(oc, r_mul(a.z, a.x)) - r_mul(s, a.y), r_mul(oc, r_mul(a.z, a.y)) + r_mul(s, a.x), c + r_mul(oc, r_mul(a.z, a.z)) },
-    };
-    real_t rt[3][3];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            rt[i][j] = r[j][i];
-    mat_mul(x->m, x->m, r);
-    mat_mul(x->im, rt, x->im);
-}
-
-/* world -> object: M^-1 (p - t) */
-static vec3_t to_object(const xform_t *x, vec3_t p)
-{
-    return mat_vec(x->im, v3(p.x - x->t[0], p.y - x->t[1], p.z - x->t[2]));
-}
-
-vec3_t xform_point(const xform_t *x, vec3_t p)
-{
-    return v3_add(mat_vec(x->m, p), v3(x->t[0], x->t[1], x->t[2]));
-}
-
-vec3_t xform_normal(const xform_t *x, vec3_t n)
-{
-    /* (M^-1)^T n */
-    vec3_t w = v3(r_from_wide(r_wmul(x->im[0][0], n.x) + r_wmul(x->im[1][0], n.y) + r_wmul(x->im[2][0], n.z)),
-                  r_from_wide(r_wmul(x->im[0][1], n.x) + r_wmul(x->im[1][1], n.y) + r_wmul(x->im[2][1], n.z)),
-                  r_from_wide(r_wmul(x->im[0][2], n.x) + r_wmul(x->im[1][2], n.y) + r_wmul(x->im[2][2], n.z)));
-    return v3_unit(w);
-}
+#include "xform.h"
 
 /* ---- shapes: set-up ------------------------------------------------------ */
 
@@ -173,40 +87,7 @@ void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *m
     *max = v3(max->x + pad, max->y + pad, max->z + pad);
 }
 
-uint32_t solid_max_spans(const scene_t *sc, uint16_t root)
-{
-    if (!(root & CSG_NODE_BIT))
-        return sc->shapes[root].kind == SHAPE_BOX ? 1 : 2;
-    const csg_node_t *n = &sc->csg_nodes[root & ~CSG_NODE_BIT];
-    return solid_max_spans(sc, n->a) + solid_max_spans(sc, n->b);
-}
-
-uint32_t solid_depth(const scene_t *sc, uint16_t root)
-{
-    if (!(root & CSG_NODE_BIT))
-        return 0;
-    const csg_node_t *n = &sc->csg_nodes[root & ~CSG_NODE_BIT];
-    uint32_t a = solid_depth(sc, n->a), b = solid_depth(sc, n->b);
-    return 1 + (a > b ? a : b);
-}
-
-/* ---- spans ------------------------------------------------------------- */
-
-typedef struct {
-    real_t t;
-    uint16_t shape;
-    uint8_t face;
-    uint8_t flip;
-} bound_t;
-
-typedef struct {
-    bound_t in, out;
-} span_t;
-
-typedef struct {
-    uint32_t n;
-    span_t s[RT_CSG_MAX_SPANS];
-} spans_t;
+/* ---- spans --------------------------------------------------------------- */
 
 /* The ray in a shape's object space, at its point of closest approach to
  * the origin: object parameter s = s0 + sigma, world t = s / k. */
@@ -222,8 +103,8 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
     o->k = R_ONE;
     if (s->xform != XFORM_NONE) {
         const xform_t *x = &sc->xforms[s->xform];
-        org = to_object(x, org);
-        vec3_t d = mat_vec(x->im, r->dir);
+        org = xform_to_object(x, org);
+        vec3_t d = xform_dir_to_object(x, r->dir);
         o->k = v3_length(d);
         o->u = v3_unit(d);
     }
@@ -240,15 +121,6 @@ static real_t to_world(const oray_t *o, real_t sigma)
 {
     real_t s = o->s0 + sigma;
     return o->k == R_ONE ? s : r_div(s, o->k);
-}
-
-static void push(spans_t *out, bound_t in, bound_t out_b)
-{
-    if (out->n < RT_CSG_MAX_SPANS) { /* the reader bounds n; never drops */
-        out->s[out->n].in = in;
-        out->s[out->n].out = out_b;
-        out->n++;
-    }
 }
 
 static bound_t bnd(real_t t, uint16_t shape, uint8_t face)
@@ -301,7 +173,7 @@ RT_NOINLINE static void box_spans(const shape_t *s, uint16_t id, const oray_t *o
     real_t a, b;
     uint8_t fa, fb;
     if (box_interval(o, &s->lo, &s->hi, &a, &b, &fa, &fb))
-        push(out, bnd(to_world(o, a), id, fa), bnd(to_world(o, b), id, fb));
+        spans_push(out, bnd(to_world(o, a), id, fa), bnd(to_world(o, b), id, fb));
 }
 
 /* q(x) = x^T A x + 2 b^T x + j with A, b from the ten coefficients;
@@ -379,7 +251,7 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
         real_t a = r_max(iv[i][0], ca), b = r_min(iv[i][1], cb);
         if (a > b)
             continue;
-        push(out, bnd(to_world(o, a), id, iv[i][0] >= ca ? FACE_CURVED : fa),
+        spans_push(out, bnd(to_world(o, a), id, iv[i][0] >= ca ? FACE_CURVED : fa),
              bnd(to_world(o, b), id, iv[i][1] <= cb ? FACE_CURVED : fb));
     }
 }
@@ -442,18 +314,18 @@ RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t 
         if (!inside) {
             entry = at;
         } else if (at - entry > 4 * RT_TORUS_EPS) {
-            push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, at), id, FACE_CURVED));
+            spans_push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, at), id, FACE_CURVED));
         } /* else a tangent touch: no span (at most two spans remain) */
         inside = !inside;
         last = r_max(sigma, at);
         sigma = last + 2 * RT_TORUS_EPS; /* step through the surface */
     }
     if (inside) /* ran out of steps inside: close the span where we are */
-        push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));
+        spans_push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));
 }
 
-/* Not inlined: its locals stay out of the recursive solid_spans frame. */
-RT_NOINLINE static void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
+/* Not inlined: its locals stay out of csg.c's recursive solid_spans frame. */
+RT_NOINLINE void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
 {
     const shape_t *s = &sc->shapes[id];
     oray_t o;
@@ -467,125 +339,13 @@ RT_NOINLINE static void shape_spans(const scene_t *sc, uint16_t id, const ray_t 
     }
 }
 
-/* ---- CSG: boolean operations on sorted span lists ----------------------- */
-
-static void csg_union(const spans_t *a, const spans_t *b, spans_t *out)
-{
-    uint32_t i = 0, j = 0;
-    out->n = 0;
-    while (i < a->n || j < b->n) {
-        span_t cur = (j >= b->n || (i < a->n && a->s[i].in.t <= b->s[j].in.t)) ? a->s[i++] : b->s[j++];
-        /* swallow every span that starts before cur ends */
-        for (;;) {
-            const span_t *next = 0;
-            if (i < a->n && a->s[i].in.t <= cur.out.t)
-                next = &a->s[i++];
-            else if (j < b->n && b->s[j].in.t <= cur.out.t)
-                next = &b->s[j++];
-            if (!next)
-                break;
-            if (next->out.t > cur.out.t)
-                cur.out = next->out;
-        }
-        push(out, cur.in, cur.out);
-    }
-}
-
-static void csg_intersection(const spans_t *a, const spans_t *b, spans_t *out)
-{
-    out->n = 0;
-    for (uint32_t i = 0; i < a->n; i++)
-        for (uint32_t j = 0; j < b->n; j++) {
-            bound_t in = a->s[i].in.t >= b->s[j].in.t ? a->s[i].in : b->s[j].in;
-            bound_t ob = a->s[i].out.t <= b->s[j].out.t ? a->s[i].out : b->s[j].out;
-            if (in.t <= ob.t)
-                push(out, in, ob);
-        }
-}
-
-/* a minus b: b's surfaces bound the result from the other side (flip). */
-static void csg_difference(const spans_t *a, const spans_t *b, spans_t *out)
-{
-    out->n = 0;
-    for (uint32_t i = 0; i < a->n; i++) {
-        bound_t in = a->s[i].in, end = a->s[i].out;
-        bool open = true;
-        for (uint32_t j = 0; j < b->n && open; j++) {
-            const span_t *c = &b->s[j];
-            if (c->out.t < in.t || c->in.t > end.t)
-                continue;
-            if (c->in.t > in.t) {
-                bound_t cut = c->in;
-                cut.flip ^= 1;
-                push(out, in, cut);
-            }
-            if (c->out.t < end.t) {
-                in = c->out;
-                in.flip ^= 1;
-            } else {
-                open = false;
-            }
-        }
-        if (open)
-            push(out, in, end);
-    }
-}
-
-/* Scratch for the two children at each level of the tree: static, so CSG
- * costs no stack (the tracer is single-threaded and never re-enters). */
-static spans_t csg_scratch[RT_CSG_MAX_DEPTH + 1][2];
-
-static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, spans_t *out, uint32_t level)
-{
-    if (!(ref & CSG_NODE_BIT) || level >= RT_CSG_MAX_DEPTH) {
-        if (!(ref & CSG_NODE_BIT))
-            shape_spans(sc, ref, r, out);
-        else
-            out->n = 0; /* deeper than the reader allows: cannot happen */
-        return;
-    }
-    const csg_node_t *n = &sc->csg_nodes[ref & ~CSG_NODE_BIT];
-    spans_t *a = &csg_scratch[level][0], *b = &csg_scratch[level][1];
-    solid_spans(sc, n->a, r, a, level + 1);
-    if (a->n == 0 && n->op != CSG_UNION) {
-        out->n = 0; /* nothing to intersect with or subtract from */
-        return;
-    }
-    solid_spans(sc, n->b, r, b, level + 1);
-    switch (n->op) {
-    case CSG_UNION: csg_union(a, b, out); break;
-    case CSG_INTERSECTION: csg_intersection(a, b, out); break;
-    default: csg_difference(a, b, out); break;
-    }
-}
-
-bool ray_hit_object(const scene_t *sc, const object_t *obj, const ray_t *r, real_t tmin, real_t *t,
-                    uint16_t *shape, uint8_t *face, bool *flip)
-{
-    static spans_t spans;
-    solid_spans(sc, obj->root, r, &spans, 0);
-    for (uint32_t i = 0; i < spans.n; i++) {
-        const bound_t *b = spans.s[i].in.t > tmin ? &spans.s[i].in : &spans.s[i].out;
-        if (b->t <= tmin)
-            continue;
-        if (b->t >= *t)
-            return false;
-        *t = b->t;
-        *shape = b->shape;
-        *face = b->face;
-        *flip = b->flip;
-        return true;
-    }
-    return false;
-}
-
 vec3_t shape_normal(const scene_t *sc, uint16_t id, uint8_t face, vec3_t p)
 {
     const shape_t *s = &sc->shapes[id];
     vec3_t x = p, n;
     const xform_t *xf = s->xform == XFORM_NONE ? 0 : &sc->xforms[s->xform];
     if (xf)
-        x = to_object(xf, p);
+        x = xform_to_object(xf, p);
     switch (face) {
     case FACE_XMIN: n = v3(-R_ONE, 0, 0); break;
     case FACE_XMAX: n = v3(R_ONE, 0, 0); break;

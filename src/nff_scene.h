@@ -1,19 +1,21 @@
-/* nff_reader.h - the NFF reader's state and helpers, shared by nff.c
- * (tokens, numbers, the NFF entities) and nff_solids.c (blocks and the
- * solids beyond NFF). Internal to the reader. */
-#ifndef NFF_READER_H
-#define NFF_READER_H
+/*
+ * nff_scene.h - the reader's middle layer (layers: nff_lex.h): the state
+ * both grammars share while they build a scene_store_t, positions read in
+ * the scene's scale, and the checks every entity makes (capacity, a
+ * material first). Uses the lexer only. Internal to the reader.
+ */
+#ifndef NFF_SCENE_H
+#define NFF_SCENE_H
 
 #include <stdbool.h>
-#include <stddef.h>
 #include <stdint.h>
 
-#include "rt_error.h"
+#include "nff_lex.h"
 #include "scene.h"
-
 
 /* An open transform or CSG block. */
 typedef struct {
+    const char *name;     /* the word that opened it */
     uint8_t csg;          /* 0: transform block, else 1 + enum csg_op */
     uint32_t line;        /* where it was opened */
     xform_t xf;           /* the transform in force inside it */
@@ -26,13 +28,8 @@ typedef struct {
 } block_t;
 
 typedef struct {
-    const char *p, *end;
-    uint32_t line;      /* line of the current position */
-    uint32_t tok_line;  /* line of the last token read */
-    const char *tok;
-    size_t tok_len;
+    lexer_t lx;
     scene_store_t *st;
-    rt_error_t *err;
     bool have_view, have_material;
     uint16_t material;
     /* Range management: a first pass only measures the positions (their
@@ -48,34 +45,17 @@ typedef struct {
     uint32_t n_blocks;
 } reader_t;
 
-
-typedef struct {
-    bool neg;
-    uint64_t mant;   /* up to 19 significant digits */
-    int32_t exp10;
-} decimal_t;
-
-
+/* True if count < cap, else the "too many <what>" error naming the macro. */
 #define CHECK_ROOM(r, count, cap, what) \
-    ((count) < (cap) ? true : rd_over_capacity((r), (what), #cap, (int32_t)(cap)))
+    ((count) < (cap) ? true : lex_over_capacity(&(r)->lx, (what), #cap, (int32_t)(cap)))
 
-
-bool rd_fail(reader_t *r, uint32_t line, const char *msg);
-bool rd_fail_tok(reader_t *r, const char *what, const char *msg);
-bool rd_next_token(reader_t *r);
-bool rd_tok_is(const reader_t *r, const char *word);
-bool rd_decimal(reader_t *r, const char *what, decimal_t *d);
-bool rd_out_of_range(reader_t *r, const char *what);
-bool rd_real(reader_t *r, const char *what, real_t *out);
-bool rd_vec3(reader_t *r, const char *what, vec3_t *v);
+/* A position (or a length): scaled by 2^scale_log2 with the rest of the
+ * scene; in the measuring pass only its size is recorded. */
 bool rd_pos(reader_t *r, const char *what, real_t *out);
 bool rd_pos3(reader_t *r, const char *what, vec3_t *v);
-bool rd_over_capacity(reader_t *r, const char *what, const char *macro, int32_t cap);
+/* The "<what> before any 'f' material line" error unless there is one. */
 bool rd_need_material(reader_t *r, const char *what);
-
-/* nff_solids.c: block keywords and solids. rd_solid_entity returns false
- * with *handled false when the token is none of its keywords. */
-bool rd_solid_entity(reader_t *r, bool *handled);
-bool rd_blocks_closed(reader_t *r);
+/* The innermost open block, or NULL. */
+block_t *rd_top_block(reader_t *r);
 
 #endif

@@ -1,0 +1,71 @@
+/*
+ * nff_lex.h - the reader's bottom layer: whitespace-separated tokens of
+ * NFF text, decimal numbers to the active scalar, line numbers and the
+ * error messages that point at them.
+ *
+ * The reader's layers (each file uses only the ones below it):
+ *
+ *   nff.c         NFF grammar, the keyword table, the two passes
+ *     |     \
+ *     |   nff_solids.c  solids grammar: blocks, transforms, shapes, CSG
+ *     |     /
+ *   nff_scene.c   reader state: positions in scene scale, the material
+ *     |
+ *   nff_lex.c     tokens, numbers, lines, errors (this layer)
+ */
+#ifndef NFF_LEX_H
+#define NFF_LEX_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "real.h"
+#include "rt_error.h"
+#include "vec3.h"
+
+typedef struct {
+    const char *p, *end;
+    uint32_t line;      /* line of the current position */
+    uint32_t tok_line;  /* line of the last token read */
+    const char *tok;    /* the last token, NULL at the end of input */
+    size_t tok_len;
+    rt_error_t *err;
+} lexer_t;
+
+typedef struct {
+    bool neg;
+    uint64_t mant;   /* up to 19 significant digits */
+    int32_t exp10;
+} decimal_t;
+
+void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err);
+
+/* Errors: each sets lx->err and returns false. */
+bool lex_fail(lexer_t *lx, uint32_t line, const char *msg);
+/* "<what><msg>, found '<token>'" with the token shortened. */
+bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg);
+bool lex_out_of_range(lexer_t *lx, const char *what);
+bool lex_over_capacity(lexer_t *lx, const char *what, const char *macro, int32_t cap);
+
+/* Next token (tok NULL at the end of input); false on a byte that is not text. */
+bool lex_next(lexer_t *lx);
+/* The next token if it is on the current line; otherwise *found is false
+ * and the position stays where it was. */
+bool lex_next_on_line(lexer_t *lx, bool *found);
+bool lex_is(const lexer_t *lx, const char *word);
+
+/* The current token as a decimal, or the error "<what><msg>, found ...". */
+bool lex_tok_decimal(lexer_t *lx, const char *what, const char *msg, decimal_t *d);
+/* The next token as a decimal, a scalar, three scalars, a whole number in [lo, hi]. */
+bool lex_decimal(lexer_t *lx, const char *what, decimal_t *d);
+bool lex_real(lexer_t *lx, const char *what, real_t *out);
+bool lex_vec3(lexer_t *lx, const char *what, vec3_t *v);
+bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t *out);
+/* A decimal to the scalar, or the out-of-range error. */
+bool lex_scalar(lexer_t *lx, const char *what, const decimal_t *d, real_t *out);
+
+/* An upper bound p with |d| < 2^p (within 2 of the least); d nonzero. */
+int32_t decimal_exp2_bound(const decimal_t *d);
+
+#endif

@@ -1,0 +1,50 @@
+/*
+ * nff_scene.c - the reader's middle layer (layers: nff_lex.h): positions
+ * in the scene's scale and the material check, shared by the NFF grammar
+ * (nff.c) and the solids grammar (nff_solids.c). Uses the lexer only.
+ */
+#include "nff_scene.h"
+
+block_t *rd_top_block(reader_t *r)
+{
+    return r->n_blocks ? &r->blocks[r->n_blocks - 1] : 0;
+}
+
+bool rd_pos(reader_t *r, const char *what, real_t *out)
+{
+    decimal_t d;
+    if (!lex_decimal(&r->lx, what, &d))
+        return false;
+    *out = 0;
+    if (r->measuring) {
+        if (d.mant != 0) {
+            /* inside transform blocks sizes may grow by their scales */
+            const block_t *b = rd_top_block(r);
+            int32_t p = decimal_exp2_bound(&d) + (b ? b->extent_exp2 : 0);
+            unsigned f = r->far;
+            if (p > r->max_exp2[f]) {
+                r->max_exp2[f] = p;
+                r->max_line[f] = r->lx.tok_line;
+                r->max_what[f] = what;
+            }
+        }
+        return true;
+    }
+    if (!r_from_decimal_scaled(d.neg, d.mant, d.exp10, r->scale_log2, out))
+        return lex_out_of_range(&r->lx, what);
+    return true;
+}
+
+bool rd_pos3(reader_t *r, const char *what, vec3_t *v)
+{
+    return rd_pos(r, what, &v->x) && rd_pos(r, what, &v->y) && rd_pos(r, what, &v->z);
+}
+
+bool rd_need_material(reader_t *r, const char *what)
+{
+    if (r->have_material)
+        return true;
+    rt_error_set(r->lx.err, r->lx.tok_line, what);
+    rt_error_append(r->lx.err, " before any 'f' material line");
+    return false;
+}

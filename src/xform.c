@@ -1,0 +1,88 @@
+/*
+ * xform.c - affine transforms of solids (layers: xform.h): composed by
+ * the reader step by step (translate, scale, rotate), applied to points
+ * and normals. Uses no other solid file.
+ */
+#include "xform.h"
+
+static real_t row_dot(const real_t row[3], vec3_t v)
+{
+    return r_from_wide(r_wmul(row[0], v.x) + r_wmul(row[1], v.y) + r_wmul(row[2], v.z));
+}
+
+vec3_t xform_mat_vec(const real_t m[3][3], vec3_t v)
+{
+    return v3(row_dot(m[0], v), row_dot(m[1], v), row_dot(m[2], v));
+}
+
+/* out = a * b (out may be a or b) */
+static void mat_mul(real_t out[3][3], const real_t a[3][3], const real_t b[3][3])
+{
+    real_t r[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            r[i][j] = r_from_wide(r_wmul(a[i][0], b[0][j]) + r_wmul(a[i][1], b[1][j]) + r_wmul(a[i][2], b[2][j]));
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            out[i][j] = r[i][j];
+}
+
+void xform_identity(xform_t *x)
+{
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 3; j++)
+            x->m[i][j] = x->im[i][j] = i == j ? R_ONE : 0;
+        x->t[i] = 0;
+    }
+}
+
+/* world = M (p + v) + t: only t moves */
+void xform_translate(xform_t *x, vec3_t v)
+{
+    vec3_t mv = xform_mat_vec(x->m, v);
+    x->t[0] += mv.x;
+    x->t[1] += mv.y;
+    x->t[2] += mv.z;
+}
+
+void xform_scale(xform_t *x, vec3_t s)
+{
+    const real_t d[3][3] = { { s.x, 0, 0 }, { 0, s.y, 0 }, { 0, 0, s.z } };
+    const real_t di[3][3] = { { r_recip(s.x), 0, 0 }, { 0, r_recip(s.y), 0 }, { 0, 0, r_recip(s.z) } };
+    mat_mul(x->m, x->m, d);
+    mat_mul(x->im, di, x->im);
+}
+
+void xform_rotate(xform_t *x, vec3_t axis, real_t deg)
+{
+    real_t s, c;
+    r_sincos_deg(deg, &s, &c);
+    vec3_t a = v3_unit(axis);
+    real_t oc = R_ONE - c;
+    /* Rodrigues: R = c I + s [a]x + (1 - c) a a^T; the inverse is R^T */
+    real_t r[3][3] = {
+        { c + r_mul(oc, r_mul(a.x, a.x)), r_mul(oc, r_mul(a.x, a.y)) - r_mul(s, a.z), r_mul(oc, r_mul(a.x, a.z)) + r_mul(s, a.y) },
+        { r_mul(oc, r_mul(a.y, a.x)) + r_mul(s, a.z), c + r_mul(oc, r_mul(a.y, a.y)), r_mul(oc, r_mul(a.y, a.z)) - r_mul(s, a.x) },
+        { r_mul(oc, r_mul(a.z, a.x)) - r_mul(s, a.y), r_mul(oc, r_mul(a.z, a.y)) + r_mul(s, a.x), c + r_mul(oc, r_mul(a.z, a.z)) },
+    };
+    real_t rt[3][3];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            rt[i][j] = r[j][i];
+    mat_mul(x->m, x->m, r);
+    mat_mul(x->im, rt, x->im);
+}
+
+vec3_t xform_point(const xform_t *x, vec3_t p)
+{
+    return v3_add(xform_mat_vec(x->m, p), v3(x->t[0], x->t[1], x->t[2]));
+}
+
+vec3_t xform_normal(const xform_t *x, vec3_t n)
+{
+    /* (M^-1)^T n */
+    vec3_t w = v3(r_from_wide(r_wmul(x->im[0][0], n.x) + r_wmul(x->im[1][0], n.y) + r_wmul(x->im[2][0], n.z)),
+                  r_from_wide(r_wmul(x->im[0][1], n.x) + r_wmul(x->im[1][1], n.y) + r_wmul(x->im[2][1], n.z)),
+                  r_from_wide(r_wmul(x->im[0][2], n.x) + r_wmul(x->im[1][2], n.y) + r_wmul(x->im[2][2], n.z)));
+    return v3_unit(w);
+}
