@@ -370,19 +370,8 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     int32_t scale = r.scale_log2;
     reader_start(&r, text, len, store, err);
     r.scale_log2 = scale;
+    scene_store_reset(store);
     scene_t *sc = &store->scene;
-    *sc = (scene_t){ 0 };
-    sc->materials = store->materials;
-    sc->lights = store->lights;
-    sc->spheres = store->spheres;
-    sc->cones = store->cones;
-    sc->polygons = store->polygons;
-    sc->vertices = store->vertices;
-    sc->normals = store->normals;
-    sc->xforms = store->xforms;
-    sc->shapes = store->shapes;
-    sc->csg_nodes = store->csg_nodes;
-    sc->objects = store->objects;
     sc->scale_log2 = scale;
     if (!read_pass(&r))
         return false;

@@ -140,6 +140,18 @@ typedef struct {
     RT_SCENE_TABLES(RT_STORE_TABLE)
 } scene_store_t;
 
+/* An empty scene on the store's tables. */
+static inline void scene_store_reset(scene_store_t *st)
+{
+    st->scene = (scene_t){ 0 };
+#define RT_BIND_TABLE(type, table, cap) st->scene.table = st->table;
+#define RT_BIND_PRIM_TABLE(type, table, cap, KIND, name, use) RT_BIND_TABLE(type, table, cap)
+    RT_PRIM_KINDS(RT_BIND_PRIM_TABLE)
+    RT_SCENE_TABLES(RT_BIND_TABLE)
+#undef RT_BIND_TABLE
+#undef RT_BIND_PRIM_TABLE
+}
+
 /* Primitives of every kind together. */
 static inline uint32_t scene_prim_count(const scene_t *sc)
 {
