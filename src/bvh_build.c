@@ -17,7 +17,7 @@
  * Cortex-M3. It is what makes small groups end as leaves. */
 #define BVH_TRAVERSAL_COST 2
 
-/* Rounding slack added around every primitive's box (geometry.h). */
+/* Rounding slack added around every primitive's box (tolerance.h). */
 #define BOX_SLACK RT_BOX_SLACK
 
 typedef struct {

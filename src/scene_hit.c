@@ -4,7 +4,7 @@
  * BVH traversal: nearest-first with a bounded stack for eye, reflection
  * and refraction rays; any-hit with an early exit for shadow rays. The
  * slab tests are conservative: every box is padded by RT_BOX_SLACK, more
- * than the error of the reciprocal over any ray (geometry.h), so a box is
+ * than the error of the reciprocal over any ray (tolerance.h), so a box is
  * never missed because of rounding (it may be entered needlessly, which
  * costs time, not correctness). The brute-force versions are the
  * reference the BVH is tested against.

@@ -15,7 +15,7 @@
  *   reference splits into "number format" and "tolerances".
  *
  * Secondary rays need no surface offset where geometry rules a self-hit
- * out (ray_t.from in geometry.h, leave() in trace.c): a plane is never met
+ * out (ray_t.from in ray.h, leave() in trace.c): a plane is never met
  * again by a ray leaving it, a ray leaving a sphere's or cone's outside
  * never comes back, and a ray going in meets that surface only at its far
  * root. Only solids (quadrics, tori, boxes, CSG) keep an offset, and
