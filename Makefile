@@ -70,7 +70,7 @@ build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard s
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
 build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o
-	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lz -lm
+	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
 build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o tests/testlib.h tests/probe_jump.h
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \

@@ -6,6 +6,7 @@ command -v cc >/dev/null 2>&1 || need="$need gcc"
 command -v make >/dev/null 2>&1 || need="$need make"
 command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
+[ -f /usr/include/png.h ] || need="$need libpng-dev"
 command -v python3 >/dev/null 2>&1 || need="$need python3"
 command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
 command -v cppcheck >/dev/null 2>&1 || need="$need cppcheck"

@@ -48,7 +48,7 @@ expect_cli "depth over max" 2 "--depth: expected 1..RT_MAX_DEPTH" -- "$RT" $S -o
 expect_cli "no output" 2 "no output file given" -- "$RT" $S
 expect_cli "scene is a directory" 2 "tests/bad: cannot read" -- "$RT" tests/bad -o "$OUT/out.png"
 expect_cli "missing scene" 2 "cannot open" -- "$RT" "$OUT/nope.nff" -o "$OUT/out.png"
-expect_cli "unknown extension" 1 "unknown output format" -- "$RT" $S -o "$OUT/out.jpg" --size 8x8
+expect_cli "unknown extension" 1 "unknown image format" -- "$RT" $S -o "$OUT/out.jpg" --size 8x8
 expect_cli "unwritable path" 1 "cannot open" -- "$RT" $S -o "$OUT/no/such/dir/out.png" --size 8x8
 [ ! -e "$OUT/out.jpg" ] && ok "unknown extension leaves no file" || bad "unknown extension left $OUT/out.jpg"
 expect_cli "compare size mismatch" 2 "differ" -- sh -c "'$RT' $S -o '$OUT/a.png' --size 8x8 && '$RT' $S -o '$OUT/b.png' --size 8x9 && '$RT' compare '$OUT/a.png' '$OUT/b.png'"
