@@ -69,7 +69,9 @@ build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard s
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o
+# libpng for PNG files; zlib for the UART stream's Adler-32 checksums.
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o build/$(1)/host_io.o \
+               build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
 build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o tests/testlib.h tests/probe_jump.h
@@ -112,6 +114,10 @@ host-run: deps
 	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
 
 include platform/mps2-an385/board.mk
+
+# rt-scenec (its rule is in board.mk) links the hosted I/O module as well:
+# a prerequisite added here joins that rule's $^.
+$(SCENEC_DIR)/rt-scenec: platform/hosted/host_io.c
 
 deps:
 	@sh platform/ensure-deps.sh
