@@ -136,27 +136,56 @@ bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
 	python3 bench/run_bench.py --quick
 
+FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
+          build/fuzz/fuzz_receive build/fuzz/fuzz_scenec
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/fuzz/fuzz_nff build/scenec/rt-scenec
+        build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
 
 test: deps
 	$(MAKE) -j2 $(TESTS)
-	@tests/run-all.sh build/asan
+	@FUZZ_SMOKE=$(FUZZ_SMOKE) tests/run-all.sh build/asan
 
-# Fuzzing (clang's libFuzzer) over the reader and a tiny render, under
-# ASan and UBSan; the seed corpus is tests/fuzz-corpus, new inputs go to
-# build/fuzz/corpus. make test runs FUZZ_SMOKE seconds of it.
+# Fuzzing (clang's libFuzzer) under ASan and UBSan:
+#   fuzz_nff         the reader and a tiny render, fixed build, default capacities
+#   fuzz_nff_double  the same, double build, host capacities (what rt runs)
+#   fuzz_nff_float   the same, float build, host capacities
+#   fuzz_scenec      the scene compiler: reader (board capacities) and emitters
+#   fuzz_receive     rt receive's UART stream decoder
+# Seeds: tests/fuzz-corpus (NFF), tests/fuzz-corpus-receive (streams); new
+# inputs go to build/fuzz/corpus-NAME. make test runs FUZZ_SMOKE seconds
+# of each (tests/fuzz-smoke.sh); make fuzz FUZZER=NAME runs one longer.
 FUZZ_SECONDS ?= 300
-FUZZ_SMOKE ?= 60
+FUZZ_SMOKE ?= 20
+FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
 build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
-fuzz: deps build/fuzz/fuzz_nff
-	@mkdir -p build/fuzz/corpus
-	build/fuzz/fuzz_nff build/fuzz/corpus tests/fuzz-corpus -max_total_time=$(FUZZ_SECONDS) -timeout=10 \
-	    -max_len=4096 -print_final_stats=1
+build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+
+build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+
+build/fuzz/fuzz_scenec: tests/fuzz_scenec.c platform/hosted/scenec.c platform/hosted/host_io.c \
+                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard src/*.h) Makefile
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L $(BOARD_CAPS) -Isrc -o $@ \
+	    tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC)
+
+build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
+                         platform/hosted/image.h Makefile
+	@mkdir -p $(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iplatform/hosted -o $@ \
+	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz
+
+fuzz: deps build/fuzz/$(FUZZER)
+	@mkdir -p build/fuzz/corpus-$(FUZZER)
+	build/fuzz/$(FUZZER) build/fuzz/corpus-$(FUZZER) $(if $(filter fuzz_receive,$(FUZZER)),tests/fuzz-corpus-receive,tests/fuzz-corpus) \
+	    -max_total_time=$(FUZZ_SECONDS) -timeout=10 -max_len=4096 -print_final_stats=1
 
 fuzz-coverage: deps
 	sh tests/fuzz-coverage.sh
