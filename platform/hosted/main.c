@@ -52,7 +52,7 @@ static const char compare_usage[] =
     "Prints PSNR, the largest channel difference and the share of pixels off by\n"
     "more than 2/255 and 8/255.\n"
     "  --psnr-min DB       exit 1 if PSNR is below DB\n"
-    "  --max-over8 PCT     exit 1 if more than PCT %% of pixels differ by > 8/255\n"
+    "  --max-over8 PCT     exit 1 if more than PCT % of pixels differ by > 8/255\n"
     "  --max-error N       exit 1 if any channel differs by more than N/255\n"
     "  -h, --help          this text; --version: the version\n"
     "\n"
