@@ -27,13 +27,21 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
         bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
         continue
     fi
-    "$RT" $(scene_file $s) -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --quiet 2>/dev/null
+    "$RT" $(scene_file $s) -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --quiet --stats 2>"$OUT/$s-host.stats"
     ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
     if cmp=$("$RT" compare "$OUT/$s-board.png" "$OUT/$s-host.png" --max-error 0); then
         ok "$s: board == host fixed ($cmp), $ipp instructions/pixel"
     else
         bad "$s: board and host fixed differ: $cmp"
     fi
+    # The core's counters (src/stats.h): same keys and values on both.
+    same=$(awk 'NR == FNR { host[$1] = $2; next }
+                ($1 in host) { n++; if (host[$1] != $2) { print "differ: " $1 " board " $2 " host " host[$1]; bad = 1 } }
+                END { if (!bad) print n " counters equal" }' "$OUT/$s-host.stats" "$OUT/$s.report")
+    case $same in
+        1[0-9]" counters equal") ok "$s: board report and rt --stats: $same" ;;
+        *) bad "$s: board report and rt --stats: $same" ;;
+    esac
 done
 
 # Compile-time pruning changes code size, never pixels: unpruned firmware

@@ -1,7 +1,8 @@
 #!/bin/sh
 # Bad input and CLI errors: each tests/bad/NAME.nff must fail with exit
 # status 2 and exactly "tests/bad/NAME.nff:<NAME.expect>" on stderr, and
-# leave no output image behind.
+# leave no output image behind. Then the options of rt, rt compare,
+# rt receive and rt-scenec, and rt receive on good and damaged streams.
 RT=${1:-build/asan/rt}
 OUT=${2:-build/test-cli}
 mkdir -p "$OUT"
@@ -48,7 +49,7 @@ expect_cli "depth over max" 2 "--depth: expected 1..RT_MAX_DEPTH" -- "$RT" $S -o
 expect_cli "no output" 2 "no output file given" -- "$RT" $S
 expect_cli "scene is a directory" 2 "tests/bad: cannot read" -- "$RT" tests/bad -o "$OUT/out.png"
 expect_cli "missing scene" 2 "cannot open" -- "$RT" "$OUT/nope.nff" -o "$OUT/out.png"
-expect_cli "unknown extension" 1 "unknown output format" -- "$RT" $S -o "$OUT/out.jpg" --size 8x8
+expect_cli "unknown extension" 1 "unknown image format" -- "$RT" $S -o "$OUT/out.jpg" --size 8x8
 expect_cli "unwritable path" 1 "cannot open" -- "$RT" $S -o "$OUT/no/such/dir/out.png" --size 8x8
 [ ! -e "$OUT/out.jpg" ] && ok "unknown extension leaves no file" || bad "unknown extension left $OUT/out.jpg"
 expect_cli "compare size mismatch" 2 "differ" -- sh -c "'$RT' $S -o '$OUT/a.png' --size 8x8 && '$RT' $S -o '$OUT/b.png' --size 8x9 && '$RT' compare '$OUT/a.png' '$OUT/b.png'"
@@ -58,6 +59,141 @@ big="$OUT/ten-mb-line.nff"
 { printf 'v\nfrom 0 -5 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 8 8\nf 1 1 1 1 0 1 0 1\ns '
   head -c 10000000 /dev/zero | tr '\0' '7'; printf ' 0 0 1\n'; } >"$big"
 expect_cli "10 MB line" 2 "ten-mb-line.nff:9: s: scene too large for the fixed range" -- "$RT" "$big" -o "$OUT/out.png"
+
+# Options (getopt_long): help and version on every command, both value
+# forms, '--', errors with a usage hint.
+SCENEC=build/scenec/rt-scenec
+version=$(sed -n 's/^#define RT_VERSION "\(.*\)"$/\1/p' platform/hosted/version.h)
+for cmd in "$RT" "$RT compare" "$RT receive" "$SCENEC"; do
+    name=$(basename "$(echo "$cmd" | cut -d' ' -f1)")$(echo "$cmd" | sed -n 's/^[^ ]* / /p')
+    out=$($cmd --version 2>"$OUT/err"); status=$?
+    want="$(basename "$(echo "$cmd" | cut -d' ' -f1)") $version"
+    if [ $status -eq 0 ] && [ -n "$version" ] && [ "$out" = "$want" ] && [ ! -s "$OUT/err" ]; then
+        ok "$name --version: '$out'"
+    else
+        bad "$name --version: status $status, '$out' (want '$want'), stderr '$(cat "$OUT/err")'"
+    fi
+    for h in --help -h; do
+        out=$($cmd $h 2>"$OUT/err"); status=$?
+        if [ $status -eq 0 ] && [ "${out#usage: }" != "$out" ] && [ ! -s "$OUT/err" ]; then
+            ok "$name $h: usage on stdout, exit 0 ($(echo "$out" | wc -l) lines)"
+        else
+            bad "$name $h: status $status, stdout '$(echo "$out" | head -1)', stderr '$(cat "$OUT/err")'"
+        fi
+    done
+    out=$($cmd --bogus-option 2>"$OUT/err"); status=$?
+    if [ $status -eq 2 ] && [ -z "$out" ] && grep -q "unknown option '--bogus-option'" "$OUT/err" && grep -q -- "--help' for usage" "$OUT/err"; then
+        ok "$name --bogus-option: exit 2, '$(head -1 "$OUT/err")' and a usage hint"
+    else
+        bad "$name --bogus-option: status $status, stderr '$(cat "$OUT/err")'"
+    fi
+done
+"$RT" --help | grep -q -- "--stats" && "$RT" compare --help | grep -q -- "--max-error" && "$RT" receive --help | grep -q -- "--report-wait" &&
+    "$SCENEC" --help | grep -q -- "--header" && ok "each usage text names its command's options" || bad "a usage text misses its options"
+
+rm -f "$OUT/eq-a.png" "$OUT/eq-b.png"
+if "$RT" $S -o "$OUT/eq-a.png" --size=24x16 --quiet && "$RT" --size 24x16 --quiet $S --output="$OUT/eq-b.png" &&
+   "$RT" compare "$OUT/eq-a.png" "$OUT/eq-b.png" --max-error=0 >/dev/null &&
+   "$RT" $S -o "$OUT/eq-c.png" --size 24x17 --quiet && ! "$RT" compare "$OUT/eq-a.png" "$OUT/eq-c.png" 2>/dev/null; then
+    ok "--size=24x16 and --size 24x16 give the same 24x16 image (options before or after the scene)"
+else
+    bad "--size=WxH and --size WxH differ or failed"
+fi
+expect_cli "option value missing after =" 2 "--size: expected WxH, got ''" -- "$RT" $S -o "$OUT/out.png" --size=
+expect_cli "flag given a value" 2 "option '--quiet=yes' takes no value" -- "$RT" $S -o "$OUT/out.png" --quiet=yes
+expect_cli "--stats takes text or json" 2 "--stats: expected --stats, --stats=text or --stats=json, got 'xml'" -- "$RT" $S -o "$OUT/out.png" --stats=xml
+"$RT" $S -o "$OUT/st.png" --size 8x8 --quiet --stats=text 2>"$OUT/st.txt" && grep -q "^eye_rays  *64$" "$OUT/st.txt" &&
+    ok "--stats=text prints the statistics" || bad "--stats=text: $(cat "$OUT/st.txt")"
+# --stats=json: one JSON object with the same keys and values as the text.
+if "$RT" $S -o "$OUT/st.png" --size 8x8 --quiet --stats=json 2>"$OUT/st.json" &&
+   python3 - "$OUT/st.txt" "$OUT/st.json" <<'PY'
+import json, sys
+text = dict(l.split(None, 1) for l in open(sys.argv[1]).read().splitlines())
+obj = json.load(open(sys.argv[2]))
+assert set(obj) == set(text), (set(obj) ^ set(text))
+for k, v in obj.items():
+    if k != "render_seconds":
+        want = text[k].strip()
+        assert (v == want) if isinstance(v, str) else (v == float(want)), (k, v, want)
+assert obj["eye_rays"] == 64 and "sphere_tests" in obj and "bvh_nodes_visited" in obj
+PY
+then
+    ok "--stats=json: valid JSON, the text's keys and values (eye_rays 64)"
+else
+    bad "--stats=json: $(head -c 300 "$OUT/st.json")"
+fi
+
+# '--' ends the options: a scene whose name starts with '-'.
+cp $S "$OUT/-dash.nff"
+rm -f "$OUT/dash.png"
+if (cd "$OUT" && "$OLDPWD/$RT" -o dash.png --size 8x8 --quiet -- -dash.nff) && [ -f "$OUT/dash.png" ]; then
+    ok "'--' ends the options: rt -o dash.png -- -dash.nff renders"
+else
+    bad "'--': rt -o dash.png -- -dash.nff failed"
+fi
+expect_cli "without '--' the name is an option" 2 "unknown option '-d'" -- sh -c "cd '$OUT' && '$PWD/$RT' -o out.png --size 8x8 -dash.nff"
+expect_cli "after '--' an option is an argument" 2 "unexpected argument '--quiet'" -- "$RT" -o "$OUT/out.png" -- $S --quiet
+
+# The output is checked before the render: a 4096x4096 double render takes
+# many seconds, the refusal must not.
+mkdir -p "$OUT/dir.png"
+ms() { date +%s%N | cut -c1-13; }
+for case in "no/such/dir/out.png|1|cannot open for writing: No such file or directory" "out.bmp|1|out.bmp: unknown image format (use .png or .ppm)" \
+            "dir.png|1|dir.png: cannot open for writing: Is a directory"; do
+    path="$OUT/${case%%|*}" rest=${case#*|}
+    want_status=${rest%%|*} want=${rest#*|}
+    t0=$(ms)
+    got=$("$RT" $S -o "$path" --size 4096x4096 --double --quiet 2>&1); status=$?
+    dt=$(($(ms) - t0))
+    if [ $status -eq "$want_status" ] && [ $dt -lt 3000 ] && echo "$got" | grep -qF "rt: $path" && echo "$got" | grep -qF "$want" &&
+       [ ! -e "$OUT/out.bmp" ]; then
+        ok "output checked before the render: '$got' in $dt ms"
+    else
+        bad "output check: status $status, $dt ms, '$got' (want '$want')"
+    fi
+done
+
+# rt receive: the board's stream (a QEMU run of rings-1, 8x8, kept as the
+# receive fuzzer's seed) with noise before it, cut short, corrupted, and
+# fed through a pipe that stays open after the frame.
+ST=tests/fuzz-corpus-receive/rings-1-8x8.stream
+"$RT" receive "$ST" -o "$OUT/rx.png" >"$OUT/rx.report" 2>"$OUT/rx.err"
+if [ $? -eq 0 ] && [ ! -s "$OUT/rx.err" ] && grep -q "^instructions_per_pixel [0-9]*$" "$OUT/rx.report" &&
+   grep -q "^stack_guard_intact 1$" "$OUT/rx.report"; then
+    ok "receive: clean stream, $(wc -l <"$OUT/rx.report") report lines (the last after the frame end)"
+else
+    bad "receive: clean stream failed: $(cat "$OUT/rx.err")"
+fi
+{ printf 'Booting rt 1.0\r\nTest mode\r\n\000\377garbage RTF T\377\377 R'; cat "$ST"; } >"$OUT/noisy.stream"
+rm -f "$OUT/noisy.png"
+"$RT" receive "$OUT/noisy.stream" -o "$OUT/noisy.png" >"$OUT/noisy.report" 2>"$OUT/noisy.err"; status=$?
+if [ $status -eq 0 ] && "$RT" compare "$OUT/noisy.png" "$OUT/rx.png" --max-error 0 >/dev/null &&
+   cmp -s "$OUT/noisy.report" "$OUT/rx.report" && grep -q "skipped 46 byte(s) before the frame header" "$OUT/noisy.err"; then
+    ok "receive: noise before the frame skipped: $(cat "$OUT/noisy.err" | sed 's/.*: note: //'), same image and report"
+else
+    bad "receive with leading noise: status $status, $(cat "$OUT/noisy.err")"
+fi
+n=$(wc -c <"$ST")
+head -c $((n / 3)) "$ST" >"$OUT/cut.stream"
+expect_cli "receive: truncated frame" 2 "stream truncated" -- "$RT" receive "$OUT/cut.stream" -o "$OUT/out.png"
+python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[40]^=0x01; open(sys.argv[2],'wb').write(d)" "$ST" "$OUT/flip.stream"
+expect_cli "receive: one bit flipped in a band" 2 "band checksum mismatch" -- "$RT" receive "$OUT/flip.stream" -o "$OUT/out.png"
+python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[4]=7; open(sys.argv[2],'wb').write(d)" "$ST" "$OUT/hdr.stream"
+expect_cli "receive: bad frame header" 2 "bad frame header (format 7, 8x8)" -- "$RT" receive "$OUT/hdr.stream" -o "$OUT/out.png"
+expect_cli "receive: no frame" 2 "no frame in the stream" -- sh -c "printf 'just boot text' | '$RT' receive - -o '$OUT/out.png'"
+expect_cli "receive: output checked first" 1 "out.gif: unknown image format" -- "$RT" receive "$ST" -o "$OUT/out.gif"
+# the writer keeps the pipe open 6 s after the stream; rt must return at
+# the frame end plus the report's idle wait (0.5 s), image and report in
+rm -f "$OUT/pipe.png"
+t0=$(ms)
+{ cat "$ST"; sleep 6; } | { "$RT" receive -o "$OUT/pipe.png" >"$OUT/pipe.report" 2>&1; echo $? >"$OUT/pipe.status"; ms >"$OUT/pipe.end"; }
+dt=$(($(cat "$OUT/pipe.end") - t0))
+if [ "$(cat "$OUT/pipe.status")" = 0 ] && [ $dt -lt 4500 ] && cmp -s "$OUT/pipe.report" "$OUT/rx.report" &&
+   "$RT" compare "$OUT/pipe.png" "$OUT/rx.png" --max-error 0 >/dev/null; then
+    ok "receive from a pipe kept open: returned after $dt ms with the image and all $(wc -l <"$OUT/pipe.report") report lines"
+else
+    bad "receive from a pipe kept open: status $(cat "$OUT/pipe.status"), $dt ms: $(head -3 "$OUT/pipe.report")"
+fi
 
 # Inputs the fuzzer once broke: must now load and render, or fail cleanly.
 for f in tests/fuzz-found/*.nff; do
@@ -71,7 +207,6 @@ done
 
 # Capacities: every overflow names its capacity and how to raise it, and
 # the scene compiler (board capacities) says it the same way as rt.
-SCENEC=build/scenec/rt-scenec
 capacity_case() { # name, scene body generator output file
     f="$OUT/cap-$1.nff"
     a=$("$RT" "$f" -o "$OUT/out.png" 2>&1 >/dev/null)

@@ -1,6 +1,8 @@
 /*
  * fuzz_nff.c - libFuzzer harness over the scene reader and a tiny render
- * (fixed build, default capacities, under ASan and UBSan).
+ * under ASan and UBSan, for whichever backend it is built with: the fixed
+ * build at default capacities (fuzz_nff), and the double and float builds
+ * at the host capacities rt uses (fuzz_nff_double, fuzz_nff_float).
  *
  * Any input must either load or fail with a non-empty error message and
  * a plausible line number; a scene that loads must render 8x8 at depth 3

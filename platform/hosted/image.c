@@ -1,22 +1,20 @@
-/* image.c - PNG and binary PPM reading and writing, and image comparison,
- * with zlib and stdio only. */
+/* image.c - PNG (through libpng) and binary PPM reading and writing, and
+ * image comparison. */
 #include "image.h"
 
 #include <ctype.h>
 #include <errno.h>
-#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
-#include <zlib.h>
+#include <png.h>
 
 #define MAX_DIM 16384
-#define IO_CHUNK 65536 /* bytes per stdio read and per IDAT chunk written */
-
-static const uint8_t png_sig[8] = {137, 'P', 'N', 'G', '\r', '\n', 26, '\n'};
 
 #if defined(__GNUC__)
 #define PRINTF_LIKE(f, a) __attribute__((format(printf, f, a)))
@@ -47,169 +45,125 @@ static int ends_with_ci(const char *s, const char *suffix)
     return 1;
 }
 
-static uint32_t get_be32(const uint8_t *p)
-{
-    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3];
-}
-
-static void put_be32(uint8_t *p, uint32_t v)
-{
-    p[0] = (uint8_t)(v >> 24);
-    p[1] = (uint8_t)(v >> 16);
-    p[2] = (uint8_t)(v >> 8);
-    p[3] = (uint8_t)v;
-}
-
-static int paeth(int a, int b, int c)
-{
-    int p = a + b - c;
-    int pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
-    if (pa <= pb && pa <= pc)
-        return a;
-    return pb <= pc ? b : c;
-}
-
-/* ---- writing ---- */
+/* ---- libpng glue: its errors become "path: message" in why ---- */
 
 typedef struct {
     FILE *f;
-    int err; /* first errno from a failed write; later writes are skipped */
-} out_t;
+    const char *path;
+    char *why;
+    size_t why_len;
+} png_io_t;
 
-static void put(out_t *o, const void *p, size_t n)
+static void png_fail(png_structp png, png_const_charp msg)
 {
-    if (o->err || n == 0)
-        return;
+    png_io_t *io = png_get_error_ptr(png);
+    say(io->why, io->why_len, "%s: %s", io->path, msg);
+    png_longjmp(png, 1);
+}
+
+/* Warnings (ancillary chunks with bad CRCs, odd profiles) change no pixel. */
+static void png_quiet(png_structp png, png_const_charp msg)
+{
+    (void)png;
+    (void)msg;
+}
+
+static void png_read_bytes(png_structp png, png_bytep data, size_t n)
+{
+    png_io_t *io = png_get_io_ptr(png);
     errno = 0;
-    if (fwrite(p, 1, n, o->f) != n)
-        o->err = errno ? errno : EIO;
+    if (fread(data, 1, n, io->f) == n)
+        return;
+    if (ferror(io->f)) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "read error: %s", strerror(errno ? errno : EIO));
+        png_error(png, msg);
+    }
+    png_error(png, "file is truncated");
 }
 
-static void put_chunk(out_t *o, const char *type, const uint8_t *data, uint32_t len)
+static void png_write_bytes(png_structp png, png_bytep data, size_t n)
 {
-    uint8_t head[8], tail[4];
-    put_be32(head, len);
-    memcpy(head + 4, type, 4);
-    uLong crc = crc32(0L, (const Bytef *)type, 4);
-    /* crc32() with a null buffer returns the initial value, not crc. */
-    if (len)
-        crc = crc32(crc, data, len);
-    put_be32(tail, (uint32_t)crc);
-    put(o, head, 8);
-    put(o, data, len);
-    put(o, tail, 4);
+    png_io_t *io = png_get_io_ptr(png);
+    errno = 0;
+    if (fwrite(data, 1, n, io->f) != n) {
+        char msg[128];
+        snprintf(msg, sizeof msg, "cannot write: %s", strerror(errno ? errno : EIO));
+        png_error(png, msg);
+    }
 }
 
-/* Filters one row all five ways into cand (5 rows of 1 + rowlen bytes) and
- * returns the one with the smallest sum of bytes taken as signed: the usual
- * cheap predictor of which row deflate will squeeze best. */
-static const uint8_t *png_filter_row(const uint8_t *cur, const uint8_t *prev, size_t rowlen,
-                                     uint8_t *cand)
+static void png_flush_bytes(png_structp png) { (void)png; }
+
+/* ---- writing ---- */
+
+static int write_png(png_io_t *io, const image_t *img)
 {
-    const size_t bpp = 3;
-    unsigned long sum[5] = {0};
-    for (size_t k = 0; k < 5; k++)
-        cand[k * (rowlen + 1)] = (uint8_t)k;
-    for (size_t i = 0; i < rowlen; i++) {
-        int x = cur[i], b = prev[i];
-        int a = i >= bpp ? cur[i - bpp] : 0;
-        int c = i >= bpp ? prev[i - bpp] : 0;
-        uint8_t v[5] = {(uint8_t)x, (uint8_t)(x - a), (uint8_t)(x - b), (uint8_t)(x - (a + b) / 2),
-                        (uint8_t)(x - paeth(a, b, c))};
-        for (size_t k = 0; k < 5; k++) {
-            cand[k * (rowlen + 1) + 1 + i] = v[k];
-            sum[k] += (unsigned long)abs((int)(int8_t)v[k]);
-        }
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, io, png_fail, png_quiet);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (!info) {
+        png_destroy_write_struct(&png, NULL);
+        say(io->why, io->why_len, "%s: out of memory", io->path);
+        return -1;
     }
-    size_t best = 0;
-    for (size_t k = 1; k < 5; k++)
-        if (sum[k] < sum[best])
-            best = k;
-    return cand + best * (rowlen + 1);
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return -1;
+    }
+    png_set_write_fn(png, io, png_write_bytes, png_flush_bytes);
+    png_set_IHDR(png, info, (png_uint_32)img->width, (png_uint_32)img->height, 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    for (int y = 0; y < img->height; y++)
+        png_write_row(png, img->rgb + (size_t)y * (size_t)img->width * 3);
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    return 0;
 }
 
-/* Returns a reason for a non-I/O failure, or NULL; I/O errors land in o->err. */
-static const char *write_png(out_t *o, const image_t *img)
+static int write_ppm(png_io_t *io, const image_t *img)
 {
-    size_t w = (size_t)img->width, h = (size_t)img->height, rowlen = w * 3;
-    uint8_t ihdr[13];
-    put_be32(ihdr, (uint32_t)w);
-    put_be32(ihdr + 4, (uint32_t)h);
-    ihdr[8] = 8;  /* bit depth */
-    ihdr[9] = 2;  /* colour type: RGB */
-    ihdr[10] = 0; /* deflate */
-    ihdr[11] = 0; /* adaptive filtering */
-    ihdr[12] = 0; /* not interlaced */
-    put(o, png_sig, 8);
-    put_chunk(o, "IHDR", ihdr, 13);
-
-    const char *fail = NULL;
-    int z_ready = 0;
-    z_stream zs;
-    memset(&zs, 0, sizeof zs);
-    uint8_t *zero_row = calloc(rowlen, 1);
-    uint8_t *cand = malloc(5 * (rowlen + 1));
-    uint8_t *zout = malloc(IO_CHUNK);
-    if (!zero_row || !cand || !zout) {
-        fail = "out of memory";
-        goto done;
+    errno = 0;
+    if (fprintf(io->f, "P6\n%d %d\n255\n", img->width, img->height) < 0 ||
+        fwrite(img->rgb, 3, (size_t)img->width * (size_t)img->height, io->f) !=
+            (size_t)img->width * (size_t)img->height) {
+        say(io->why, io->why_len, "%s: cannot write: %s", io->path, strerror(errno ? errno : EIO));
+        return -1;
     }
-    if (deflateInit(&zs, Z_DEFAULT_COMPRESSION) != Z_OK) {
-        fail = "zlib deflateInit failed";
-        goto done;
-    }
-    z_ready = 1;
-    zs.next_out = zout;
-    zs.avail_out = IO_CHUNK;
-    /* One pass per row, then one more with Z_FINISH to drain the stream. */
-    for (size_t y = 0; y <= h && !o->err; y++) {
-        int flush = y == h ? Z_FINISH : Z_NO_FLUSH;
-        if (y < h) {
-            const uint8_t *cur = img->rgb + y * rowlen;
-            const uint8_t *prev = y ? cur - rowlen : zero_row;
-            zs.next_in = (Bytef *)png_filter_row(cur, prev, rowlen, cand);
-            zs.avail_in = (uInt)(rowlen + 1);
-        }
-        for (;;) {
-            int r = deflate(&zs, flush);
-            if (r != Z_OK && r != Z_STREAM_END && r != Z_BUF_ERROR) {
-                fail = "zlib deflate failed";
-                goto done;
-            }
-            int full = zs.avail_out == 0, ended = r == Z_STREAM_END;
-            size_t have = IO_CHUNK - zs.avail_out;
-            if (full || (ended && have)) {
-                put_chunk(o, "IDAT", zout, (uint32_t)have);
-                zs.next_out = zout;
-                zs.avail_out = IO_CHUNK;
-            }
-            if (ended)
-                break;
-            if (flush == Z_NO_FLUSH && !full && zs.avail_in == 0)
-                break;
-            if (r == Z_BUF_ERROR && !full) {
-                fail = "zlib deflate made no progress";
-                goto done;
-            }
-        }
-    }
-    put_chunk(o, "IEND", NULL, 0);
-done:
-    if (z_ready)
-        deflateEnd(&zs);
-    free(zero_row);
-    free(cand);
-    free(zout);
-    return fail;
+    return 0;
 }
 
-static const char *write_ppm(out_t *o, const image_t *img)
+int image_check_output(const char *path, char *why, size_t why_len)
 {
-    char head[64];
-    int n = snprintf(head, sizeof head, "P6\n%d %d\n255\n", img->width, img->height);
-    put(o, head, (size_t)n);
-    put(o, img->rgb, (size_t)img->width * (size_t)img->height * 3);
-    return NULL;
+    if (!ends_with_ci(path, ".png") && !ends_with_ci(path, ".ppm")) {
+        say(why, why_len, "%s: unknown image format (use .png or .ppm)", path);
+        return -1;
+    }
+    struct stat st;
+    if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+        say(why, why_len, "%s: cannot open for writing: %s", path, strerror(EISDIR));
+        return -1;
+    }
+    /* image_write creates path.tmp beside it and renames it: the folder
+     * must exist and take new files. */
+    const char *slash = strrchr(path, '/');
+    char dir[4096];
+    if (!slash)
+        strcpy(dir, ".");
+    else if (slash == path)
+        strcpy(dir, "/");
+    else if ((size_t)(slash - path) < sizeof dir) {
+        memcpy(dir, path, (size_t)(slash - path));
+        dir[slash - path] = '\0';
+    } else {
+        say(why, why_len, "%s: cannot open for writing: %s", path, strerror(ENAMETOOLONG));
+        return -1;
+    }
+    if (access(dir, W_OK | X_OK) != 0) {
+        say(why, why_len, "%s: cannot open for writing: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
 }
 
 int image_write(const char *path, const image_t *img, char *why, size_t why_len)
@@ -220,24 +174,22 @@ int image_write(const char *path, const image_t *img, char *why, size_t why_len)
     }
     int png = ends_with_ci(path, ".png"), ppm = ends_with_ci(path, ".ppm");
     if (!png && !ppm) {
-        say(why, why_len, "unknown output format '%s' (use .png or .ppm)", path);
+        say(why, why_len, "%s: unknown image format (use .png or .ppm)", path);
         return -1;
     }
     if (img->width <= 0 || img->height <= 0 || !img->rgb) {
-        say(why, why_len, "cannot write '%s': the image is empty", path);
+        say(why, why_len, "%s: cannot write: the image is empty", path);
         return -1;
     }
-    /* Keeps a filtered row within zlib's uInt and the whole image within size_t. */
-    if ((size_t)img->width > (UINT_MAX - 1) / 3
-        || (size_t)img->height > SIZE_MAX / 3 / (size_t)img->width) {
-        say(why, why_len, "cannot write '%s': %dx%d is too large", path, img->width, img->height);
+    if (img->width > MAX_DIM * 4 || img->height > MAX_DIM * 4) {
+        say(why, why_len, "%s: cannot write: %dx%d is too large", path, img->width, img->height);
         return -1;
     }
 
     size_t n = strlen(path);
     char *tmp = malloc(n + sizeof ".tmp");
     if (!tmp) {
-        say(why, why_len, "cannot write '%s': out of memory", path);
+        say(why, why_len, "%s: cannot write: out of memory", path);
         return -1;
     }
     memcpy(tmp, path, n);
@@ -246,26 +198,22 @@ int image_write(const char *path, const image_t *img, char *why, size_t why_len)
     errno = 0;
     FILE *f = fopen(tmp, "wb");
     if (!f) {
-        say(why, why_len, "cannot open '%s' for writing: %s", path, strerror(errno));
+        say(why, why_len, "%s: cannot open for writing: %s", path, strerror(errno));
         free(tmp);
         return -1;
     }
-    out_t o = {f, 0};
-    const char *fail = png ? write_png(&o, img) : write_ppm(&o, img);
+    png_io_t io = { f, path, why, why_len };
+    int rc = png ? write_png(&io, img) : write_ppm(&io, img);
     errno = 0;
     /* fclose flushes, so a full disk may only show up here. */
-    if (fclose(f) != 0 && !o.err)
-        o.err = errno ? errno : EIO;
-
-    int rc = -1;
-    if (fail)
-        say(why, why_len, "cannot write '%s': %s", path, fail);
-    else if (o.err)
-        say(why, why_len, "cannot write '%s': %s", path, strerror(o.err));
-    else if (rename(tmp, path) != 0)
-        say(why, why_len, "cannot rename '%s' to '%s': %s", tmp, path, strerror(errno));
-    else
-        rc = 0;
+    if (fclose(f) != 0 && rc == 0) {
+        say(why, why_len, "%s: cannot write: %s", path, strerror(errno ? errno : EIO));
+        rc = -1;
+    }
+    if (rc == 0 && rename(tmp, path) != 0) {
+        say(why, why_len, "%s: cannot rename %s into place: %s", path, tmp, strerror(errno));
+        rc = -1;
+    }
     if (rc != 0)
         remove(tmp);
     free(tmp);
@@ -274,257 +222,52 @@ int image_write(const char *path, const image_t *img, char *why, size_t why_len)
 
 /* ---- reading ---- */
 
-typedef struct {
-    FILE *f;
-    const char *path;
-    char *why;
-    size_t why_len;
-} rd_t;
-
-PRINTF_LIKE(2, 3)
-static int rd_fail(rd_t *r, const char *fmt, ...)
+/* Any PNG libpng reads, as 8-bit RGB: palettes expanded, 16-bit samples
+ * cut to their high byte, grey replicated, alpha dropped (not composited). */
+static int read_png(png_io_t *io, image_t *img)
 {
-    char msg[160];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
-    va_end(ap);
-    say(r->why, r->why_len, "cannot read '%s': %s", r->path, msg);
-    return -1;
-}
-
-/* where names the part being read, for the truncation message. */
-static int rd_exact(rd_t *r, void *buf, size_t n, const char *where)
-{
-    errno = 0;
-    if (fread(buf, 1, n, r->f) == n)
-        return 0;
-    if (ferror(r->f))
-        return rd_fail(r, "read error: %s", strerror(errno ? errno : EIO));
-    return rd_fail(r, "file is truncated (ends inside %s)", where);
-}
-
-typedef struct {
-    size_t width, height, channels;
-    size_t rowlen;       /* bytes of samples per row, without the filter byte */
-    uint8_t *cur, *prev; /* 1 + rowlen each; [0] is the filter type; prev starts zeroed */
-    size_t fill;         /* bytes of cur inflated so far */
-    size_t rows;         /* rows finished */
-    uint8_t *rgb;
-    z_stream zs;
-    int z_ready, z_done;
-    char msg[80];
-} png_dec_t;
-
-static const char *png_row(png_dec_t *d)
-{
-    const size_t bpp = d->channels, n = d->rowlen;
-    uint8_t *x = d->cur + 1;
-    const uint8_t *b = d->prev + 1;
-    switch (d->cur[0]) {
-    case 0:
-        break;
-    case 1:
-        for (size_t i = bpp; i < n; i++)
-            x[i] = (uint8_t)(x[i] + x[i - bpp]);
-        break;
-    case 2:
-        for (size_t i = 0; i < n; i++)
-            x[i] = (uint8_t)(x[i] + b[i]);
-        break;
-    case 3:
-        for (size_t i = 0; i < n; i++)
-            x[i] = (uint8_t)(x[i] + ((i >= bpp ? x[i - bpp] : 0) + b[i]) / 2);
-        break;
-    case 4:
-        for (size_t i = 0; i < n; i++)
-            x[i] = (uint8_t)(x[i] + (i >= bpp ? paeth(x[i - bpp], b[i], b[i - bpp]) : b[i]));
-        break;
-    default:
-        snprintf(d->msg, sizeof d->msg, "unknown PNG filter type %d in row %zu", d->cur[0],
-                 d->rows);
-        return d->msg;
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, io, png_fail, png_quiet);
+    png_infop info = png ? png_create_info_struct(png) : NULL;
+    if (!info) {
+        png_destroy_read_struct(&png, NULL, NULL);
+        say(io->why, io->why_len, "%s: out of memory", io->path);
+        return -1;
     }
-    uint8_t *o = d->rgb + d->rows * d->width * 3;
-    for (size_t px = 0; px < d->width; px++, o += 3, x += bpp) {
-        if (bpp < 3) {
-            o[0] = o[1] = o[2] = x[0]; /* grey, alpha dropped */
-        } else {
-            o[0] = x[0];
-            o[1] = x[1];
-            o[2] = x[2];
-        }
+    /* img->rgb lives in memory the caller owns, so it survives the longjmp. */
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_read_struct(&png, &info, NULL);
+        return -1;
     }
-    uint8_t *t = d->prev;
-    d->prev = d->cur;
-    d->cur = t;
-    d->fill = 0;
-    d->rows++;
-    return NULL;
-}
-
-static const char *png_feed(png_dec_t *d, const uint8_t *data, size_t n)
-{
-    d->zs.next_in = (Bytef *)data;
-    d->zs.avail_in = (uInt)n;
-    while (d->zs.avail_in > 0 && !d->z_done) {
-        /* Anything after the last row (other encoders' padding) is ignored. */
-        if (d->rows == d->height) {
-            d->z_done = 1;
-            break;
-        }
-        d->zs.next_out = d->cur + d->fill;
-        d->zs.avail_out = (uInt)(d->rowlen + 1 - d->fill);
-        int ret = inflate(&d->zs, Z_NO_FLUSH);
-        d->fill = d->rowlen + 1 - d->zs.avail_out;
-        if (ret == Z_STREAM_END)
-            d->z_done = 1;
-        else if (ret == Z_MEM_ERROR)
-            return "out of memory";
-        else if (ret != Z_OK)
-            return "corrupt compressed image data";
-        if (d->fill == d->rowlen + 1) {
-            const char *e = png_row(d);
-            if (e)
-                return e;
-        }
-    }
-    return NULL;
-}
-
-static int png_ihdr(rd_t *r, png_dec_t *d, const uint8_t *h)
-{
-    uint32_t w = get_be32(h), ht = get_be32(h + 4);
-    int depth = h[8], type = h[9];
-    if (w == 0 || ht == 0)
-        return rd_fail(r, "PNG has zero width or height");
-    if (w > MAX_DIM || ht > MAX_DIM)
-        return rd_fail(r, "PNG is %lux%lu, over the %dx%d limit", (unsigned long)w,
-                       (unsigned long)ht, MAX_DIM, MAX_DIM);
-    switch (type) {
-    case 0: d->channels = 1; break;
-    case 2: d->channels = 3; break;
-    case 4: d->channels = 2; break;
-    case 6: d->channels = 4; break;
-    case 3: return rd_fail(r, "palette PNGs are not supported");
-    default: return rd_fail(r, "invalid PNG colour type %d", type);
-    }
-    if (depth != 8)
-        return rd_fail(r, "%d-bit PNG samples are not supported (only 8-bit)", depth);
-    if (h[10] != 0 || h[11] != 0)
-        return rd_fail(r, "unknown PNG compression or filter method");
-    if (h[12] == 1)
-        return rd_fail(r, "interlaced PNGs are not supported");
-    if (h[12] != 0)
-        return rd_fail(r, "invalid PNG interlace method %d", h[12]);
-
-    d->width = w;
-    d->height = ht;
-    d->rowlen = d->width * d->channels;
-    d->cur = calloc(d->rowlen + 1, 1);
-    d->prev = calloc(d->rowlen + 1, 1);
-    d->rgb = malloc(d->width * d->height * 3);
-    if (!d->cur || !d->prev || !d->rgb)
-        return rd_fail(r, "out of memory");
-    if (inflateInit(&d->zs) != Z_OK)
-        return rd_fail(r, "zlib inflateInit failed");
-    d->z_ready = 1;
+    png_set_read_fn(png, io, png_read_bytes);
+    png_set_sig_bytes(png, 8);
+    png_set_user_limits(png, MAX_DIM, MAX_DIM);
+    png_read_info(png, info);
+    int type = png_get_color_type(png, info), depth = png_get_bit_depth(png, info);
+    if (type == PNG_COLOR_TYPE_PALETTE)
+        png_set_palette_to_rgb(png);
+    if (type == PNG_COLOR_TYPE_GRAY && depth < 8)
+        png_set_expand_gray_1_2_4_to_8(png);
+    if (depth == 16)
+        png_set_strip_16(png);
+    png_set_strip_alpha(png);
+    if (type == PNG_COLOR_TYPE_GRAY || type == PNG_COLOR_TYPE_GRAY_ALPHA)
+        png_set_gray_to_rgb(png);
+    int passes = png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    png_uint_32 w = png_get_image_width(png, info), h = png_get_image_height(png, info);
+    if (png_get_rowbytes(png, info) != (size_t)w * 3)
+        png_error(png, "unsupported PNG pixel layout");
+    img->rgb = malloc((size_t)w * h * 3);
+    if (!img->rgb)
+        png_error(png, "out of memory");
+    img->width = (int)w;
+    img->height = (int)h;
+    for (int p = 0; p < passes; p++)
+        for (png_uint_32 y = 0; y < h; y++)
+            png_read_row(png, img->rgb + (size_t)y * w * 3, NULL);
+    png_read_end(png, NULL);
+    png_destroy_read_struct(&png, &info, NULL);
     return 0;
-}
-
-static int read_png(rd_t *r, image_t *img)
-{
-    png_dec_t d;
-    memset(&d, 0, sizeof d);
-    int rc = -1, have_ihdr = 0, ended = 0;
-    uint8_t *buf = malloc(IO_CHUNK);
-    if (!buf) {
-        rd_fail(r, "out of memory");
-        goto out;
-    }
-    while (!ended) {
-        uint8_t head[8], tail[4];
-        if (rd_exact(r, head, 8, "a PNG chunk header"))
-            goto out;
-        uint32_t len = get_be32(head);
-        char type[5] = {0};
-        memcpy(type, head + 4, 4);
-        for (int i = 0; i < 4; i++)
-            if (!isalpha((unsigned char)type[i])) {
-                rd_fail(r, "corrupt PNG chunk header");
-                goto out;
-            }
-        if (len > 0x7fffffffu) {
-            rd_fail(r, "PNG chunk '%s' has an invalid length", type);
-            goto out;
-        }
-        if (!have_ihdr && strcmp(type, "IHDR") != 0) {
-            rd_fail(r, "PNG does not start with an IHDR chunk");
-            goto out;
-        }
-        char where[32];
-        snprintf(where, sizeof where, "PNG chunk '%s'", type);
-        uLong crc = crc32(0L, head + 4, 4);
-
-        if (strcmp(type, "IHDR") == 0) {
-            if (have_ihdr || len != 13) {
-                rd_fail(r, "bad PNG IHDR chunk");
-                goto out;
-            }
-            if (rd_exact(r, buf, 13, where) || png_ihdr(r, &d, buf))
-                goto out;
-            crc = crc32(crc, buf, 13);
-            have_ihdr = 1;
-        } else {
-            if (strcmp(type, "IEND") == 0)
-                ended = 1;
-            /* A critical chunk we do not know could change the meaning of
-             * the pixels; PLTE is only a display hint for RGB images. */
-            else if (isupper((unsigned char)type[0]) && strcmp(type, "IDAT") != 0
-                     && !(strcmp(type, "PLTE") == 0 && d.channels >= 3)) {
-                rd_fail(r, "unsupported PNG chunk '%s'", type);
-                goto out;
-            }
-            int is_idat = strcmp(type, "IDAT") == 0;
-            for (uint32_t left = len; left > 0;) {
-                size_t n = left < IO_CHUNK ? left : IO_CHUNK;
-                if (rd_exact(r, buf, n, where))
-                    goto out;
-                crc = crc32(crc, buf, (uInt)n);
-                left -= (uint32_t)n;
-                if (is_idat) {
-                    const char *e = png_feed(&d, buf, n);
-                    if (e) {
-                        rd_fail(r, "%s", e);
-                        goto out;
-                    }
-                }
-            }
-        }
-        if (rd_exact(r, tail, 4, where))
-            goto out;
-        if (get_be32(tail) != (uint32_t)crc) {
-            rd_fail(r, "CRC mismatch in PNG chunk '%s' (corrupt file)", type);
-            goto out;
-        }
-    }
-    if (d.rows < d.height) {
-        rd_fail(r, "PNG image data is incomplete (%zu of %zu rows)", d.rows, d.height);
-        goto out;
-    }
-    img->width = (int)d.width;
-    img->height = (int)d.height;
-    img->rgb = d.rgb;
-    d.rgb = NULL;
-    rc = 0;
-out:
-    if (d.z_ready)
-        inflateEnd(&d.zs);
-    free(d.cur);
-    free(d.prev);
-    free(d.rgb);
-    free(buf);
-    return rc;
 }
 
 /* Reads a header number after any whitespace and # comments; *after gets
@@ -554,41 +297,55 @@ static long ppm_num(FILE *f, int *after)
     return v;
 }
 
-static int read_ppm(rd_t *r, image_t *img)
+static int read_ppm(png_io_t *io, image_t *img)
 {
-    int c = getc(r->f);
-    if (c == EOF || !(isspace(c) || c == '#'))
-        return rd_fail(r, "bad PPM header");
-    ungetc(c, r->f);
+    FILE *f = io->f;
+    int c = getc(f);
+    if (c == EOF || !(isspace(c) || c == '#')) {
+        say(io->why, io->why_len, "%s: bad PPM header", io->path);
+        return -1;
+    }
+    ungetc(c, f);
     long v[3];
     for (int i = 0; i < 3; i++) {
-        v[i] = ppm_num(r->f, &c);
-        if (v[i] < 0)
-            return rd_fail(r, "bad PPM header");
+        v[i] = ppm_num(f, &c);
+        if (v[i] < 0) {
+            say(io->why, io->why_len, "%s: bad PPM header", io->path);
+            return -1;
+        }
         /* The maxval's single whitespace byte is the last of the header. */
         if (i < 2 && c != EOF)
-            ungetc(c, r->f);
+            ungetc(c, f);
     }
-    if (!(c != EOF && isspace(c)))
-        return rd_fail(r, "bad PPM header");
-    if (v[0] == 0 || v[1] == 0)
-        return rd_fail(r, "PPM has zero width or height");
-    if (v[0] > MAX_DIM || v[1] > MAX_DIM)
-        return rd_fail(r, "PPM is %ldx%ld, over the %dx%d limit", v[0], v[1], MAX_DIM, MAX_DIM);
-    if (v[2] != 255)
-        return rd_fail(r, "PPM maxval %ld is not supported (only 255)", v[2]);
-
+    if (!(c != EOF && isspace(c))) {
+        say(io->why, io->why_len, "%s: bad PPM header", io->path);
+        return -1;
+    }
+    if (v[0] == 0 || v[1] == 0 || v[0] > MAX_DIM || v[1] > MAX_DIM) {
+        say(io->why, io->why_len, "%s: PPM is %ldx%ld: width and height must be 1..%d", io->path, v[0], v[1],
+            MAX_DIM);
+        return -1;
+    }
+    if (v[2] != 255) {
+        say(io->why, io->why_len, "%s: PPM maxval %ld is not supported (only 255)", io->path, v[2]);
+        return -1;
+    }
     size_t n = (size_t)v[0] * (size_t)v[1] * 3;
-    uint8_t *rgb = malloc(n);
-    if (!rgb)
-        return rd_fail(r, "out of memory");
-    if (rd_exact(r, rgb, n, "the PPM pixel data")) {
-        free(rgb);
+    img->rgb = malloc(n);
+    if (!img->rgb) {
+        say(io->why, io->why_len, "%s: out of memory", io->path);
+        return -1;
+    }
+    errno = 0;
+    if (fread(img->rgb, 1, n, f) != n) {
+        if (ferror(f))
+            say(io->why, io->why_len, "%s: read error: %s", io->path, strerror(errno ? errno : EIO));
+        else
+            say(io->why, io->why_len, "%s: file is truncated (ends inside the PPM pixel data)", io->path);
         return -1;
     }
     img->width = (int)v[0];
     img->height = (int)v[1];
-    img->rgb = rgb;
     return 0;
 }
 
@@ -603,30 +360,32 @@ int image_read(const char *path, image_t *img, char *why, size_t why_len)
     errno = 0;
     FILE *f = fopen(path, "rb");
     if (!f) {
-        say(why, why_len, "cannot open '%s' for reading: %s", path, strerror(errno));
+        say(why, why_len, "%s: cannot open: %s", path, strerror(errno));
         return -1;
     }
-    rd_t r = {f, path, why, why_len};
+    png_io_t io = { f, path, why, why_len };
     uint8_t m[8];
-    int rc;
+    int rc = -1;
     errno = 0;
+    /* two bytes tell PPM from PNG; PNG's other six are checked after */
     size_t got = fread(m, 1, 2, f);
     if (got < 2 && ferror(f))
-        rc = rd_fail(&r, "read error: %s", strerror(errno ? errno : EIO));
+        say(why, why_len, "%s: read error: %s", path, strerror(errno ? errno : EIO));
     else if (got < 2)
-        rc = rd_fail(&r, "%s", got ? "file is too short to be an image" : "file is empty");
-    else if (m[0] == png_sig[0] && m[1] == png_sig[1]) {
-        rc = rd_exact(&r, m + 2, 6, "the PNG signature");
-        if (rc == 0 && memcmp(m, png_sig, 8) != 0)
-            rc = rd_fail(&r, "corrupt PNG signature (file damaged by a text-mode transfer?)");
-        if (rc == 0)
-            rc = read_png(&r, img);
-    } else if (m[0] == 'P' && m[1] == '6')
-        rc = read_ppm(&r, img);
+        say(why, why_len, "%s: %s", path, got ? "file is too short to be an image" : "file is empty");
+    else if (m[0] == 'P' && m[1] == '6')
+        rc = read_ppm(&io, img);
     else if (m[0] == 'P' && m[1] >= '1' && m[1] <= '7')
-        rc = rd_fail(&r, "Netpbm format P%c is not supported (only binary PPM, P6)", m[1]);
-    else
-        rc = rd_fail(&r, "not a PNG or binary PPM file");
+        say(why, why_len, "%s: Netpbm format P%c is not supported (only binary PPM, P6)", path, m[1]);
+    else if (m[0] == 0x89 && m[1] == 'P') {
+        if (fread(m + 2, 1, 6, f) != 6)
+            say(why, why_len, "%s: file is truncated (ends inside the PNG signature)", path);
+        else if (png_sig_cmp(m, 0, sizeof m) != 0)
+            say(why, why_len, "%s: corrupt PNG signature (file damaged by a text-mode transfer?)", path);
+        else
+            rc = read_png(&io, img);
+    } else
+        say(why, why_len, "%s: not a PNG or binary PPM file", path);
     fclose(f);
     if (rc != 0)
         image_free(img);

@@ -1,5 +1,6 @@
 /* image.h - 8-bit RGB images on disk (PNG, binary PPM) and their comparison,
- * for the hosted CLI. Needs zlib and libm (-lz -lm). */
+ * for the hosted CLI. Needs libpng and libm (-lpng -lm). Every reason put
+ * in why reads "path: what is wrong" (one line, no newline). */
 #ifndef IMAGE_H
 #define IMAGE_H
 
@@ -18,9 +19,14 @@ typedef struct {
  * with a one-line reason (no newline) in why[why_len]. */
 int image_write(const char *path, const image_t *img, char *why, size_t why_len);
 
-/* Reads PNG (8-bit greyscale, RGB or RGBA, non-interlaced; alpha dropped) or
- * binary PPM (P6, maxval 255), chosen by the file's magic bytes, not its
- * name. Width and height must be 1..16384. Returns 0 and fills *img (free
+/* What image_write can know before there is an image: the extension names
+ * a format, and the folder exists and takes new files. Returns 0, or -1
+ * with a reason in why. (The write itself may still fail, e.g. disk full.) */
+int image_check_output(const char *path, char *why, size_t why_len);
+
+/* Reads PNG (any kind libpng reads, as 8-bit RGB: alpha dropped, 16-bit
+ * samples cut to 8) or binary PPM (P6, maxval 255), chosen by the file's
+ * magic bytes, not its name. Width and height must be 1..16384. Returns 0 and fills *img (free
  * with image_free), or -1 with a reason in why and *img empty. */
 int image_read(const char *path, image_t *img, char *why, size_t why_len);
 

@@ -3,6 +3,7 @@
  * fixed or the double build of the core, or compare two images.
  */
 #include <errno.h>
+#include <getopt.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -11,16 +12,17 @@
 #include <unistd.h>
 
 #include "backend.h"
+#include "host_io.h"
 #include "image.h"
 #include "receive.h"
 #include "report.h"
-
-#define EXIT_BAD_INPUT 2
+#include "version.h"
 
 static const char usage_text[] =
-    "usage: rt SCENE.nff -o OUT.png|OUT.ppm [options]\n"
+    "usage: rt [options] SCENE.nff -o OUT.png|OUT.ppm\n"
     "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N]\n"
     "       rt receive [STREAM] -o OUT.png   (the board's UART stream, stdin by default)\n"
+    "       rt --version\n"
     "\n"
     "render options:\n"
     "  -o, --output FILE   output image; the format follows the extension\n"
@@ -32,26 +34,32 @@ static const char usage_text[] =
     "  --float             single-precision build (for comparison)\n"
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
     "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
-    "  --stats             print ray counts, BVH statistics and render time on stderr\n"
+    "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
+    "                      BVH shape and render time on stderr: 'key value' lines\n"
+    "                      (text, the default) or one JSON object (json)\n"
     "  --spd               SPD test procedure: 512x512 pixels (or --size) from corner\n"
     "                      rays, four averaged per pixel, depth 5, SPD rule 8\n"
     "  --adaptive W        skip child rays whose share of the pixel is below W\n"
     "                      (0.001..1; off by default)\n"
     "  --quiet             no progress indicator\n"
-    "compare options:\n"
-    "  --psnr-min DB       exit 1 if PSNR is below DB\n"
-    "  --max-over8 PCT     exit 1 if more than PCT %% of pixels differ by > 8/255\n"
-    "  --max-error N       exit 1 if any channel differs by more than N/255\n"
+    "  -h, --help          this text; --version: the version\n"
+    "Options take their value as the next argument or after '='\n"
+    "(--size=64x64); '--' ends the options. 'rt compare --help' and\n"
+    "'rt receive --help' describe the other commands.\n"
     "\n"
     "exit status: 0 success, 1 output or threshold failure, 2 bad input or usage\n";
 
-static int usage_error(const char *fmt, const char *arg)
-{
-    fprintf(stderr, "rt: ");
-    fprintf(stderr, fmt, arg);
-    fprintf(stderr, "\n(run 'rt --help' for usage)\n");
-    return EXIT_BAD_INPUT;
-}
+static const char compare_usage[] =
+    "usage: rt compare A B [options]   (PNG or binary PPM images of the same size)\n"
+    "\n"
+    "Prints PSNR, the largest channel difference and the share of pixels off by\n"
+    "more than 2/255 and 8/255.\n"
+    "  --psnr-min DB       exit 1 if PSNR is below DB\n"
+    "  --max-over8 PCT     exit 1 if more than PCT % of pixels differ by > 8/255\n"
+    "  --max-error N       exit 1 if any channel differs by more than N/255\n"
+    "  -h, --help          this text; --version: the version\n"
+    "\n"
+    "exit status: 0 within the thresholds, 1 over one, 2 bad input or usage\n";
 
 static bool parse_uint(const char *s, long lo, long hi, long *out)
 {
@@ -73,39 +81,6 @@ static bool parse_double(const char *s, double *out)
         return false;
     *out = v;
     return true;
-}
-
-/* The whole file, NUL-terminated; NULL with a message on failure. */
-static char *read_file(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fprintf(stderr, "%s: cannot open: %s\n", path, strerror(errno));
-        return NULL;
-    }
-    size_t cap = 1 << 16, n = 0;
-    char *buf = malloc(cap);
-    for (;;) {
-        if (n == cap) {
-            char *nb = realloc(buf, cap *= 2);
-            if (!nb)
-                break;
-            buf = nb;
-        }
-        size_t got = fread(buf + n, 1, cap - n, f);
-        n += got;
-        if (got == 0)
-            break;
-    }
-    if (ferror(f)) {
-        fprintf(stderr, "%s: cannot read: %s\n", path, strerror(errno ? errno : EIO));
-        fclose(f);
-        free(buf);
-        return NULL;
-    }
-    fclose(f);
-    *len = n;
-    return buf;
 }
 
 /* ---- the framebuffer sink: collects bands into a whole image ---------- */
@@ -175,99 +150,159 @@ static int geometry_bits_lost(const rt_backend_t *be)
     return lost > 0 ? lost : 0;
 }
 
+enum {
+    OPT_SIZE = 256, OPT_FIXED, OPT_DOUBLE, OPT_DOUBLE_FTOL, OPT_FLOAT, OPT_DEPTH, OPT_FORMAT, OPT_STATS,
+    OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION, OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR
+};
+
+static const struct option render_options[] = {
+    { "output", required_argument, NULL, 'o' },
+    { "size", required_argument, NULL, OPT_SIZE },
+    { "fixed", no_argument, NULL, OPT_FIXED },
+    { "double", no_argument, NULL, OPT_DOUBLE },
+    { "double-ftol", no_argument, NULL, OPT_DOUBLE_FTOL },
+    { "float", no_argument, NULL, OPT_FLOAT },
+    { "depth", required_argument, NULL, OPT_DEPTH },
+    { "format", required_argument, NULL, OPT_FORMAT },
+    { "stats", optional_argument, NULL, OPT_STATS },
+    { "spd", no_argument, NULL, OPT_SPD },
+    { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
+    { "quiet", no_argument, NULL, OPT_QUIET },
+    { "help", no_argument, NULL, 'h' },
+    { "version", no_argument, NULL, OPT_VERSION },
+    { NULL, 0, NULL, 0 },
+};
+
+static const host_option_need_t render_needs[] = {
+    { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_DEPTH, "a number" },
+    { OPT_FORMAT, "rgb888 or rgb565" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
+};
+
+#define RENDER_HELP "rt --help"
+
+static int render_usage_error(const char *fmt, const char *arg)
+{
+    return host_usage_error("rt", RENDER_HELP, fmt, arg);
+}
+
+static int print_version(void)
+{
+    printf("rt %s\n", RT_VERSION);
+    return 0;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
     const rt_backend_t *be = &rt_backend_fixed;
     render_opts_t opts = { 0 };
     fb_format_t format = FB_RGB888;
-    bool stats = false, quiet = false;
+    bool quiet = false;
+    bool stats = false;
+    report_format_t stats_format = REPORT_TEXT;
 
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        bool has_value = i + 1 < argc;
-        if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            if (!has_value)
-                return usage_error("%s needs a file name", a);
-            out_path = argv[++i];
-        } else if (!strcmp(a, "--size")) {
+    opterr = 0;
+    int c;
+    while ((c = getopt_long(argc, argv, ":ho:", render_options, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            out_path = optarg;
+            break;
+        case OPT_SIZE: {
             long w, h;
             char buf[32];
-            if (!has_value)
-                return usage_error("%s needs WxH", a);
-            const char *v = argv[++i];
-            const char *x = strchr(v, 'x');
-            if (!x || (size_t)(x - v) >= sizeof buf)
-                return usage_error("--size: expected WxH, got '%s'", v);
-            memcpy(buf, v, (size_t)(x - v));
-            buf[x - v] = '\0';
+            const char *x = strchr(optarg, 'x');
+            if (!x || (size_t)(x - optarg) >= sizeof buf)
+                return render_usage_error("--size: expected WxH, got '%s'", optarg);
+            memcpy(buf, optarg, (size_t)(x - optarg));
+            buf[x - optarg] = '\0';
             if (!parse_uint(buf, 1, RT_MAX_WIDTH, &w) || !parse_uint(x + 1, 1, RT_MAX_HEIGHT, &h))
-                return usage_error("--size: expected WxH within the configured maximum, got '%s'", v);
+                return render_usage_error("--size: expected WxH within the configured maximum, got '%s'", optarg);
             opts.width = (uint16_t)w;
             opts.height = (uint16_t)h;
-        } else if (!strcmp(a, "--fixed")) {
+            break;
+        }
+        case OPT_FIXED:
             be = &rt_backend_fixed;
-        } else if (!strcmp(a, "--double")) {
+            break;
+        case OPT_DOUBLE:
             be = &rt_backend_double;
-        } else if (!strcmp(a, "--double-ftol")) {
+            break;
+        case OPT_DOUBLE_FTOL:
             be = &rt_backend_double_ftol;
-        } else if (!strcmp(a, "--float")) {
+            break;
+        case OPT_FLOAT:
             be = &rt_backend_float;
-        } else if (!strcmp(a, "--depth")) {
+            break;
+        case OPT_DEPTH: {
             long d;
-            if (!has_value)
-                return usage_error("%s needs a number", a);
-            if (!parse_uint(argv[++i], 1, RT_MAX_DEPTH, &d))
-                return usage_error("--depth: expected 1..RT_MAX_DEPTH, got '%s'", argv[i]);
+            if (!parse_uint(optarg, 1, RT_MAX_DEPTH, &d))
+                return render_usage_error("--depth: expected 1..RT_MAX_DEPTH, got '%s'", optarg);
             opts.max_depth = (uint8_t)d;
-        } else if (!strcmp(a, "--format")) {
-            if (!has_value)
-                return usage_error("%s needs rgb888 or rgb565", a);
-            const char *f = argv[++i];
-            if (!strcmp(f, "rgb888"))
+            break;
+        }
+        case OPT_FORMAT:
+            if (!strcmp(optarg, "rgb888"))
                 format = FB_RGB888;
-            else if (!strcmp(f, "rgb565"))
+            else if (!strcmp(optarg, "rgb565"))
                 format = FB_RGB565;
             else
-                return usage_error("--format: expected rgb888 or rgb565, got '%s'", f);
-        } else if (!strcmp(a, "--spd")) {
-            opts.spd = true;
-        } else if (!strcmp(a, "--adaptive")) {
-            double v;
-            if (!has_value)
-                return usage_error("%s needs a number", a);
-            if (!parse_double(argv[++i], &v) || v < 0.001 || v > 1)
-                return usage_error("--adaptive: expected a number from 0.001 to 1, got '%s'", argv[i]);
-            opts.adaptive_milli = (uint16_t)(v * 1000 + 0.5);
-        } else if (!strcmp(a, "--stats")) {
+                return render_usage_error("--format: expected rgb888 or rgb565, got '%s'", optarg);
+            break;
+        case OPT_STATS:
+            if (optarg && !strcmp(optarg, "json"))
+                stats_format = REPORT_JSON;
+            else if (optarg && strcmp(optarg, "text") != 0)
+                return render_usage_error("--stats: expected --stats, --stats=text or --stats=json, got '%s'", optarg);
             stats = true;
-        } else if (!strcmp(a, "--quiet")) {
+            break;
+        case OPT_SPD:
+            opts.spd = true;
+            break;
+        case OPT_ADAPTIVE: {
+            double v;
+            if (!parse_double(optarg, &v) || v < 0.001 || v > 1)
+                return render_usage_error("--adaptive: expected a number from 0.001 to 1, got '%s'", optarg);
+            opts.adaptive_milli = (uint16_t)(v * 1000 + 0.5);
+            break;
+        }
+        case OPT_QUIET:
             quiet = true;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error("unknown option '%s'", a);
-        } else if (!scene_path) {
-            scene_path = a;
-        } else {
-            return usage_error("unexpected argument '%s'", a);
+            break;
+        case 'h':
+            printf(usage_text, RT_MAX_DEPTH, RT_MAX_DEPTH);
+            return 0;
+        case OPT_VERSION:
+            return print_version();
+        default:
+            return host_option_error("rt", RENDER_HELP, c, argv, render_needs);
         }
     }
+    for (int i = optind; i < argc; i++) {
+        if (scene_path)
+            return render_usage_error("unexpected argument '%s'", argv[i]);
+        scene_path = argv[i];
+    }
     if (!scene_path)
-        return usage_error("%s", "no scene file given");
+        return render_usage_error("%s", "no scene file given");
     if (!out_path)
-        return usage_error("%s", "no output file given (-o OUT.png)");
+        return render_usage_error("%s", "no output file given (-o OUT.png)");
+    /* a wrong name or folder is reported now, not after the render */
+    char why[256];
+    if (image_check_output(out_path, why, sizeof why) != 0) {
+        fprintf(stderr, "rt: %s\n", why);
+        return 1;
+    }
 
     size_t len;
-    char *text = read_file(scene_path, &len);
+    char *text = host_read_file(scene_path, &len);
     if (!text)
         return EXIT_BAD_INPUT;
     rt_error_t err;
     bool ok = be->load(text, len, &err);
     free(text);
     if (!ok) {
-        if (err.line)
-            fprintf(stderr, "%s:%u: %s\n", scene_path, (unsigned)err.line, err.msg);
-        else
-            fprintf(stderr, "%s: %s\n", scene_path, err.msg);
+        host_error_at(scene_path, (unsigned)err.line, err.msg);
         return EXIT_BAD_INPUT;
     }
 
@@ -311,8 +346,7 @@ static int cmd_render(int argc, char **argv)
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
     if (stats)
-        report_stats(stderr, REPORT_TEXT, be, &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
-    char why[256];
+        report_stats(stderr, stats_format, be, &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
     if (image_write(out_path, &hs.img, why, sizeof why) != 0) {
         fprintf(stderr, "rt: %s\n", why);
         image_free(&hs.img);
@@ -322,29 +356,56 @@ static int cmd_render(int argc, char **argv)
     return 0;
 }
 
+static const struct option compare_options[] = {
+    { "psnr-min", required_argument, NULL, OPT_PSNR_MIN },
+    { "max-over8", required_argument, NULL, OPT_MAX_OVER8 },
+    { "max-error", required_argument, NULL, OPT_MAX_ERROR },
+    { "help", no_argument, NULL, 'h' },
+    { "version", no_argument, NULL, OPT_VERSION },
+    { NULL, 0, NULL, 0 },
+};
+
+static const host_option_need_t compare_needs[] = {
+    { OPT_PSNR_MIN, "a non-negative number" }, { OPT_MAX_OVER8, "a non-negative number" },
+    { OPT_MAX_ERROR, "a non-negative number" }, { 0, NULL },
+};
+
+#define COMPARE_HELP "rt compare --help"
+
+/* argv[0] is "compare" */
 static int cmd_compare(int argc, char **argv)
 {
     const char *paths[2] = { NULL, NULL };
     double psnr_min = -1, max_over8 = -1, max_error = -1;
-    int n = 0;
-    for (int i = 2; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--psnr-min") || !strcmp(a, "--max-over8") || !strcmp(a, "--max-error")) {
-            double v;
-            if (i + 1 >= argc || !parse_double(argv[i + 1], &v) || v < 0)
-                return usage_error("%s needs a non-negative number", a);
-            *(!strcmp(a, "--psnr-min") ? &psnr_min : !strcmp(a, "--max-over8") ? &max_over8 : &max_error) = v;
-            i++;
-        } else if (a[0] == '-' && a[1] != '\0') {
-            return usage_error("unknown option '%s'", a);
-        } else if (n < 2) {
-            paths[n++] = a;
-        } else {
-            return usage_error("unexpected argument '%s'", a);
+    opterr = 0;
+    int c, which = 0;
+    while ((c = getopt_long(argc, argv, ":h", compare_options, &which)) != -1) {
+        double v;
+        switch (c) {
+        case OPT_PSNR_MIN:
+        case OPT_MAX_OVER8:
+        case OPT_MAX_ERROR:
+            if (!parse_double(optarg, &v) || v < 0) {
+                char msg[160];
+                snprintf(msg, sizeof msg, "--%s needs a non-negative number, got '%s'",
+                         compare_options[which].name, optarg);
+                return host_usage_error("rt", COMPARE_HELP, "%s", msg);
+            }
+            *(c == OPT_PSNR_MIN ? &psnr_min : c == OPT_MAX_OVER8 ? &max_over8 : &max_error) = v;
+            break;
+        case 'h':
+            fputs(compare_usage, stdout);
+            return 0;
+        case OPT_VERSION:
+            return print_version();
+        default:
+            return host_option_error("rt", COMPARE_HELP, c, argv, compare_needs);
         }
     }
-    if (n != 2)
-        return usage_error("%s", "compare needs two image files");
+    if (argc - optind != 2)
+        return host_usage_error("rt", COMPARE_HELP, "%s", "compare needs two image files");
+    paths[0] = argv[optind];
+    paths[1] = argv[optind + 1];
     image_t img[2] = { { 0, 0, NULL }, { 0, 0, NULL } };
     char why[256];
     for (int k = 0; k < 2; k++) {
@@ -359,7 +420,7 @@ static int cmd_compare(int argc, char **argv)
     image_free(&img[0]);
     image_free(&img[1]);
     if (rc != 0) {
-        fprintf(stderr, "rt: %s\n", why);
+        fprintf(stderr, "rt: %s, %s: %s\n", paths[0], paths[1], why);
         return EXIT_BAD_INPUT;
     }
     printf("psnr %.2f dB  max-error %d  over2 %.3f%%  over8 %.3f%%\n", d.psnr_db, d.max_err,
@@ -372,13 +433,10 @@ static int cmd_compare(int argc, char **argv)
 
 int main(int argc, char **argv)
 {
-    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-        printf(usage_text, RT_MAX_DEPTH, RT_MAX_DEPTH);
-        return 0;
-    }
+    /* a subcommand parses the arguments after its name */
     if (argc >= 2 && !strcmp(argv[1], "compare"))
-        return cmd_compare(argc, argv);
+        return cmd_compare(argc - 1, argv + 1);
     if (argc >= 2 && !strcmp(argv[1], "receive"))
-        return cmd_receive(argc, argv);
+        return cmd_receive(argc - 1, argv + 1);
     return cmd_render(argc, argv);
 }

@@ -1,154 +1,184 @@
 /*
  * receive.c - `rt receive [STREAM] -o OUT.png`: decode the framed stream
- * that the board's UART sink writes (format in platform/mps2-an385/fb_uart.h),
- * verify every checksum, print the report lines and write the image.
- * Exit status 2 on a truncated or corrupt stream, never a partial image.
+ * that the board's UART sink writes (uart_stream.c), print the report
+ * lines on stdout and write the image. STREAM is a file, a pipe or FIFO,
+ * or a serial line (put into raw mode for the run; set its speed with
+ * stty first); stdin by default.
+ *
+ * It returns once the frame has ended and the report lines after it are
+ * in: to the end of a regular file, or until a live input (pipe, FIFO,
+ * serial line) stays idle for --report-wait milliseconds. Exit status 2
+ * on a missing, truncated or corrupt frame: never a partial image.
  */
 #include <errno.h>
-#include <stdbool.h>
+#include <fcntl.h>
+#include <getopt.h>
+#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <zlib.h>
+#include <sys/stat.h>
+#include <termios.h>
+#include <unistd.h>
 
+#include "host_io.h"
 #include "image.h"
 #include "receive.h"
+#include "uart_stream.h"
+#include "version.h"
+
+static const char receive_usage[] =
+    "usage: rt receive [STREAM] -o OUT.png [options]\n"
+    "\n"
+    "Decodes the board's framed UART stream (a file, a pipe, a serial line such\n"
+    "as /dev/ttyUSB0, or stdin when STREAM is missing or '-'), prints its report\n"
+    "lines on stdout and writes the frame as OUT.png or OUT.ppm. Bytes before\n"
+    "the frame header (boot text, noise) are skipped; it returns at the end of\n"
+    "the frame and the report lines after it.\n"
+    "  -o, --output FILE      output image (.png or .ppm)\n"
+    "  --report-wait MS       on a pipe or serial line, the report after the frame\n"
+    "                         ends when nothing arrives for MS ms (default 500)\n"
+    "  -h, --help             this text; --version: the version\n"
+    "\n"
+    "exit status: 0 success, 1 output failure, 2 no frame, a truncated or corrupt\n"
+    "frame (no image is written), or bad usage\n";
+
+#define RECEIVE_HELP "rt receive --help"
+
+enum { OPT_REPORT_WAIT = 256, OPT_VERSION };
+
+static const struct option receive_options[] = {
+    { "output", required_argument, NULL, 'o' },
+    { "report-wait", required_argument, NULL, OPT_REPORT_WAIT },
+    { "help", no_argument, NULL, 'h' },
+    { "version", no_argument, NULL, OPT_VERSION },
+    { NULL, 0, NULL, 0 },
+};
+
+static const host_option_need_t receive_needs[] = {
+    { 'o', "a file name" }, { OPT_REPORT_WAIT, "a number of milliseconds" }, { 0, NULL },
+};
 
 typedef struct {
-    FILE *in;
-    const char *name;
-    long offset;
-} stream_t;
+    int fd;
+    bool live;   /* not a regular file: may go idle instead of ending */
+    int wait_ms; /* idle time that ends the report after the frame */
+} fd_source_t;
 
-static bool get(stream_t *s, void *buf, size_t n)
+static long fd_read(void *ctx, uint8_t *buf, size_t cap, bool after_frame)
 {
-    size_t got = fread(buf, 1, n, s->in);
-    s->offset += (long)got;
-    return got == n;
+    fd_source_t *s = ctx;
+    if (after_frame && s->live) {
+        struct pollfd p = { .fd = s->fd, .events = POLLIN };
+        int n;
+        do
+            n = poll(&p, 1, s->wait_ms);
+        while (n < 0 && errno == EINTR);
+        if (n <= 0)
+            return n; /* idle: the report is over (or poll failed) */
+    }
+    ssize_t n;
+    do
+        n = read(s->fd, buf, cap);
+    while (n < 0 && errno == EINTR);
+    return (long)n;
 }
 
-static unsigned u16(const unsigned char *p) { return (unsigned)p[0] | (unsigned)p[1] << 8; }
-static unsigned long u32(const unsigned char *p) { return u16(p) | (unsigned long)u16(p + 2) << 16; }
-
-static int fail(const stream_t *s, const char *what)
+static void print_text(void *ctx, const char *text, size_t len)
 {
-    fprintf(stderr, "rt receive: %s: %s (at byte %ld)\n", s->name, what, s->offset);
-    return 2;
+    (void)ctx;
+    printf("%.*s\n", (int)len, text);
+    fflush(stdout); /* a live report shows as it comes */
+}
+
+/* Raw 8-bit input on a serial line: no line editing, echo, CR/LF
+ * translation or flow-control characters eaten. The speed is kept. */
+static bool make_raw(int fd, struct termios *saved)
+{
+    if (tcgetattr(fd, saved) != 0)
+        return false;
+    struct termios t = *saved;
+    t.c_iflag &= ~(tcflag_t)(IGNBRK | BRKINT | PARMRK | ISTRIP | INLCR | IGNCR | ICRNL | IXON | IXOFF);
+    t.c_oflag &= ~(tcflag_t)OPOST;
+    t.c_lflag &= ~(tcflag_t)(ECHO | ECHONL | ICANON | ISIG | IEXTEN);
+    t.c_cflag &= ~(tcflag_t)(CSIZE | PARENB);
+    t.c_cflag |= CS8 | CREAD | CLOCAL;
+    t.c_cc[VMIN] = 1;
+    t.c_cc[VTIME] = 0;
+    return tcsetattr(fd, TCSANOW, &t) == 0;
 }
 
 int cmd_receive(int argc, char **argv)
 {
     const char *in_path = NULL, *out_path = NULL;
-    for (int i = 2; i < argc; i++) {
-        if (!strcmp(argv[i], "-o") && i + 1 < argc)
-            out_path = argv[++i];
-        else if (argv[i][0] != '-' && !in_path)
-            in_path = argv[i];
-        else {
-            fprintf(stderr, "rt receive: unexpected argument '%s'\nusage: rt receive [STREAM] -o OUT.png\n", argv[i]);
-            return 2;
-        }
-    }
-    if (!out_path) {
-        fprintf(stderr, "rt receive: no output file given (-o OUT.png)\n");
-        return 2;
-    }
-    stream_t s = { stdin, "stdin", 0 };
-    if (in_path) {
-        s.in = fopen(in_path, "rb");
-        s.name = in_path;
-        if (!s.in) {
-            fprintf(stderr, "rt receive: cannot open '%s': %s\n", in_path, strerror(errno));
-            return 2;
-        }
-    }
-    image_t img = { 0, 0, NULL };
-    unsigned bpp = 3, lines_done = 0;
-    uLong frame_adler = adler32(0L, Z_NULL, 0);
-    bool started = false, finished = false;
-    unsigned char *band = NULL;
-    int rc = 0;
+    long wait_ms = 500;
+    opterr = 0;
     int c;
-    while (rc == 0 && !finished && (c = fgetc(s.in)) != EOF) {
-        s.offset++;
-        unsigned char h[8];
-        if (c == 'T') {
-            if (!get(&s, h, 2)) { rc = fail(&s, "stream truncated in a text record"); break; }
-            unsigned n = u16(h);
-            char text[65536];
-            if (!get(&s, text, n)) { rc = fail(&s, "stream truncated in a text record"); break; }
-            printf("%.*s\n", (int)n, text);
-        } else if (c == 'R') {
-            if (!get(&s, h, 8) || memcmp(h, "TF1", 3) != 0) { rc = fail(&s, "bad frame header"); break; }
-            if (started) { rc = fail(&s, "a second frame header inside a frame"); break; }
-            unsigned fmt = h[3];
-            img.width = (int)u16(h + 4);
-            img.height = (int)u16(h + 6);
-            if (fmt > 1 || img.width == 0 || img.height == 0) { rc = fail(&s, "bad frame header values"); break; }
-            bpp = fmt == 1 ? 2 : 3;
-            img.rgb = calloc((size_t)img.width * img.height, 3);
-            if (!img.rgb) { rc = fail(&s, "out of memory"); break; }
-            started = true;
-        } else if (c == 'B') {
-            if (!started) { rc = fail(&s, "band before the frame header"); break; }
-            if (!get(&s, h, 4)) { rc = fail(&s, "stream truncated in a band header"); break; }
-            unsigned y = u16(h), n = u16(h + 2);
-            if (y != lines_done || n == 0 || y + n > (unsigned)img.height) { rc = fail(&s, "band out of order or out of the frame"); break; }
-            size_t bytes = (size_t)n * img.width * bpp;
-            unsigned char *grown = realloc(band, bytes);
-            if (!grown) { rc = fail(&s, "out of memory"); break; } /* band is freed below */
-            band = grown;
-            if (!get(&s, band, bytes) || !get(&s, h, 4)) { rc = fail(&s, "stream truncated in a band"); break; }
-            if (adler32(adler32(0L, Z_NULL, 0), band, (uInt)bytes) != u32(h)) { rc = fail(&s, "band checksum mismatch"); break; }
-            frame_adler = adler32(frame_adler, band, (uInt)bytes);
-            for (size_t i = 0; i < (size_t)n * img.width; i++) {
-                unsigned char *dst = img.rgb + ((size_t)y * img.width + i) * 3;
-                if (bpp == 3) {
-                    memcpy(dst, band + 3 * i, 3);
-                } else {
-                    unsigned v = u16(band + 2 * i);
-                    dst[0] = (unsigned char)(((v >> 11) * 255 + 15) / 31);
-                    dst[1] = (unsigned char)((((v >> 5) & 63) * 255 + 31) / 63);
-                    dst[2] = (unsigned char)(((v & 31) * 255 + 15) / 31);
-                }
-            }
-            lines_done += n;
-        } else if (c == 'E') {
-            if (!started) { rc = fail(&s, "frame end without a frame"); break; }
-            if (!get(&s, h, 4)) { rc = fail(&s, "stream truncated in the frame end"); break; }
-            if (lines_done != (unsigned)img.height) { rc = fail(&s, "frame ended early"); break; }
-            if (u32(h) != frame_adler) { rc = fail(&s, "frame checksum mismatch"); break; }
-            finished = true;
-        } else {
-            char msg[64];
-            snprintf(msg, sizeof msg, "unexpected byte 0x%02x", c);
-            rc = fail(&s, msg);
+    while ((c = getopt_long(argc, argv, ":ho:", receive_options, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            out_path = optarg;
+            break;
+        case OPT_REPORT_WAIT: {
+            char *end;
+            errno = 0;
+            wait_ms = strtol(optarg, &end, 10);
+            if (errno || end == optarg || *end || wait_ms < 0 || wait_ms > 600000)
+                return host_usage_error("rt receive", RECEIVE_HELP,
+                                        "--report-wait: expected 0..600000 milliseconds, got '%s'", optarg);
+            break;
+        }
+        case 'h':
+            fputs(receive_usage, stdout);
+            return 0;
+        case OPT_VERSION:
+            printf("rt %s\n", RT_VERSION);
+            return 0;
+        default:
+            return host_option_error("rt receive", RECEIVE_HELP, c, argv, receive_needs);
         }
     }
-    /* report lines after the frame */
-    while (rc == 0 && finished && (c = fgetc(s.in)) == 'T') {
-        unsigned char h[2];
-        char text[65536];
-        s.offset++;
-        if (!get(&s, h, 2) || !get(&s, text, u16(h))) { rc = fail(&s, "stream truncated in a text record"); break; }
-        printf("%.*s\n", (int)u16(h), text);
+    if (argc - optind > 1)
+        return host_usage_error("rt receive", RECEIVE_HELP, "unexpected argument '%s'", argv[optind + 1]);
+    if (argc - optind == 1 && strcmp(argv[optind], "-") != 0)
+        in_path = argv[optind];
+    if (!out_path)
+        return host_usage_error("rt receive", RECEIVE_HELP, "%s", "no output file given (-o OUT.png)");
+    char why[256];
+    if (image_check_output(out_path, why, sizeof why) != 0) {
+        fprintf(stderr, "rt receive: %s\n", why);
+        return 1;
     }
-    if (rc == 0 && !finished) {
-        char msg[80];
-        snprintf(msg, sizeof msg, started ? "stream truncated: %u of %d lines" : "no frame in the stream",
-                 lines_done, img.height);
-        rc = fail(&s, msg);
+
+    const char *name = in_path ? in_path : "stdin";
+    fd_source_t src = { .fd = 0, .wait_ms = (int)wait_ms };
+    if (in_path && (src.fd = open(in_path, O_RDONLY | O_NOCTTY)) < 0) {
+        fprintf(stderr, "rt receive: %s: cannot open: %s\n", in_path, strerror(errno));
+        return EXIT_BAD_INPUT;
     }
+    struct stat st;
+    src.live = fstat(src.fd, &st) != 0 || !S_ISREG(st.st_mode);
+    struct termios saved;
+    bool raw = isatty(src.fd) && make_raw(src.fd, &saved);
+
+    rx_source_t rx = { .read = fd_read, .text = print_text, .ctx = &src };
+    rx_result_t res;
+    int rc = rx_frame(&rx, &res);
+    if (raw)
+        tcsetattr(src.fd, TCSANOW, &saved);
     if (in_path)
-        fclose(s.in);
-    free(band);
-    if (rc == 0) {
-        char why[256];
-        if (image_write(out_path, &img, why, sizeof why) != 0) {
-            fprintf(stderr, "rt receive: %s\n", why);
-            rc = 1;
-        }
+        close(src.fd);
+    if (rc != 0) {
+        fprintf(stderr, "rt receive: %s: %s\n", name, res.error);
+        return EXIT_BAD_INPUT;
     }
-    image_free(&img);
+    if (res.skipped)
+        fprintf(stderr, "rt receive: %s: note: skipped %lu byte(s) before the frame header\n", name, res.skipped);
+    rc = 0;
+    if (image_write(out_path, &res.img, why, sizeof why) != 0) {
+        fprintf(stderr, "rt receive: %s\n", why);
+        rc = 1;
+    }
+    image_free(&res.img);
     return rc;
 }

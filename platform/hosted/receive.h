@@ -2,6 +2,7 @@
 #ifndef RECEIVE_H
 #define RECEIVE_H
 
+/* argv[0] is "receive". */
 int cmd_receive(int argc, char **argv);
 
 #endif
