@@ -7,7 +7,11 @@
 static bool decimal_to_double(bool neg, uint64_t mant, int32_t exp10, double *out)
 {
     double v = (double)mant;
-    if (mant != 0 && exp10 > 308)
+    if (mant == 0) { /* 0E631 is zero, not 0 * inf */
+        *out = 0;
+        return true;
+    }
+    if (exp10 > 308)
         return false;
     if (exp10 < -400)
         exp10 = -400; /* certainly zero */

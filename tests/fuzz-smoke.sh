@@ -5,16 +5,19 @@
 # build/fuzz-smoke/NAME/ (add it to tests/fuzz-found/ once fixed).
 SECONDS_=${FUZZ_SMOKE:-20}
 pass=0 fail=0
-for spec in fuzz_nff:tests/fuzz-corpus fuzz_nff_double:tests/fuzz-corpus fuzz_nff_float:tests/fuzz-corpus \
-            fuzz_scenec:tests/fuzz-corpus fuzz_receive:tests/fuzz-corpus-receive; do
+# Seeds: the corpus, and for the scene readers every input that once broke one.
+nff_seeds=tests/fuzz-corpus+tests/fuzz-found
+for spec in fuzz_nff:$nff_seeds fuzz_nff_double:$nff_seeds fuzz_nff_float:$nff_seeds \
+            fuzz_scenec:$nff_seeds fuzz_receive:tests/fuzz-corpus-receive; do
     name=${spec%%:*} seeds=${spec#*:}
+    seed_dirs=$(echo "$seeds" | tr '+' '\n' | sed 's|^|../../../|' | tr '\n' ' ')
     out=build/fuzz-smoke/$name
     rm -rf "$out" && mkdir -p "$out/corpus"
     if [ ! -x "build/fuzz/$name" ]; then
         fail=$((fail + 1)); echo "  FAIL  $name: build/fuzz/$name not built"
         continue
     fi
-    if (cd "$out" && "../../fuzz/$name" corpus "../../../$seeds" -max_total_time="$SECONDS_" -timeout=10 \
+    if (cd "$out" && "../../fuzz/$name" corpus $seed_dirs -max_total_time="$SECONDS_" -timeout=10 \
             -max_len=4096 -print_final_stats=1 >log 2>&1); then
         runs=$(awk '/number_of_executed_units/ { print $2 }' "$out/log")
         pass=$((pass + 1)); echo "  ok    $name: $runs executions in ${SECONDS_} s from $seeds, no crash, hang or sanitizer report"
