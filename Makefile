@@ -116,10 +116,6 @@ host-run: deps-board
 
 include platform/mps2-an385/board.mk
 
-# rt-scenec (its rule is in board.mk) links the hosted I/O module as well:
-# a prerequisite added here joins that rule's $^.
-$(SCENEC_DIR)/rt-scenec: platform/hosted/host_io.c
-
 # deps: everything the tests and benchmarks use; deps-board: only what
 # rendering needs (make run, make host-run).
 deps:
@@ -176,10 +172,10 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Make
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_scenec: tests/fuzz_scenec.c platform/hosted/scenec.c platform/hosted/host_io.c \
+build/fuzz/fuzz_scenec: tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
                         $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard src/*.h) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L $(BOARD_CAPS) -Isrc -o $@ \
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L $(BOARD_CAPS) -Isrc -Iplatform/hosted -o $@ \
 	    tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC)
 
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \

@@ -16,7 +16,8 @@
  *   KIND         PRIM_<KIND> in enum prim_kind
  *   name         prefix of the kind's interface: <name>_prim_hit,
  *                <name>_prim_bounds and <name>_prim_surface (see sphere.h)
- *   compiled_in  its RT_USE_* switch: 0 leaves the kind's code out
+ *   compiled_in  its switch, RT_USE_<TABLE> (rt_config.h): 0 leaves the
+ *                kind's code out; the scene compiler sets it per scene
  *
  * Order matters: it is the order of the BVH's primitive list, and a tie
  * between two hits at the same t goes to the earlier kind.

@@ -6,7 +6,7 @@
  * with a message.
  */
 #define SCENEC_NO_MAIN 1
-#include "../platform/hosted/scenec.c"
+#include "../tools/scenec.c"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

@@ -25,9 +25,9 @@ check "src/ (double)" -Isrc $DOUBLE src/
 check "src/ (float)" -Isrc $FLOAT src/
 check "src/ (double, fixed tolerances)" -Isrc $DOUBLE -DRT_TOLERANCES_FIXED=1 src/
 
-# The hosted CLI and scene compiler; backend.c is built once per backend.
+# The hosted CLI and the scene compiler; backend.c is built once per backend.
 HOSTED="-Isrc -Iplatform/hosted -D_POSIX_C_SOURCE=200809L"
-check "platform/hosted/ (fixed)" $HOSTED platform/hosted/
+check "platform/hosted/ and tools/ (fixed)" $HOSTED platform/hosted/ tools/
 check "platform/hosted/backend.c (double)" $HOSTED $DOUBLE platform/hosted/backend.c
 check "platform/hosted/backend.c (float)" $HOSTED $FLOAT platform/hosted/backend.c
 check "platform/hosted/backend.c (double, fixed tolerances)" $HOSTED $DOUBLE -DRT_TOLERANCES_FIXED=1 \

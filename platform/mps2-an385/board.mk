@@ -50,8 +50,10 @@ $(SCENEC_DIR)/%.o: src/%.c $(wildcard src/*.h) $(BOARD_DIR)/board.mk
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -c $< -o $@
 
-$(SCENEC_DIR)/rt-scenec: platform/hosted/scenec.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES))
-	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -o $@ $^
+$(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES)) \
+                         $(wildcard platform/hosted/*.h) $(wildcard src/*.h)
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -Iplatform/hosted -o $@ \
+	    $(filter %.c %.o,$^)
 
 # ---- firmware ------------------------------------------------------------
 

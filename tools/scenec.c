@@ -1,5 +1,5 @@
 /*
- * scenec.c - the scene compiler: NFF in, C out, for firmware that carries
+ * tools/scenec.c - the scene compiler: NFF in, C out, for firmware that carries
  * its scene in flash.
  *
  *   rt-scenec SCENE.nff -o scene_data.c --header scene_data.h [--text]
@@ -148,12 +148,17 @@ static void emit_text(FILE *f, const char *text, size_t len)
     fprintf(f, "\n};\nconst size_t rt_scene_text_len = %zu;\n", len);
 }
 
+static void emit_upper(FILE *f, const char *name)
+{
+    for (const char *c = name; *c; c++)
+        fputc(toupper((unsigned char)*c), f);
+}
+
 /* "SCENE_N_" and the table's name in capitals. */
 static void emit_count(FILE *f, const char *table, uint32_t n)
 {
     fprintf(f, "#define SCENE_N_");
-    for (const char *c = table; *c; c++)
-        fputc(toupper((unsigned char)*c), f);
+    emit_upper(f, table);
     fprintf(f, " %" PRIu32 "\n", n);
 }
 
@@ -185,26 +190,33 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
     /* RT_USE_<X> (rt_config.h) is set from SCENE_USES_<X> */
     fprintf(f, "/* What the scene uses; with PRUNE=1 the firmware is built with these\n"
                " * as its RT_USE_* switches (src/rt_config.h). */\n");
-    const char *use_prefix = "RT_USE_";
-    size_t skip = strlen(use_prefix);
+    /* a kind's switch is RT_USE_<its table's name> (prim_kinds.h) */
     struct {
         const char *name;
         bool used;
     } uses[] = {
-#define USE_OF_KIND(type, table, cap, KIND, name, use) { #use, sc->n_##table > 0 },
+#define USE_OF_KIND(type, table, cap, KIND, name, use) { #table, sc->n_##table > 0 },
         RT_PRIM_KINDS(USE_OF_KIND)
-        { "RT_USE_PATCHES", patches },
-        { "RT_USE_SHADOWS", sc->n_lights > 0 },
-        { "RT_USE_SPECULAR", specular },
-        { "RT_USE_REFLECTION", reflection },
-        { "RT_USE_REFRACTION", refraction },
+        { "patches", patches },
+        { "shadows", sc->n_lights > 0 },
+        { "specular", specular },
+        { "reflection", reflection },
+        { "refraction", refraction },
     };
     size_t n_uses = sizeof uses / sizeof uses[0];
-    for (size_t i = 0; i < n_uses; i++)
-        fprintf(f, "#define SCENE_USES_%s %d\n", uses[i].name + skip, uses[i].used);
+    for (size_t i = 0; i < n_uses; i++) {
+        fprintf(f, "#define SCENE_USES_");
+        emit_upper(f, uses[i].name);
+        fprintf(f, " %d\n", uses[i].used);
+    }
     fprintf(f, "\n#if SCENE_PRUNE\n");
-    for (size_t i = 0; i < n_uses; i++)
-        fprintf(f, "#define %s SCENE_USES_%s\n", uses[i].name, uses[i].name + skip);
+    for (size_t i = 0; i < n_uses; i++) {
+        fprintf(f, "#define RT_USE_");
+        emit_upper(f, uses[i].name);
+        fprintf(f, " SCENE_USES_");
+        emit_upper(f, uses[i].name);
+        fprintf(f, "\n");
+    }
     fprintf(f, "#endif\n\n#endif\n");
 }
 
@@ -232,6 +244,9 @@ static int scenec_emit(FILE *out, FILE *hdr, const char *src, const scene_t *sc,
 
 #ifndef SCENEC_NO_MAIN
 
+/* cppcheck (2.10) takes this for a local shadowing itself under the
+ * SCENEC_NO_MAIN configuration; it is the one declaration. */
+// cppcheck-suppress shadowVariable
 static const char scenec_usage[] =
     "usage: rt-scenec SCENE.nff -o OUT.c [--header OUT.h] [--text]\n"
     "\n"
