@@ -44,7 +44,15 @@ asan_LDFLAGS = -fsanitize=address,undefined
 .PHONY: all run host-run test clean deps deps-board size bench bench-quick firmware print-fwdir stress fuzz fuzz-coverage
 all: build/host/rt
 
-# $(1) variant, $(2) backend name, $(3) backend flags
+# The builds of the core in the host tools, with their flags: the ids of
+# RT_HOST_BACKENDS in platform/hosted/backend.h.
+HOST_BACKENDS = fixed double float double_ftol
+BACKEND_FLAGS_fixed =
+BACKEND_FLAGS_double = -DRT_BACKEND_DOUBLE=1
+BACKEND_FLAGS_float = -DRT_BACKEND_FLOAT=1
+BACKEND_FLAGS_double_ftol = -DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1
+
+# $(1) variant, $(2) backend id, $(3) backend flags
 define core_rules
 build/$(1)/$(2)/%.o: src/%.c $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
@@ -52,7 +60,7 @@ build/$(1)/$(2)/%.o: src/%.c $(wildcard src/*.h) Makefile
 
 build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) $(HOST_INC) -c $$< -o $$@
+	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
 
 build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) build/$(1)/$(2)/backend.o
 	$$(LD) -r -o $$@.tmp $$^
@@ -60,24 +68,23 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 	@rm -f $$@.tmp
 endef
 
+# (each backend's rules are eval'd on their own: foreach joins its results
+# with spaces, which would run one rule's recipe into the next rule)
 define host_rules
-$(call core_rules,$(1),fixed,)
-$(call core_rules,$(1),double,-DRT_BACKEND_DOUBLE=1)
-$(call core_rules,$(1),float,-DRT_BACKEND_FLOAT=1)
-$(call core_rules,$(1),double_ftol,-DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1)
+$(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
 build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums.
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o build/$(1)/host_io.o build/$(1)/report.o \
-               build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o
+build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o build/$(1)/host_io.o \
+               build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
 	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/test_%.c build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o tests/testlib.h tests/probe_jump.h
+build/$(1)/test_%: tests/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/testlib.h tests/probe_jump.h
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
-	    -o $$@ $$< build/$(1)/core-fixed.o build/$(1)/core-double.o build/$(1)/core-float.o build/$(1)/core-double_ftol.o -lm
+	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
 endef
 
 $(eval $(call host_rules,host))

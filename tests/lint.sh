@@ -27,11 +27,11 @@ check "src/ (double, fixed tolerances)" -Isrc $DOUBLE -DRT_TOLERANCES_FIXED=1 sr
 
 # The hosted CLI and the scene compiler; backend.c is built once per backend.
 HOSTED="-Isrc -Iplatform/hosted -D_POSIX_C_SOURCE=200809L"
-check "platform/hosted/ and tools/ (fixed)" $HOSTED platform/hosted/ tools/
-check "platform/hosted/backend.c (double)" $HOSTED $DOUBLE platform/hosted/backend.c
-check "platform/hosted/backend.c (float)" $HOSTED $FLOAT platform/hosted/backend.c
+check "platform/hosted/ and tools/ (fixed)" $HOSTED -DBACKEND_ID=fixed platform/hosted/ tools/
+check "platform/hosted/backend.c (double)" $HOSTED $DOUBLE -DBACKEND_ID=double platform/hosted/backend.c
+check "platform/hosted/backend.c (float)" $HOSTED $FLOAT -DBACKEND_ID=float platform/hosted/backend.c
 check "platform/hosted/backend.c (double, fixed tolerances)" $HOSTED $DOUBLE -DRT_TOLERANCES_FIXED=1 \
-    platform/hosted/backend.c
+    -DBACKEND_ID=double_ftol platform/hosted/backend.c
 
 # The firmware: fixed (make run), double and float (the soft-float
 # comparison builds), and main.c's RGB565 framebuffer.

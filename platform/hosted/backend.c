@@ -9,30 +9,24 @@
 #include "scene_hit.h"
 #include "trace.h"
 
-#if RT_BACKEND_DOUBLE
-#if RT_TOLERANCES_FIXED
-#define BACKEND_SYMBOL rt_backend_double_ftol
-#define BACKEND_NAME "double-ftol"
-#else
-#define BACKEND_SYMBOL rt_backend_double
+/* BACKEND_ID (from the Makefile) names this build: rt_backend_<id>. */
+#ifndef BACKEND_ID
+#error "build with -DBACKEND_ID=<an id of RT_HOST_BACKENDS>"
 #endif
-static real_t to_real(double v) { return v; }
-static double to_double(real_t v) { return v; }
-#elif RT_BACKEND_FLOAT
-#define BACKEND_SYMBOL rt_backend_float
-static real_t to_real(double v) { return (float)v; }
-static double to_double(real_t v) { return v; }
-#else
-#define BACKEND_SYMBOL rt_backend_fixed
+#define BACKEND_CAT(a, b) a##b
+#define BACKEND_SYMBOL_OF(id) BACKEND_CAT(rt_backend_, id)
+#define BACKEND_SYMBOL BACKEND_SYMBOL_OF(BACKEND_ID)
+
+#if RT_BACKEND_FIXED
 static real_t to_real(double v)
 {
     double s = v * FX_ONE;
     return (real_t)(s < 0 ? s - 0.5 : s + 0.5);
 }
 static double to_double(real_t v) { return (double)v / FX_ONE; }
-#endif
-#ifndef BACKEND_NAME
-#define BACKEND_NAME R_BACKEND_NAME
+#else
+static real_t to_real(double v) { return (real_t)v; }
+static double to_double(real_t v) { return v; }
 #endif
 
 static scene_store_t store;
@@ -143,6 +137,6 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    BACKEND_NAME, load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, rt_stats_each, probe,
+    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, rt_stats_each, probe,
     bounds, eye_dir,
 };

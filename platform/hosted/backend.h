@@ -30,7 +30,6 @@ typedef struct {
 } probe_hit_t;
 
 typedef struct {
-    const char *name;  /* "fixed", "double", "float" or "double-ftol" */
     /* Read NFF text into the backend's own static scene. */
     bool (*load)(const char *text, size_t len, rt_error_t *err);
     void (*resolution)(uint16_t *width, uint16_t *height);
@@ -54,9 +53,19 @@ typedef struct {
     bool (*eye_dir)(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3]);
 } rt_backend_t;
 
-extern const rt_backend_t rt_backend_fixed;
-extern const rt_backend_t rt_backend_double;
-extern const rt_backend_t rt_backend_float;
-extern const rt_backend_t rt_backend_double_ftol; /* double, the fixed build's tolerances */
+/* The builds of the core in the host tools, one row each: X(id, name,
+ * what). Each is rt_backend_<id>, built by the Makefile's HOST_BACKENDS
+ * (with the row's flags there) and picked by `rt --<name>`; the first is
+ * the default. */
+#define RT_HOST_BACKENDS(X) \
+    X(fixed, "fixed", "fixed-point build of the core (default)") \
+    X(double, "double", "double-precision build: the exact reference") \
+    X(double_ftol, "double-ftol", "double precision with the fixed build's tolerances\n" \
+      "                      (splits the fixed build's error: format vs tolerances)") \
+    X(float, "float", "single-precision build (for comparison)")
+
+#define RT_BACKEND_DECLARE(id, name, what) extern const rt_backend_t rt_backend_##id;
+RT_HOST_BACKENDS(RT_BACKEND_DECLARE)
+#undef RT_BACKEND_DECLARE
 
 #endif

@@ -27,11 +27,7 @@ static const char usage_text[] =
     "render options:\n"
     "  -o, --output FILE   output image; the format follows the extension\n"
     "  --size WxH          image size (default: the scene's resolution)\n"
-    "  --fixed             fixed-point build of the core (default)\n"
-    "  --double            double-precision build: the exact reference\n"
-    "  --double-ftol       double precision with the fixed build's tolerances\n"
-    "                      (splits the fixed build's error: format vs tolerances)\n"
-    "  --float             single-precision build (for comparison)\n"
+    "%s" /* the backends */
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
     "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
     "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
@@ -150,18 +146,50 @@ static int geometry_bits_lost(const rt_backend_t *be)
     return lost > 0 ? lost : 0;
 }
 
+/* The backends, from the one list (backend.h), in its order. */
+#define BACKEND_INDEX(id, name, what) BACKEND_INDEX_##id,
+enum { RT_HOST_BACKENDS(BACKEND_INDEX) };
+#undef BACKEND_INDEX
+static const struct {
+    const char *name, *what;
+    const rt_backend_t *be;
+} backends[] = {
+#define BACKEND_ROW(id, name, what) { name, what, &rt_backend_##id },
+    RT_HOST_BACKENDS(BACKEND_ROW)
+#undef BACKEND_ROW
+};
+#define N_BACKENDS (sizeof backends / sizeof backends[0])
+
+static const char *backend_name(const rt_backend_t *be)
+{
+    for (size_t i = 0; i < N_BACKENDS; i++)
+        if (backends[i].be == be)
+            return backends[i].name;
+    return "?";
+}
+
+static void print_usage(void)
+{
+    char lines[1024] = "";
+    size_t used = 0;
+    for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
+        used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
+                                 backends[i].what);
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH);
+}
+
 enum {
-    OPT_SIZE = 256, OPT_FIXED, OPT_DOUBLE, OPT_DOUBLE_FTOL, OPT_FLOAT, OPT_DEPTH, OPT_FORMAT, OPT_STATS,
-    OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION, OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR
+    OPT_SIZE = 256, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
+    OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
+    OPT_BACKEND /* + the backend's index */
 };
 
 static const struct option render_options[] = {
     { "output", required_argument, NULL, 'o' },
     { "size", required_argument, NULL, OPT_SIZE },
-    { "fixed", no_argument, NULL, OPT_FIXED },
-    { "double", no_argument, NULL, OPT_DOUBLE },
-    { "double-ftol", no_argument, NULL, OPT_DOUBLE_FTOL },
-    { "float", no_argument, NULL, OPT_FLOAT },
+#define BACKEND_OPTION(id, name, what) { name, no_argument, NULL, OPT_BACKEND + BACKEND_INDEX_##id },
+    RT_HOST_BACKENDS(BACKEND_OPTION)
+#undef BACKEND_OPTION
     { "depth", required_argument, NULL, OPT_DEPTH },
     { "format", required_argument, NULL, OPT_FORMAT },
     { "stats", optional_argument, NULL, OPT_STATS },
@@ -194,7 +222,7 @@ static int print_version(void)
 static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
-    const rt_backend_t *be = &rt_backend_fixed;
+    const rt_backend_t *be = backends[0].be;
     render_opts_t opts = { 0 };
     fb_format_t format = FB_RGB888;
     bool quiet = false;
@@ -222,18 +250,6 @@ static int cmd_render(int argc, char **argv)
             opts.height = (uint16_t)h;
             break;
         }
-        case OPT_FIXED:
-            be = &rt_backend_fixed;
-            break;
-        case OPT_DOUBLE:
-            be = &rt_backend_double;
-            break;
-        case OPT_DOUBLE_FTOL:
-            be = &rt_backend_double_ftol;
-            break;
-        case OPT_FLOAT:
-            be = &rt_backend_float;
-            break;
         case OPT_DEPTH: {
             long d;
             if (!parse_uint(optarg, 1, RT_MAX_DEPTH, &d))
@@ -270,11 +286,15 @@ static int cmd_render(int argc, char **argv)
             quiet = true;
             break;
         case 'h':
-            printf(usage_text, RT_MAX_DEPTH, RT_MAX_DEPTH);
+            print_usage();
             return 0;
         case OPT_VERSION:
             return print_version();
         default:
+            if (c >= OPT_BACKEND && c < OPT_BACKEND + (int)N_BACKENDS) {
+                be = backends[c - OPT_BACKEND].be;
+                break;
+            }
             return host_option_error("rt", RENDER_HELP, c, argv, render_needs);
         }
     }
@@ -346,7 +366,7 @@ static int cmd_render(int argc, char **argv)
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
     if (stats)
-        report_stats(stderr, stats_format, be, &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
+        report_stats(stderr, stats_format, be, backend_name(be), &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
     if (image_write(out_path, &hs.img, why, sizeof why) != 0) {
         fprintf(stderr, "rt: %s\n", why);
         image_free(&hs.img);

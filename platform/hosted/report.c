@@ -55,11 +55,11 @@ static void put_str(report_t *r, const char *k, const char *v)
     end_line(r);
 }
 
-void report_stats(FILE *f, report_format_t format, const rt_backend_t *be, const rt_stats_t *st, int width,
-                  int height, double seconds, int range_bits_lost)
+void report_stats(FILE *f, report_format_t format, const rt_backend_t *be, const char *backend,
+                  const rt_stats_t *st, int width, int height, double seconds, int range_bits_lost)
 {
     report_t r = { f, format, 0 };
-    put_str(&r, "backend", be->name);
+    put_str(&r, "backend", backend);
     put_int(&r, "width", width);
     put_int(&r, "height", height);
     put_real(&r, "render_seconds", seconds, 6);

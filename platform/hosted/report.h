@@ -13,7 +13,7 @@ typedef enum { REPORT_TEXT, REPORT_JSON } report_format_t;
  * the host's own figures: backend, image size, render time, scene scale,
  * range bits lost, saturations (fixed build with counting on), BVH shape.
  * Text: one "key value" line each; JSON: one object. */
-void report_stats(FILE *f, report_format_t format, const rt_backend_t *be, const rt_stats_t *st, int width,
-                  int height, double seconds, int range_bits_lost);
+void report_stats(FILE *f, report_format_t format, const rt_backend_t *be, const char *backend,
+                  const rt_stats_t *st, int width, int height, double seconds, int range_bits_lost);
 
 #endif
