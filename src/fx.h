@@ -29,6 +29,7 @@
 #include <stdint.h>
 
 #include "rt_config.h"
+#include "rt_prefix.h"
 
 typedef int32_t fx_t;       /* Q(31-F).F scalar */
 typedef int64_t fx_wide_t;  /* Q(63-2F).2F: an exact product of two fx_t */

@@ -21,6 +21,7 @@
 #include <stdint.h>
 
 #include "rt_config.h"
+#include "rt_prefix.h"
 
 #if RT_BACKEND_DOUBLE || RT_BACKEND_FLOAT
 

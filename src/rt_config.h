@@ -9,6 +9,13 @@
 #ifndef RT_CONFIG_H
 #define RT_CONFIG_H
 
+/* A user's configuration, as LVGL's lv_conf.h: build with
+ * -DRT_CONFIG_FILE='"my_rt_config.h"' and that file's #defines replace
+ * the defaults below; the checks at the end reject values out of range. */
+#ifdef RT_CONFIG_FILE
+#include RT_CONFIG_FILE
+#endif
+
 /* Numeric backend: fixed point (the product) unless one of these is 1:
  * double (the reference) or float (single precision, for comparison). */
 #ifndef RT_BACKEND_DOUBLE
@@ -17,7 +24,9 @@
 #ifndef RT_BACKEND_FLOAT
 #define RT_BACKEND_FLOAT 0
 #endif
-_Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric backend");
+#if RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT
+#error "choose one numeric backend"
+#endif
 #define RT_BACKEND_FIXED (!RT_BACKEND_DOUBLE && !RT_BACKEND_FLOAT)
 
 /* Fraction bits of the fixed-point scalar: Q(31-F).F. The default Q11.20
@@ -202,18 +211,38 @@ _Static_assert(!(RT_BACKEND_DOUBLE && RT_BACKEND_FLOAT), "choose one numeric bac
 #define RT_NOINLINE
 #endif
 
-_Static_assert(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16, "RT_MAX_DEPTH out of 1..16");
-_Static_assert(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24, "FX_FRAC_BITS out of 8..24");
-_Static_assert(RT_FAR_EXTENT_LOG2 >= RT_SCENE_EXTENT_LOG2 && RT_FAR_EXTENT_LOG2 <= 29 - FX_FRAC_BITS,
-               "RT_FAR_EXTENT_LOG2: at least the scene's extent, and distances must fit the fixed range");
-_Static_assert(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535, "RT_MAX_POLY_VERTS out of 3..65535");
-_Static_assert(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535, "materials are indexed by uint16_t");
-_Static_assert(RT_MAX_SHAPES < 0x8000 && RT_MAX_CSG_NODES < 0x8000 && RT_MAX_XFORMS < 0xFFFF,
-               "shape, CSG node and transform indices are 15/16-bit");
-_Static_assert(RT_CSG_MAX_SPANS >= 2 && RT_CSG_MAX_SPANS <= 32, "RT_CSG_MAX_SPANS out of 2..32");
-_Static_assert(RT_MAX_BLOCK_DEPTH >= 1 && RT_MAX_BLOCK_DEPTH <= 64, "RT_MAX_BLOCK_DEPTH out of 1..64");
-_Static_assert(RT_BVH_MAX_DEPTH >= 8 && RT_BVH_MAX_DEPTH <= 64, "RT_BVH_MAX_DEPTH out of 8..64");
-_Static_assert(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16, "RT_BVH_LEAF_SIZE out of 1..16");
-_Static_assert(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255, "RT_MAX_LIGHTS out of 1..255");
+#if !(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16)
+#error "RT_MAX_DEPTH out of 1..16"
+#endif
+#if !(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24)
+#error "FX_FRAC_BITS out of 8..24"
+#endif
+#if !(RT_FAR_EXTENT_LOG2 >= RT_SCENE_EXTENT_LOG2 && RT_FAR_EXTENT_LOG2 <= 29 - FX_FRAC_BITS)
+#error "RT_FAR_EXTENT_LOG2: at least the scene's extent, and distances must fit the fixed range"
+#endif
+#if !(RT_MAX_POLY_VERTS >= 3 && RT_MAX_POLY_VERTS <= 65535)
+#error "RT_MAX_POLY_VERTS out of 3..65535"
+#endif
+#if !(RT_MAX_MATERIALS >= 1 && RT_MAX_MATERIALS <= 65535)
+#error "materials are indexed by uint16_t"
+#endif
+#if !(RT_MAX_SHAPES < 0x8000 && RT_MAX_CSG_NODES < 0x8000 && RT_MAX_XFORMS < 0xFFFF)
+#error "shape, CSG node and transform indices are 15/16-bit"
+#endif
+#if !(RT_CSG_MAX_SPANS >= 2 && RT_CSG_MAX_SPANS <= 32)
+#error "RT_CSG_MAX_SPANS out of 2..32"
+#endif
+#if !(RT_MAX_BLOCK_DEPTH >= 1 && RT_MAX_BLOCK_DEPTH <= 64)
+#error "RT_MAX_BLOCK_DEPTH out of 1..64"
+#endif
+#if !(RT_BVH_MAX_DEPTH >= 8 && RT_BVH_MAX_DEPTH <= 64)
+#error "RT_BVH_MAX_DEPTH out of 8..64"
+#endif
+#if !(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16)
+#error "RT_BVH_LEAF_SIZE out of 1..16"
+#endif
+#if !(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255)
+#error "RT_MAX_LIGHTS out of 1..255"
+#endif
 
 #endif

@@ -28,6 +28,8 @@ run tests/board-tests.sh "$B/rt"
 run python3 tests/stress.py --quick
 run tests/lint.sh
 run python3 tests/layers.py "$B/fixed"
+run tests/symbols.sh "$B"
+run tests/config-tests.sh "$B/test-config"
 run tests/hygiene.sh
 run tests/fuzz-smoke.sh
 echo
