@@ -11,15 +11,11 @@
 #ifndef RT_H
 #define RT_H
 
-#define RT_VERSION_MAJOR 0
-#define RT_VERSION_MINOR 9
-#define RT_VERSION_PATCH 0
-#define RT_VERSION_STRING "0.9.0"
-
 #include "nff.h"
 #include "render.h"
 #include "rt_config.h"
 #include "rt_error.h"
+#include "rt_version.h"
 #include "stats.h"
 
 #endif

@@ -23,7 +23,7 @@
 #include "bvh.h"
 #include "host_io.h" /* beside this file: found without -I */
 #include "nff.h"
-#include "version.h"
+#include "rt_version.h"
 
 #if !RT_BACKEND_FIXED
 #error "the scene compiler emits fixed-point tables: build it for the fixed backend"
@@ -301,7 +301,7 @@ int main(int argc, char **argv)
             fputs(scenec_usage, stdout);
             return 0;
         case OPT_VERSION:
-            printf("rt-scenec %s\n", RT_VERSION);
+            printf("rt-scenec %s\n", RT_VERSION_STRING);
             return 0;
         default:
             return host_option_error("rt-scenec", SCENEC_HELP, c, argv, needs);

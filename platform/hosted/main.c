@@ -16,7 +16,7 @@
 #include "image.h"
 #include "receive.h"
 #include "report.h"
-#include "version.h"
+#include "rt_version.h"
 
 static const char usage_text[] =
     "usage: rt [options] SCENE.nff -o OUT.png|OUT.ppm\n"
@@ -215,7 +215,7 @@ static int render_usage_error(const char *fmt, const char *arg)
 
 static int print_version(void)
 {
-    printf("rt %s\n", RT_VERSION);
+    printf("rt %s\n", RT_VERSION_STRING);
     return 0;
 }
 

@@ -25,7 +25,7 @@
 #include "image.h"
 #include "receive.h"
 #include "uart_stream.h"
-#include "version.h"
+#include "rt_version.h"
 
 static const char receive_usage[] =
     "usage: rt receive [STREAM] -o OUT.png [options]\n"
@@ -132,7 +132,7 @@ int cmd_receive(int argc, char **argv)
             fputs(receive_usage, stdout);
             return 0;
         case OPT_VERSION:
-            printf("rt %s\n", RT_VERSION);
+            printf("rt %s\n", RT_VERSION_STRING);
             return 0;
         default:
             return host_option_error("rt receive", RECEIVE_HELP, c, argv, receive_needs);
