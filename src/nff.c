@@ -382,3 +382,10 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
         return lex_fail(&r.lx, r.lx.tok_line, why);
     return true;
 }
+
+const scene_t *rt_nff_load(const char *text, size_t len, rt_error_t *err)
+{
+    /* linked only when used: the tables at the configured capacities */
+    static scene_store_t store;
+    return nff_read(text, len, &store, err) ? &store.scene : (const scene_t *)0;
+}

@@ -4,7 +4,7 @@
  * Whatever goes over every kind is generated from RT_PRIM_KINDS: the kind
  * enum, the scene's tables and their capacities (scene.h), the count of
  * primitives, the nearest-hit, any-hit, BVH-box and shading dispatch
- * (prims.h), the per-kind test counters (stats.h), and the scene
+ * (prims.h), the per-kind test counters (rt_stats.h), and the scene
  * compiler's tables and pruning switches. README, "Adding a primitive",
  * gives the route.
  *

@@ -7,7 +7,7 @@
 #define PRIMS_H
 
 #include "geometry.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 /* Whether ray r meets primitive ref in (tmin, *t); sets *t and, for
  * objects, h's shape fields (h may be NULL for any-hit). `self`: the ray

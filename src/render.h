@@ -5,7 +5,7 @@
 #include "fb.h"
 #include "rt_error.h"
 #include "scene.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 typedef struct {
     uint16_t width, height; /* 0: the scene's resolution */

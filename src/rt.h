@@ -16,6 +16,6 @@
 #include "rt_config.h"
 #include "rt_error.h"
 #include "rt_version.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 #endif

@@ -6,7 +6,7 @@
 #include <stdbool.h>
 
 #include "geometry.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 /* Nearest hit with tmin < t < h->t (set h->t to the ray's far limit). */
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);

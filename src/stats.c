@@ -1,5 +1,7 @@
-/* stats.c - walking the counters of stats.h by key. */
-#include "stats.h"
+/* stats.c - walking the counters of rt_stats.h by key. */
+#include "rt_stats.h"
+
+#include "prim_kinds.h"
 
 #include <stddef.h>
 
@@ -22,6 +24,8 @@ void rt_stats_each(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx)
     for (size_t i = 0; i < sizeof counters / sizeof counters[0]; i++)
         visit(ctx, counters[i].key, *(const uint64_t *)(const void *)((const char *)st + counters[i].offset));
 }
+
+_Static_assert(PRIM_KIND_COUNT <= RT_STATS_MAX_KINDS, "rt_stats_t has a counter per primitive kind");
 
 uint64_t rt_stats_tests(const rt_stats_t *st)
 {

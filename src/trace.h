@@ -3,7 +3,7 @@
 #define TRACE_H
 
 #include "geometry.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 typedef struct {
     const scene_t *scene;

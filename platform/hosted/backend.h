@@ -18,7 +18,7 @@
 #include "fb.h"
 #include "render.h"
 #include "rt_error.h"
-#include "stats.h"
+#include "rt_stats.h"
 
 typedef struct {
     double t;

@@ -1,14 +1,12 @@
 /*
- * stats.h - the render's counters: one list, read by `rt --stats` (text
+ * rt_stats.h - the render's counters: one list, read by `rt --stats` (text
  * or JSON), the firmware's report and the benchmarks, with the same keys
  * everywhere.
  */
-#ifndef STATS_H
-#define STATS_H
+#ifndef RT_STATS_H
+#define RT_STATS_H
 
 #include <stdint.h>
-
-#include "prim_kinds.h"
 
 /* X(key, what it counts). Besides these, one "<kind>_tests" counter per
  * primitive kind (prim_kinds.h): intersection tests of that kind. */
@@ -20,10 +18,14 @@
     X(shadow_rays, "shadow rays, including lights a patch hides from itself") \
     X(bvh_nodes_visited, "BVH nodes visited")
 
+/* Room for the per-kind counters: at least the number of kinds
+ * (prim_kinds.h checks), so this header needs none of the core's. */
+#define RT_STATS_MAX_KINDS 8
+
 #define RT_STATS_DECLARE(key, what) uint64_t key;
 typedef struct {
     RT_STATS_COUNTERS(RT_STATS_DECLARE)
-    uint64_t prim_tests[PRIM_KIND_COUNT]; /* by enum prim_kind */
+    uint64_t prim_tests[RT_STATS_MAX_KINDS]; /* by enum prim_kind */
 } rt_stats_t;
 #undef RT_STATS_DECLARE
 
