@@ -139,6 +139,8 @@ bench: deps
 	@sh bench/bvh-bench.sh
 	@echo
 	@sh bench/prims-bench.sh
+	@echo
+	@sh bench/lib-size.sh
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

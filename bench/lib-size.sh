@@ -1,0 +1,33 @@
+#!/bin/sh
+# The core's footprint as a library, per feature set, for a Cortex-M3 at
+# -Os: every src/*.c compiled with the set's switches, linked with
+# --gc-sections from the entry points a user calls, plus the four memory
+# functions GCC may emit (platform/mps2-an385/libc_min.c). Scene tables
+# and the user's sink are not counted. Prints code (text + rodata) and
+# static RAM (data + bss) per set.
+OUT=build/lib-size
+mkdir -p "$OUT"
+CC=${ARM_CC:-arm-none-eabi-gcc}
+ARCH="-mcpu=cortex-m3 -mthumb"
+CFLAGS="-std=c11 -ffreestanding -Os -ffunction-sections -fdata-sections -fno-tree-loop-distribute-patterns -Isrc -DRT_USE_SPD=0"
+sizes() { # set name, entry points, flags
+    name=$1 entries=$2
+    shift 2
+    objs=""
+    for c in src/*.c platform/mps2-an385/libc_min.c; do
+        o="$OUT/$name-$(basename "$c" .c).o"
+        $CC $ARCH $CFLAGS "$@" -c "$c" -o "$o" || return 1
+        objs="$objs $o"
+    done
+    undef=""
+    for e in $entries; do undef="$undef -Wl,-u,$e"; done
+    $CC $ARCH -nostdlib -Wl,--gc-sections -Wl,--entry=rt_render $undef -o "$OUT/$name.elf" $objs -lgcc || return 1
+    arm-none-eabi-size -A "$OUT/$name.elf" | awk -v n="$name" '
+        $1 == ".text" || $1 == ".rodata" { code += $2 } $1 == ".data" || $1 == ".bss" { ram += $2 }
+        END { printf "%-34s %8d %12d\n", n, code, ram }'
+}
+printf '%-34s %8s %12s\n' "feature set (Cortex-M3, -Os)" "code" "static RAM"
+sizes spd-features rt_render -DRT_USE_OBJECTS=0
+sizes all-solids rt_render
+sizes spd-features-no-refraction rt_render -DRT_USE_OBJECTS=0 -DRT_USE_REFRACTION=0 -DRT_USE_PATCHES=0 -DRT_USE_CONES=0
+sizes all-solids+nff-reader "rt_render rt_nff_load"
