@@ -1,8 +1,8 @@
 #!/bin/sh
 # consumer-tests.sh RT [OUT]: the core as a user embeds it (tests/consumer/):
 # configured and built with CMake for the host and cross compiled with
-# cmake/arm-none-eabi.cmake. The host program, and the firmware under
-# QEMU, must write the image of
+# cmake/arm-none-eabi.cmake, and with GNU make from rt.mk. Each host
+# program, and the firmware under QEMU, must write the image of
 #   rt scenes/spd/balls-1.nff --size 32x32 --fixed
 # byte for byte; the scene prunes the core (no cone code linked).
 rt=${1:-build/host/rt} out=${2:-build/consumer}
@@ -62,6 +62,13 @@ if CFLAGS=-Werror log arm-configure cmake -S tests/consumer -B "$out/arm" -DCMAK
     fi
 else
     bad "CMake, Cortex-M3: configure, build or link failed"
+fi
+
+# GNU make with rt.mk.
+if log make make -f tests/consumer/Makefile O="$out/make" && "$out/make/consumer" >"$out/make.ppm"; then
+    same_image "make with rt.mk, host" "$out/make.ppm"
+else
+    bad "make with rt.mk: build or run failed"
 fi
 
 echo "consumer: $pass passed, $fail failed"
