@@ -23,7 +23,9 @@
 #                   and, to prune, compile the core with
 #                     -DSCENE_PRUNE=1 -include scene_data.h
 #   RT_SCENEC_CFLAGS
-RT_DIR ?= $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
+ifeq ($(RT_DIR),)
+RT_DIR := $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
+endif
 RT_BACKEND ?= fixed
 RT_CONFIG_FILE ?=
 
