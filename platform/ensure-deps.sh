@@ -23,6 +23,7 @@ if [ "$mode" = all ]; then
     command -v python3 >/dev/null 2>&1 || need="$need python3"   # stress suite, benchmarks, make size
     command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
     command -v cppcheck >/dev/null 2>&1 || need="$need cppcheck"
+    command -v cmake >/dev/null 2>&1 || need="$need cmake"   # tests/consumer-tests.sh
     # libFuzzer: clang and its runtime
     command -v clang >/dev/null 2>&1 || need="$need clang"
     ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||

@@ -41,5 +41,9 @@ check "platform/mps2-an385/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=FB_RGB5
 check "platform/mps2-an385/ (double)" $BOARD $DOUBLE platform/mps2-an385/
 check "platform/mps2-an385/ (float)" $BOARD $FLOAT platform/mps2-an385/
 
+# The embedding example (tests/consumer/): main.c sees only rt.h.
+check "tests/consumer/ (host)" -Isrc tests/consumer/main.c tests/consumer/out_host.c
+check "tests/consumer/ (board)" -Isrc -Iplatform/mps2-an385 tests/consumer/out_mps2.c
+
 echo "lint: $pass passed, $fail failed"
 [ $fail -eq 0 ]

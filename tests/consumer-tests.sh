@@ -1,0 +1,75 @@
+#!/bin/sh
+# consumer-tests.sh RT [OUT]: the core as a user embeds it (tests/consumer/):
+# configured and built with CMake for the host and cross compiled with
+# cmake/arm-none-eabi.cmake, and with GNU make from rt.mk. Each host
+# program, and the firmware under QEMU, must write the image of
+#   rt scenes/spd/balls-1.nff --size 32x32 --fixed
+# byte for byte; the scene prunes the core (no cone code linked).
+rt=${1:-build/host/rt} out=${2:-build/consumer}
+pass=0 fail=0
+ok() { pass=$((pass + 1)); echo "  ok    $*"; }
+bad() { fail=$((fail + 1)); echo "  FAIL  $*"; }
+log() { # log NAME CMD...: run quietly, show the log's tail on failure
+    name=$1
+    shift
+    if "$@" >"$out/$name.log" 2>&1; then return 0; fi
+    tail -20 "$out/$name.log"
+    return 1
+}
+same_image() { # same_image WHAT IMAGE
+    if "$rt" compare "$2" "$out/ref.ppm" --max-error 0 >/dev/null 2>&1; then
+        ok "$1: the same image as rt --fixed, byte for byte"
+    else
+        bad "$1: image differs from rt --fixed ($("$rt" compare "$2" "$out/ref.ppm" 2>&1))"
+    fi
+}
+rm -rf "$out"
+mkdir -p "$out"
+"$rt" scenes/spd/balls-1.nff --size 32x32 --fixed -o "$out/ref.ppm" --quiet || bad "rt: reference render"
+
+# Host: configure, build, run.
+if log host-configure cmake -S tests/consumer -B "$out/host" -DCMAKE_BUILD_TYPE=Release &&
+    log host-build cmake --build "$out/host" -j2; then
+    ok "CMake, host: configured and built"
+    if "$out/host/consumer" >"$out/host.ppm"; then
+        same_image "CMake, host" "$out/host.ppm"
+    else
+        bad "CMake, host: the consumer failed"
+    fi
+    if nm "$out/host/consumer" | grep -q ray_hit_sphere && ! nm "$out/host/consumer" | grep -q ray_hit_cone; then
+        ok "CMake, host: pruned for the scene (sphere code linked, no cone code)"
+    else
+        bad "CMake, host: not pruned for the scene (cone code linked, or no sphere code)"
+    fi
+else
+    bad "CMake, host: configure or build failed"
+fi
+
+# Cortex-M3: cross compiled with the toolchain file, then run under QEMU.
+elf="$out/arm/consumer.elf"
+if CFLAGS=-Werror log arm-configure cmake -S tests/consumer -B "$out/arm" -DCMAKE_BUILD_TYPE=MinSizeRel \
+    -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/arm-none-eabi.cmake" && log arm-build cmake --build "$out/arm" -j2 &&
+    arm-none-eabi-readelf -h "$elf" | grep -q 'Machine: *ARM'; then
+    ok "CMake, Cortex-M3: cross compiled and linked ($(arm-none-eabi-size "$elf" | awk 'NR == 2 { print $1 " bytes of code" }'))"
+    if grep -q 'RT_HOST_CC:FILEPATH=.*arm-none-eabi' "$out/arm/CMakeCache.txt"; then
+        bad "CMake, Cortex-M3: the scene compiler was built with the cross compiler"
+    fi
+    if timeout 120 qemu-system-arm -M mps2-an385 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -kernel "$elf" </dev/null >"$out/arm.ppm"; then
+        same_image "CMake, Cortex-M3 under QEMU" "$out/arm.ppm"
+    else
+        bad "CMake, Cortex-M3: the firmware failed under QEMU"
+    fi
+else
+    bad "CMake, Cortex-M3: configure, build or link failed"
+fi
+
+# GNU make with rt.mk.
+if log make make -f tests/consumer/Makefile O="$out/make" && "$out/make/consumer" >"$out/make.ppm"; then
+    same_image "make with rt.mk, host" "$out/make.ppm"
+else
+    bad "make with rt.mk: build or run failed"
+fi
+
+echo "consumer: $pass passed, $fail failed"
+[ $fail -eq 0 ]

@@ -1,0 +1,64 @@
+/*
+ * main.c - a user's program: render the compiled-in scene at 32x32 into a
+ * sink that writes a binary PPM through out_write() (out_host.c: stdout;
+ * out_mps2.c: the board's UART0). Includes nothing but rt.h.
+ */
+#include "rt.h"
+
+#define WIDTH 32
+#define HEIGHT 32
+#define BAND_LINES 4
+
+extern const scene_t rt_scene;         /* rt_add_scene: scene_data.c */
+int out_write(const void *p, size_t n); /* 0 on success */
+
+static uint8_t band[BAND_LINES * WIDTH * 3];
+static int out_status;
+
+static char *put_uint(char *p, unsigned v)
+{
+    char digits[5];
+    int n = 0;
+    do
+        digits[n++] = (char)('0' + v % 10);
+    while ((v /= 10) != 0);
+    while (n > 0)
+        *p++ = digits[--n];
+    return p;
+}
+
+static int begin(fb_sink_t *s, uint16_t width, uint16_t height)
+{
+    (void)s;
+    char header[24] = "P6\n", *p = header + 3;
+    p = put_uint(p, width);
+    *p++ = ' ';
+    p = put_uint(p, height);
+    for (const char *q = "\n255\n"; *q; q++)
+        *p++ = *q;
+    return out_write(header, (size_t)(p - header));
+}
+
+static void flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *pixels)
+{
+    size_t n = (size_t)(a->x2 - a->x1 + 1) * (size_t)(a->y2 - a->y1 + 1) * 3u;
+    if (out_status == 0)
+        out_status = out_write(pixels, n);
+    fb_flush_ready(s); /* synchronous: the band is free again */
+}
+
+static int end(fb_sink_t *s)
+{
+    (void)s;
+    return out_status;
+}
+
+int main(void)
+{
+    fb_sink_t sink = { .format = FB_RGB888, .band = { band, 0 }, .band_bytes = sizeof band,
+                       .begin = begin, .flush = flush, .end = end };
+    render_opts_t opts = { .width = WIDTH, .height = HEIGHT }; /* depth: RT_MAX_DEPTH */
+    static rt_stats_t stats; /* required: rt_render does not take NULL yet */
+    static rt_error_t err;
+    return rt_render(&rt_scene, &opts, &sink, &stats, &err) == 0 ? 0 : 1;
+}
