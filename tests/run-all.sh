@@ -26,6 +26,7 @@ run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
+run tests/examples-tests.sh "$B/rt" "$B/test-examples"
 run python3 tests/stress.py --quick
 run tests/lint.sh
 run python3 tests/layers.py "$B/fixed"
