@@ -4,18 +4,54 @@
 #include "camera.h"
 #include "trace.h"
 
-static void put_pixel(uint8_t *px, fb_format_t f, colour_t c)
+/* RT_FB_ONLY_FORMAT (a build flag, e.g. the board's): the one format the
+ * build packs; the packer's switch folds to that case. */
+#ifdef RT_FB_ONLY_FORMAT
+#define PIXEL_FORMAT(f) ((void)(f), (fb_format_t)(RT_FB_ONLY_FORMAT))
+#else
+#define PIXEL_FORMAT(f) (f)
+#endif
+
+/* Pixel x of a line in format f: the one packer of every format (fb.h). */
+static void put_pixel(uint8_t *line, uint16_t x, fb_format_t f, colour_t c)
 {
-    uint8_t r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
-    if (f == FB_RGB565) {
-        uint16_t w = (uint16_t)(((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 |
-                                ((b * 31u + 127u) / 255u));
-        px[0] = (uint8_t)(w & 0xFF);
+    unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
+    unsigned w, l;
+    uint8_t *px;
+    switch (PIXEL_FORMAT(f)) {
+    case RT_FB_RGB888:
+        px = line + 3u * x;
+        px[0] = (uint8_t)r;
+        px[1] = (uint8_t)g;
+        px[2] = (uint8_t)b;
+        break;
+    case RT_FB_XRGB8888:
+        px = line + 4u * x;
+        px[0] = (uint8_t)b;
+        px[1] = (uint8_t)g;
+        px[2] = (uint8_t)r;
+        px[3] = 0;
+        break;
+    case RT_FB_RGB565:
+    case RT_FB_RGB565BE:
+        px = line + 2u * x;
+        w = ((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 | ((b * 31u + 127u) / 255u);
+        if (PIXEL_FORMAT(f) == RT_FB_RGB565BE)
+            w = (w >> 8 | w << 8) & 0xFFFFu;
+        px[0] = (uint8_t)w;
         px[1] = (uint8_t)(w >> 8);
-    } else {
-        px[0] = r;
-        px[1] = g;
-        px[2] = b;
+        break;
+    default: /* RT_FB_L8, RT_FB_L4 */
+        l = (77u * r + 150u * g + 29u * b + 128u) >> 8;
+        if (PIXEL_FORMAT(f) == RT_FB_L8) {
+            line[x] = (uint8_t)l;
+        } else {
+            l = (l * 15u + 127u) / 255u;
+            px = line + (x >> 1);
+            /* the left pixel's write clears the right one's nibble */
+            *px = x & 1u ? (uint8_t)(*px | l) : (uint8_t)(l << 4);
+        }
+        break;
     }
 }
 
@@ -58,7 +94,7 @@ static void spd_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16
     corner_row(tr, cam, y + 1, w, rows[1]);
     for (uint16_t x = 0; x < w; x++) {
         colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
-        put_pixel(line + x * fb_bytes_per_pixel(f), f, v3_scale(sum, R_RATIO(1, 4)));
+        put_pixel(line, x, f, v3_scale(sum, R_RATIO(1, 4)));
     }
     colour_t *t = rows[0];
     rows[0] = rows[1];
@@ -73,7 +109,7 @@ static void plain_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint
     for (uint16_t x = 0; x < w; x++) {
         ray_t ray = camera_ray(cam, x, y);
         tr->stats->eye_rays++;
-        put_pixel(line + x * fb_bytes_per_pixel(f), f, trace_ray(tr, &ray, 1, R_ONE));
+        put_pixel(line, x, f, trace_ray(tr, &ray, 1, R_ONE));
     }
 }
 
@@ -95,8 +131,17 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
         rt_error_append_int(err, RT_MAX_DEPTH);
         return -1;
     }
-    size_t bpp = fb_bytes_per_pixel(sink->format);
-    size_t line_bytes = (size_t)w * bpp;
+#ifdef RT_FB_ONLY_FORMAT
+    if (sink->format != RT_FB_ONLY_FORMAT) {
+        rt_error_set(err, 0, "this build packs one pixel format only (RT_FB_ONLY_FORMAT)");
+        return -1;
+    }
+#endif
+    size_t line_bytes = RT_FB_LINE_BYTES(PIXEL_FORMAT(sink->format), w);
+    if (line_bytes == 0) {
+        rt_error_set(err, 0, "unknown framebuffer pixel format");
+        return -1;
+    }
     size_t band_lines = sink->band_bytes / line_bytes;
     if (band_lines == 0 || sink->band[0] == 0) {
         rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");

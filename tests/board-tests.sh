@@ -58,16 +58,19 @@ for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
     fi
 done
 
-# The RGB565 framebuffer path on the board against the host's.
-d=build/board/rings-1-48x32-d3-rgb565
-if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=48x32 DEPTH=3 FORMAT=rgb565 >"$OUT/565.build" 2>&1 &&
-   platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/565-board.png" "$RT" >"$OUT/565.report" 2>&1 &&
-   "$RT" scenes/spd/rings-1.nff -o "$OUT/565-host.png" --size 48x32 --depth 3 --format rgb565 --quiet &&
-   cmp=$("$RT" compare "$OUT/565-board.png" "$OUT/565-host.png" --max-error 0); then
-    ok "rings-1 rgb565 48x32: board == host fixed ($cmp)"
-else
-    bad "rings-1 rgb565 48x32: board and host differ or failed"
-fi
+# The packed framebuffer formats on the board against the host's
+# (rgb565be: 16-bit byte-swapped; l4: two pixels per byte).
+for fmt in rgb565 rgb565be l4; do
+    d=build/board/rings-1-48x32-d3-$fmt
+    if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=48x32 DEPTH=3 FORMAT=$fmt >"$OUT/$fmt.build" 2>&1 &&
+       platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$fmt-board.png" "$RT" >"$OUT/$fmt.report" 2>&1 &&
+       "$RT" scenes/spd/rings-1.nff -o "$OUT/$fmt-host.png" --size 48x32 --depth 3 --format $fmt --quiet &&
+       cmp=$("$RT" compare "$OUT/$fmt-board.png" "$OUT/$fmt-host.png" --max-error 0); then
+        ok "rings-1 $fmt 48x32: board == host fixed ($cmp)"
+    else
+        bad "rings-1 $fmt 48x32: board and host differ or failed"
+    fi
+done
 
 # Linked-symbol checks on the default scene's firmware (and, as a control
 # that the check can fail, the soft-float build must show its helpers).

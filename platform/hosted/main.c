@@ -29,7 +29,8 @@ static const char usage_text[] =
     "  --size WxH          image size (default: the scene's resolution)\n"
     "%s" /* the backends */
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
-    "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
+    "  --format F          framebuffer pixel format: %s\n"
+    "                      (the first is the default; written expanded to RGB)\n"
     "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
     "                      BVH shape and render time on stderr: 'key value' lines\n"
     "                      (text, the default) or one JSON object (json)\n"
@@ -87,8 +88,8 @@ typedef struct {
     fb_sink_t sink;
     image_t img;
     bool progress;
-    uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 3];
-    uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 3];
+    uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
+    uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
 } host_sink_t;
 
 static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
@@ -106,18 +107,9 @@ static void host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     size_t w = (size_t)hs->img.width;
     for (unsigned y = a->y1; y <= a->y2; y++) {
         uint8_t *dst = hs->img.rgb + (size_t)y * w * 3;
-        const uint8_t *src = px + (size_t)(y - a->y1) * w * fb_bytes_per_pixel(s->format);
-        if (s->format == FB_RGB888) {
-            memcpy(dst, src, w * 3);
-        } else {
-            for (size_t x = 0; x < w; x++) {
-                unsigned v = (unsigned)src[2 * x] | (unsigned)src[2 * x + 1] << 8;
-                unsigned r = v >> 11, g = (v >> 5) & 63, b = v & 31;
-                dst[3 * x] = (uint8_t)((r * 255 + 15) / 31);
-                dst[3 * x + 1] = (uint8_t)((g * 255 + 31) / 63);
-                dst[3 * x + 2] = (uint8_t)((b * 255 + 15) / 31);
-            }
-        }
+        const uint8_t *src = px + (size_t)(y - a->y1) * RT_FB_LINE_BYTES(s->format, w);
+        for (size_t x = 0; x < w; x++)
+            rt_fb_expand(s->format, src, x, dst + 3 * x);
     }
     if (hs->progress)
         fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1) / hs->img.height));
@@ -168,6 +160,19 @@ static const char *backend_name(const rt_backend_t *be)
     return "?";
 }
 
+/* The pixel formats, from the one list (fb.h). */
+static const struct {
+    const char *name;
+    fb_format_t format;
+} formats[] = {
+#define FORMAT_ROW(id, name, value, bits) { name, id },
+    RT_FB_FORMATS(FORMAT_ROW)
+#undef FORMAT_ROW
+};
+#define FORMAT_NAMES_(id, name, value, bits) name " "
+static const char format_list[] = RT_FB_FORMATS(FORMAT_NAMES_);
+#undef FORMAT_NAMES_
+
 static void print_usage(void)
 {
     char lines[1024] = "";
@@ -175,7 +180,7 @@ static void print_usage(void)
     for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
         used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
                                  backends[i].what);
-    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH);
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list);
 }
 
 enum {
@@ -203,7 +208,7 @@ static const struct option render_options[] = {
 
 static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_DEPTH, "a number" },
-    { OPT_FORMAT, "rgb888 or rgb565" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
+    { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
 };
 
 #define RENDER_HELP "rt --help"
@@ -257,14 +262,18 @@ static int cmd_render(int argc, char **argv)
             opts.max_depth = (uint8_t)d;
             break;
         }
-        case OPT_FORMAT:
-            if (!strcmp(optarg, "rgb888"))
-                format = FB_RGB888;
-            else if (!strcmp(optarg, "rgb565"))
-                format = FB_RGB565;
-            else
-                return render_usage_error("--format: expected rgb888 or rgb565, got '%s'", optarg);
+        case OPT_FORMAT: {
+            size_t i = 0;
+            while (i < sizeof formats / sizeof formats[0] && strcmp(optarg, formats[i].name) != 0)
+                i++;
+            if (i == sizeof formats / sizeof formats[0]) {
+                char msg[160];
+                snprintf(msg, sizeof msg, "--format: expected one of: %sgot '%%s'", format_list);
+                return render_usage_error(msg, optarg);
+            }
+            format = formats[i].format;
             break;
+        }
         case OPT_STATS:
             if (optarg && !strcmp(optarg, "json"))
                 stats_format = REPORT_JSON;
