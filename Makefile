@@ -146,7 +146,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec
-TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
+TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
 
 test: deps

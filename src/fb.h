@@ -85,9 +85,13 @@ struct fb_sink {
     uint8_t *band[2];    /* band[1] may be NULL: single buffering */
     size_t band_bytes;   /* size of each band buffer */
 
-    /* 0 to go on; anything else aborts the frame with that status. */
+    /* begin and flush: 0 to go on; anything else aborts the frame, and
+     * rt_render returns that status without calling end() (a sink that
+     * must clean up does it before returning the failure). A flush that
+     * fails must not have started a transfer: the core takes the buffer
+     * back (clears `flushing`) and flushes nothing more. */
     int (*begin)(fb_sink_t *s, uint16_t width, uint16_t height);
-    void (*flush)(fb_sink_t *s, const fb_area_t *area, const uint8_t *pixels);
+    int (*flush)(fb_sink_t *s, const fb_area_t *area, const uint8_t *pixels);
     /* Optional: idle (e.g. WFI) until fb_flush_ready(); NULL busy-waits. */
     void (*wait)(fb_sink_t *s);
     int (*end)(fb_sink_t *s);

@@ -63,16 +63,22 @@ static void wait_flushed(fb_sink_t *sink)
     }
 }
 
-static void flush_band(fb_sink_t *sink, unsigned *cur, uint16_t w, uint16_t y1, uint16_t y2)
+/* The sink's status: 0, or its failure (then no flush is in flight). */
+static int flush_band(fb_sink_t *sink, unsigned *cur, uint16_t w, uint16_t y1, uint16_t y2)
 {
     fb_area_t area = { 0, y1, (uint16_t)(w - 1), y2 };
     wait_flushed(sink); /* the other buffer's flush */
     sink->flushing = true;
-    sink->flush(sink, &area, sink->band[*cur]);
+    int status = sink->flush(sink, &area, sink->band[*cur]);
+    if (status != 0) {
+        sink->flushing = false;
+        return status;
+    }
     if (sink->band[1])
         *cur ^= 1u;
     else
         wait_flushed(sink);
+    return 0;
 }
 
 #if RT_USE_SPD
@@ -178,6 +184,9 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
     }
     if (sc->n_bvh_nodes > 0)
         camera_start_at_bounds(&cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
+    static rt_stats_t no_stats; /* stats == NULL: counted here, unread */
+    if (stats == 0)
+        stats = &no_stats;
     static tracer_t tr; /* static like cam */
     tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
 
@@ -200,7 +209,9 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
 #endif
             plain_line(&tr, &cam, y, w, line, sink->format);
         if ((size_t)(y - band_y + 1) == band_lines || y + 1 == h) {
-            flush_band(sink, &cur, w, band_y, y);
+            status = flush_band(sink, &cur, w, band_y, y);
+            if (status != 0)
+                return status;
             band_y = (uint16_t)(y + 1);
         }
     }

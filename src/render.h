@@ -24,7 +24,8 @@ typedef struct {
 
 #define RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * sizeof(colour_t))
 
-/* 0 on success; a sink's non-zero status, or -1 with *err set. */
+/* 0 on success; a sink's non-zero status (begin or flush; end() is then
+ * not called), or -1 with *err set. stats may be NULL. */
 int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err);
 

@@ -20,6 +20,7 @@ run() {
 run "$B/test_fx"
 run "$B/test_geometry"
 run "$B/test_bvh"
+run "$B/test_hal"
 run tests/image-tests.sh "$B/rt" "$B/test-images"
 run tests/format-tests.sh "$B/rt" "$B/test-formats"
 run tests/reference-tests.sh "$B/rt" "$B/test-reference"

@@ -101,7 +101,7 @@ static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     return hs->img.rgb ? 0 : 1;
 }
 
-static void host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
 {
     host_sink_t *hs = s->user;
     size_t w = (size_t)hs->img.width;
@@ -114,6 +114,7 @@ static void host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     if (hs->progress)
         fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1) / hs->img.height));
     fb_flush_ready(s); /* synchronous: the band is free again */
+    return 0;
 }
 
 static double now_seconds(void)

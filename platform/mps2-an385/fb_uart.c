@@ -46,7 +46,7 @@ static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     return 0;
 }
 
-static void uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
 {
     uint64_t t0 = icount_read();
     uint16_t lines = (uint16_t)(a->y2 - a->y1 + 1);
@@ -61,6 +61,7 @@ static void uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     frame_adler = adler32(frame_adler, px, n);
     fb_flush_ready(s); /* UART writes are synchronous */
     io_instructions += icount_read() - t0;
+    return 0;
 }
 
 static int uart_end(fb_sink_t *s)
