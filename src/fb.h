@@ -84,6 +84,8 @@ struct fb_sink {
     fb_format_t format;
     uint8_t *band[2];    /* band[1] may be NULL: single buffering */
     size_t band_bytes;   /* size of each band buffer */
+    size_t pitch;        /* bytes from one line to the next in a band;
+                          * 0: tightly packed (RT_FB_LINE_BYTES) */
 
     /* begin and flush: 0 to go on; anything else aborts the frame, and
      * rt_render returns that status without calling end() (a sink that

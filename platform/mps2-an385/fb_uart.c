@@ -41,7 +41,11 @@ static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     put_u16(hdr + 7, h);
     uart_write(hdr, sizeof hdr);
     frame_adler = 1;
+#ifdef RT_FB_ONLY_FORMAT
+    frame_line_bytes = RT_FB_LINE_BYTES(RT_FB_ONLY_FORMAT, w); /* the build's one format */
+#else
     frame_line_bytes = RT_FB_LINE_BYTES(s->format, w);
+#endif
     io_instructions += icount_read() - t0;
     return 0;
 }

@@ -16,7 +16,8 @@
 #include "fb.h"
 
 /* A sink with one band buffer of `bytes`; flush time is excluded from
- * the instruction count (see fb_uart_io_instructions). */
+ * the instruction count (see fb_uart_io_instructions). It streams whole
+ * frames: no viewport, tightly packed lines (pitch 0). */
 void fb_uart_init(fb_sink_t *sink, fb_format_t format, uint8_t *band, size_t bytes);
 
 /* Instructions spent inside the sink (UART output and checksums). */
