@@ -29,6 +29,8 @@ static const char usage_text[] =
     "  --size WxH          image size (default: the scene's resolution)\n"
     "%s" /* the backends */
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
+    "  --viewport X,Y,W,H  render only that rectangle of the frame; the output\n"
+    "                      image is the rectangle (pixels as in the whole frame)\n"
     "  --format F          framebuffer pixel format: %s\n"
     "                      (the first is the default; written expanded to RGB)\n"
     "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
@@ -86,7 +88,8 @@ static bool parse_double(const char *s, double *out)
 
 typedef struct {
     fb_sink_t sink;
-    image_t img;
+    image_t img;           /* the viewport (by default the whole frame) */
+    rt_viewport_t vp;
     bool progress;
     uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
     uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
@@ -95,9 +98,11 @@ typedef struct {
 static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
 {
     host_sink_t *hs = s->user;
-    hs->img.width = w;
-    hs->img.height = h;
-    hs->img.rgb = malloc((size_t)w * h * 3);
+    if (hs->vp.w == 0)
+        hs->vp = (rt_viewport_t){ 0, 0, w, h };
+    hs->img.width = hs->vp.w;
+    hs->img.height = hs->vp.h;
+    hs->img.rgb = malloc((size_t)hs->vp.w * hs->vp.h * 3);
     return hs->img.rgb ? 0 : 1;
 }
 
@@ -106,13 +111,13 @@ static int host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     host_sink_t *hs = s->user;
     size_t w = (size_t)hs->img.width;
     for (unsigned y = a->y1; y <= a->y2; y++) {
-        uint8_t *dst = hs->img.rgb + (size_t)y * w * 3;
+        uint8_t *dst = hs->img.rgb + (size_t)(y - hs->vp.y) * w * 3;
         const uint8_t *src = px + (size_t)(y - a->y1) * RT_FB_LINE_BYTES(s->format, w);
         for (size_t x = 0; x < w; x++)
             rt_fb_expand(s->format, src, x, dst + 3 * x);
     }
     if (hs->progress)
-        fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1) / hs->img.height));
+        fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1 - hs->vp.y) / hs->img.height));
     fb_flush_ready(s); /* synchronous: the band is free again */
     return 0;
 }
@@ -185,7 +190,7 @@ static void print_usage(void)
 }
 
 enum {
-    OPT_SIZE = 256, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -193,6 +198,7 @@ enum {
 static const struct option render_options[] = {
     { "output", required_argument, NULL, 'o' },
     { "size", required_argument, NULL, OPT_SIZE },
+    { "viewport", required_argument, NULL, OPT_VIEWPORT },
 #define BACKEND_OPTION(id, name, what) { name, no_argument, NULL, OPT_BACKEND + BACKEND_INDEX_##id },
     RT_HOST_BACKENDS(BACKEND_OPTION)
 #undef BACKEND_OPTION
@@ -208,7 +214,7 @@ static const struct option render_options[] = {
 };
 
 static const host_option_need_t render_needs[] = {
-    { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_DEPTH, "a number" },
+    { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
     { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
 };
 
@@ -254,6 +260,22 @@ static int cmd_render(int argc, char **argv)
                 return render_usage_error("--size: expected WxH within the configured maximum, got '%s'", optarg);
             opts.width = (uint16_t)w;
             opts.height = (uint16_t)h;
+            break;
+        }
+        case OPT_VIEWPORT: {
+            long v[4];
+            char buf[64];
+            if (strlen(optarg) >= sizeof buf)
+                return render_usage_error("--viewport: expected X,Y,W,H, got '%s'", optarg);
+            strcpy(buf, optarg);
+            char *save = NULL, *tok = strtok_r(buf, ",", &save);
+            int n = 0;
+            for (; tok && n < 4; tok = strtok_r(NULL, ",", &save), n++)
+                if (!parse_uint(tok, n < 2 ? 0 : 1, 65535, &v[n]))
+                    break;
+            if (n != 4 || tok)
+                return render_usage_error("--viewport: expected X,Y,W,H (W, H >= 1), got '%s'", optarg);
+            opts.viewport = (rt_viewport_t){ (uint16_t)v[0], (uint16_t)v[1], (uint16_t)v[2], (uint16_t)v[3] };
             break;
         }
         case OPT_DEPTH: {
@@ -362,6 +384,7 @@ static int cmd_render(int argc, char **argv)
                            .begin = host_begin,
                            .flush = host_flush,
                            .user = &hs };
+    hs.vp = opts.viewport;
     hs.progress = !quiet && isatty(2);
     rt_stats_t st = { 0 };
     double t0 = now_seconds();
