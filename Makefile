@@ -148,7 +148,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec
-TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/rt \
+TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
 
 test: deps
@@ -188,9 +188,9 @@ build/fuzz/fuzz_scenec: tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_
 	    tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC)
 
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
-                         platform/hosted/image.h Makefile
+                         platform/hosted/image.h src/fb.h Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iplatform/hosted -o $@ \
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Isrc -Iplatform/hosted -o $@ \
 	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz
 
 fuzz: deps build/fuzz/$(FUZZER)

@@ -4,18 +4,54 @@
 #include "camera.h"
 #include "trace.h"
 
-static void put_pixel(uint8_t *px, fb_format_t f, colour_t c)
+/* RT_FB_ONLY_FORMAT (a build flag, e.g. the board's): the one format the
+ * build packs; the packer's switch folds to that case. */
+#ifdef RT_FB_ONLY_FORMAT
+#define PIXEL_FORMAT(f) ((void)(f), (fb_format_t)(RT_FB_ONLY_FORMAT))
+#else
+#define PIXEL_FORMAT(f) (f)
+#endif
+
+/* Pixel x of a line in format f: the one packer of every format (fb.h). */
+static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, fb_format_t f, colour_t c)
 {
-    uint8_t r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
-    if (f == FB_RGB565) {
-        uint16_t w = (uint16_t)(((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 |
-                                ((b * 31u + 127u) / 255u));
-        px[0] = (uint8_t)(w & 0xFF);
+    unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
+    unsigned w, l;
+    uint8_t *px;
+    switch (PIXEL_FORMAT(f)) {
+    case RT_FB_RGB888:
+        px = line + 3u * x;
+        px[0] = (uint8_t)r;
+        px[1] = (uint8_t)g;
+        px[2] = (uint8_t)b;
+        break;
+    case RT_FB_XRGB8888:
+        px = line + 4u * x;
+        px[0] = (uint8_t)b;
+        px[1] = (uint8_t)g;
+        px[2] = (uint8_t)r;
+        px[3] = 0;
+        break;
+    case RT_FB_RGB565:
+    case RT_FB_RGB565BE:
+        px = line + 2u * x;
+        w = ((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 | ((b * 31u + 127u) / 255u);
+        if (PIXEL_FORMAT(f) == RT_FB_RGB565BE)
+            w = (w >> 8 | w << 8) & 0xFFFFu;
+        px[0] = (uint8_t)w;
         px[1] = (uint8_t)(w >> 8);
-    } else {
-        px[0] = r;
-        px[1] = g;
-        px[2] = b;
+        break;
+    default: /* RT_FB_L8, RT_FB_L4 */
+        l = (77u * r + 150u * g + 29u * b + 128u) >> 8;
+        if (PIXEL_FORMAT(f) == RT_FB_L8) {
+            line[x] = (uint8_t)l;
+        } else {
+            l = (l * 15u + 127u) / 255u;
+            px = line + (x >> 1);
+            /* the left pixel's write clears the right one's nibble */
+            *px = x & 1u ? (uint8_t)(*px | l) : (uint8_t)(l << 4);
+        }
+        break;
     }
 }
 
@@ -27,38 +63,50 @@ static void wait_flushed(fb_sink_t *sink)
     }
 }
 
-static void flush_band(fb_sink_t *sink, unsigned *cur, uint16_t w, uint16_t y1, uint16_t y2)
+/* Lines y1..y2 of the band to the sink. Its status: 0, or its failure
+ * (then no flush is in flight). */
+static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
 {
-    fb_area_t area = { 0, y1, (uint16_t)(w - 1), y2 };
+    fb_sink_t *sink = ctx->sink;
+    fb_area_t area = { ctx->x0, ctx->band_y, (uint16_t)(ctx->x0 + ctx->w - 1), y2 };
     wait_flushed(sink); /* the other buffer's flush */
     sink->flushing = true;
-    sink->flush(sink, &area, sink->band[*cur]);
+    int status = sink->flush(sink, &area, sink->band[ctx->cur]);
+    if (status != 0) {
+        sink->flushing = false;
+        return status;
+    }
     if (sink->band[1])
-        *cur ^= 1u;
+        ctx->cur ^= 1u;
     else
         wait_flushed(sink);
+    ctx->band_y = (uint16_t)(y2 + 1);
+    return 0;
 }
 
+static camera_t cam; /* static: one render at a time; keeps the stack small */
+static tracer_t tr;  /* likewise */
+
 #if RT_USE_SPD
-/* One row of SPD corner samples (w + 1 of them). */
-static void corner_row(const tracer_t *tr, const camera_t *cam, int32_t j, uint16_t w, colour_t *row)
+/* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
+static void corner_row(int32_t j, uint16_t x0, uint16_t w, colour_t *row)
 {
     for (int32_t i = 0; i <= w; i++) {
-        ray_t ray = camera_ray(cam, i, j);
-        tr->stats->eye_rays++;
-        row[i] = trace_ray(tr, &ray, 1, R_ONE);
+        ray_t ray = camera_ray(&cam, x0 + i, j);
+        tr.stats->eye_rays++;
+        row[i] = trace_ray(&tr, &ray, 1, R_ONE);
     }
 }
 
 /* Line y of an SPD frame: each pixel the mean of its four corners;
  * rows[0] holds the corners above the line, rows[1] gets those below. */
-static void spd_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16_t w, colour_t *rows[2],
-                     uint8_t *line, fb_format_t f)
+static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
-    corner_row(tr, cam, y + 1, w, rows[1]);
-    for (uint16_t x = 0; x < w; x++) {
+    colour_t **rows = ctx->rows;
+    corner_row(y + 1, ctx->x0, ctx->w, rows[1]);
+    for (uint16_t x = 0; x < ctx->w; x++) {
         colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
-        put_pixel(line + x * fb_bytes_per_pixel(f), f, v3_scale(sum, R_RATIO(1, 4)));
+        put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)));
     }
     colour_t *t = rows[0];
     rows[0] = rows[1];
@@ -67,22 +115,26 @@ static void spd_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16
 #endif
 
 /* Line y of a normal frame: one eye ray per pixel. */
-static void plain_line(const tracer_t *tr, const camera_t *cam, uint16_t y, uint16_t w, uint8_t *line,
-                       fb_format_t f)
+static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
-    for (uint16_t x = 0; x < w; x++) {
-        ray_t ray = camera_ray(cam, x, y);
-        tr->stats->eye_rays++;
-        put_pixel(line + x * fb_bytes_per_pixel(f), f, trace_ray(tr, &ray, 1, R_ONE));
+    for (uint16_t x = 0; x < ctx->w; x++) {
+        ray_t ray = camera_ray(&cam, ctx->x0 + x, y);
+        tr.stats->eye_rays++;
+        put_pixel(line, x, ctx->sink->format, trace_ray(&tr, &ray, 1, R_ONE));
     }
 }
 
-RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
-              rt_error_t *err)
+/* The bodies of rt_render_begin, _step and _end, inlined into them and
+ * into rt_render: a build that only calls rt_render (the board) links one
+ * function, as small as a single loop. */
+static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts,
+                                  fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     uint16_t w = opts->width ? opts->width : sc->width;
     uint16_t h = opts->height ? opts->height : sc->height;
     int depth = opts->max_depth ? opts->max_depth : RT_MAX_DEPTH;
+    ctx->sink = sink;
+    ctx->y = ctx->y_end = 0; /* done, should the caller step after a failure */
     if (w == 0 || h == 0 || w > RT_MAX_WIDTH || h > RT_MAX_HEIGHT) {
         rt_error_set(err, 0, "image size must be 1x1 to ");
         rt_error_append_int(err, RT_MAX_WIDTH);
@@ -95,30 +147,47 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
         rt_error_append_int(err, RT_MAX_DEPTH);
         return -1;
     }
-    size_t bpp = fb_bytes_per_pixel(sink->format);
-    size_t line_bytes = (size_t)w * bpp;
-    size_t band_lines = sink->band_bytes / line_bytes;
-    if (band_lines == 0 || sink->band[0] == 0) {
+    rt_viewport_t vp = opts->viewport;
+    if (vp.w == 0 && vp.h == 0)
+        vp = (rt_viewport_t){ 0, 0, w, h };
+    if (vp.w == 0 || vp.h == 0 || vp.x >= w || vp.y >= h || vp.w > w - vp.x || vp.h > h - vp.y) {
+        rt_error_set(err, 0, "viewport outside the frame");
+        return -1;
+    }
+    size_t line_bytes = RT_FB_LINE_BYTES(PIXEL_FORMAT(sink->format), vp.w);
+#ifdef RT_FB_ONLY_FORMAT
+    if (sink->format != RT_FB_ONLY_FORMAT) /* the one format packed (line_bytes is not 0) */
+#else
+    if (line_bytes == 0) /* not a format */
+#endif
+    {
+        rt_error_set(err, 0, "pixel format not built in");
+        return -1;
+    }
+    size_t pitch = sink->pitch ? sink->pitch : line_bytes;
+    size_t band_lines = sink->band_bytes / pitch;
+    if (pitch < line_bytes || band_lines == 0 || sink->band[0] == 0) {
         rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
         return -1;
     }
+    ctx->pitch = pitch;
+    ctx->band_lines = band_lines;
 #if !RT_USE_SPD
     if (opts->spd) {
         rt_error_set(err, 0, "SPD mode is not compiled in (RT_USE_SPD = 0)");
         return -1;
     }
 #else
-    colour_t *rows[2] = { 0, 0 };
+    ctx->spd = opts->spd;
     if (opts->spd) {
-        if (opts->scratch == 0 || opts->scratch_bytes < RENDER_SPD_SCRATCH(w)) {
+        if (opts->scratch == 0 || opts->scratch_bytes < RENDER_SPD_SCRATCH(vp.w)) {
             rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
             return -1;
         }
-        rows[0] = opts->scratch;
-        rows[1] = rows[0] + w + 1;
+        ctx->rows[0] = opts->scratch;
+        ctx->rows[1] = ctx->rows[0] + vp.w + 1;
     }
 #endif
-    static camera_t cam; /* static: one render at a time; keeps the stack small */
     int32_t nx = w, ny = h;
 #if RT_USE_SPD
     if (opts->spd) { /* a grid of corners, one more each way */
@@ -133,32 +202,73 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
     }
     if (sc->n_bvh_nodes > 0)
         camera_start_at_bounds(&cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
-    static tracer_t tr; /* static like cam */
+    static rt_stats_t no_stats; /* stats == NULL: counted here, unread */
+    if (stats == 0)
+        stats = &no_stats;
     tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;
     if (status != 0)
         return status;
+    ctx->x0 = vp.x;
+    ctx->w = vp.w;
+    ctx->y = ctx->band_y = vp.y;
+    ctx->y_end = (uint16_t)(vp.y + vp.h);
+    ctx->cur = 0;
 #if RT_USE_SPD
     if (opts->spd)
-        corner_row(&tr, &cam, 0, w, rows[0]);
+        corner_row(vp.y, vp.x, vp.w, ctx->rows[0]);
 #endif
-    unsigned cur = 0;
-    uint16_t band_y = 0;
-    for (uint16_t y = 0; y < h; y++) {
-        uint8_t *line = sink->band[cur] + (size_t)(y - band_y) * line_bytes;
+    return 0;
+}
+
+static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
+{
+    fb_sink_t *sink = ctx->sink;
+    for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
+        uint16_t y = ctx->y++;
+        uint8_t *line = sink->band[ctx->cur] + (size_t)(y - ctx->band_y) * ctx->pitch;
 #if RT_USE_SPD
-        if (opts->spd)
-            spd_line(&tr, &cam, y, w, rows, line, sink->format);
+        if (ctx->spd)
+            spd_line(ctx, y, line);
         else
 #endif
-            plain_line(&tr, &cam, y, w, line, sink->format);
-        if ((size_t)(y - band_y + 1) == band_lines || y + 1 == h) {
-            flush_band(sink, &cur, w, band_y, y);
-            band_y = (uint16_t)(y + 1);
+            plain_line(ctx, y, line);
+        if ((size_t)(y - ctx->band_y + 1) == ctx->band_lines || ctx->y == ctx->y_end) {
+            int status = flush_band(ctx, y);
+            if (status != 0) {
+                ctx->y_end = ctx->y; /* done: nothing more to render */
+                return status;
+            }
         }
     }
-    wait_flushed(sink);
-    return sink->end ? sink->end(sink) : 0;
+    return 0;
 }
+
+static RT_INLINE int render_end(rt_render_ctx_t *ctx)
+{
+    wait_flushed(ctx->sink);
+    return ctx->sink->end ? ctx->sink->end(ctx->sink) : 0;
+}
+
+RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
+                      rt_error_t *err)
+{
+    rt_render_ctx_t ctx;
+    int status = render_begin(&ctx, sc, opts, sink, stats, err);
+    if (status != 0)
+        return status;
+    status = render_step(&ctx, 0xFFFF);
+    return status != 0 ? status : render_end(&ctx);
+}
+
+RT_COLD int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink,
+                            rt_stats_t *stats, rt_error_t *err)
+{
+    return render_begin(ctx, sc, opts, sink, stats, err);
+}
+
+RT_COLD int rt_render_step(rt_render_ctx_t *ctx, uint16_t lines) { return render_step(ctx, lines); }
+
+RT_COLD int rt_render_end(rt_render_ctx_t *ctx) { return render_end(ctx); }

@@ -7,8 +7,18 @@
 #include "scene.h"
 #include "rt_stats.h"
 
+/* A rectangle of the frame, in frame pixels (as LVGL's lv_area_t, but
+ * origin and size). w = h = 0: the whole frame. */
+typedef struct {
+    uint16_t x, y, w, h;
+} rt_viewport_t;
+
 typedef struct {
     uint16_t width, height; /* 0: the scene's resolution */
+    /* Only these pixels are rendered and flushed, each the same as in the
+     * whole frame (SPD mode included); the sink's areas are in frame
+     * coordinates and its buffer lines hold the viewport's columns. */
+    rt_viewport_t viewport;
     uint8_t max_depth;      /* 0: RT_MAX_DEPTH */
     /* Adaptive depth: a child ray whose share of the pixel (product of
      * Ks and T along its path) is below adaptive_milli / 1000 is not
@@ -16,7 +26,8 @@ typedef struct {
     uint16_t adaptive_milli;
     /* SPD mode: (W+1) x (H+1) corner rays, each pixel the mean of its four
      * corners, and SPD rule 8. Needs `scratch` for two rows of corner
-     * colours: at least RENDER_SPD_SCRATCH(width) bytes. */
+     * colours: at least RENDER_SPD_SCRATCH(width) bytes (the viewport's
+     * width if one is set). */
     bool spd;
     void *scratch;
     size_t scratch_bytes;
@@ -24,8 +35,43 @@ typedef struct {
 
 #define RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * sizeof(colour_t))
 
-/* 0 on success; a sink's non-zero status, or -1 with *err set. */
+/* The whole frame (or opts->viewport) in one call: 0 on success; a sink's
+ * non-zero status (begin or flush; end() is then not called), or -1 with
+ * *err set. stats may be NULL. One render at a time (the camera and
+ * tracer state are static). */
 int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err);
+
+/* The same in steps, for a caller with other work between them (a UI
+ * loop, a watchdog): the caller owns the context, nothing is allocated.
+ *
+ *     rt_render_ctx_t ctx;
+ *     int st = rt_render_begin(&ctx, sc, &opts, &sink, NULL, &err);
+ *     while (st == 0 && !rt_render_done(&ctx))
+ *         st = rt_render_step(&ctx, 4);      (up to 4 lines, then return)
+ *     if (st == 0)
+ *         st = rt_render_end(&ctx);          (waits for the last flush, end())
+ *
+ * begin checks the options and calls the sink's begin(): 0, -1 with *err
+ * set, or the sink's status. step renders up to `lines` lines, flushing
+ * each band as it fills: 0, or a flush's non-zero status (the frame is
+ * then over: rt_render_done, and end() is not to be called). end waits for
+ * the flushes in flight and returns the sink's end() status. The pixels
+ * are the same however the frame is stepped. */
+typedef struct {
+    fb_sink_t *sink;
+    size_t pitch, band_lines;
+    uint16_t x0, w;            /* the viewport's columns */
+    uint16_t y, y_end, band_y; /* next line, end, first line of the band */
+    unsigned cur;              /* the band buffer being filled */
+    bool spd;
+    colour_t *rows[2];         /* SPD corner rows */
+} rt_render_ctx_t;
+
+int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink,
+                    rt_stats_t *stats, rt_error_t *err);
+int rt_render_step(rt_render_ctx_t *ctx, uint16_t lines);
+int rt_render_end(rt_render_ctx_t *ctx);
+static inline bool rt_render_done(const rt_render_ctx_t *ctx) { return ctx->y >= ctx->y_end; }
 
 #endif

@@ -58,15 +58,38 @@ for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
     fi
 done
 
-# The RGB565 framebuffer path on the board against the host's.
-d=build/board/rings-1-48x32-d3-rgb565
-if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=48x32 DEPTH=3 FORMAT=rgb565 >"$OUT/565.build" 2>&1 &&
-   platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/565-board.png" "$RT" >"$OUT/565.report" 2>&1 &&
-   "$RT" scenes/spd/rings-1.nff -o "$OUT/565-host.png" --size 48x32 --depth 3 --format rgb565 --quiet &&
-   cmp=$("$RT" compare "$OUT/565-board.png" "$OUT/565-host.png" --max-error 0); then
-    ok "rings-1 rgb565 48x32: board == host fixed ($cmp)"
+# The packed framebuffer formats on the board against the host's
+# (rgb565be: 16-bit byte-swapped; l4: two pixels per byte, and at an odd
+# width the last byte of every line keeps its low nibble 0).
+for case in rgb565:48x32 rgb565be:48x32 l4:48x32 l4:47x31; do
+    fmt=${case%%:*} size=${case#*:}
+    d=build/board/rings-1-$size-d3-$fmt
+    if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=$size DEPTH=3 FORMAT=$fmt >"$OUT/$fmt-$size.build" 2>&1 &&
+       platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$fmt-$size-board.png" "$RT" >"$OUT/$fmt-$size.report" 2>&1 &&
+       "$RT" scenes/spd/rings-1.nff -o "$OUT/$fmt-$size-host.png" --size $size --depth 3 --format $fmt --quiet &&
+       cmp=$("$RT" compare "$OUT/$fmt-$size-board.png" "$OUT/$fmt-$size-host.png" --max-error 0); then
+        ok "rings-1 $fmt $size: board == host fixed ($cmp)"
+    else
+        bad "rings-1 $fmt $size: board and host differ or failed"
+    fi
+done
+# the odd-width L4 stream: every line's last byte has a zero low nibble
+if python3 -c '
+import sys
+d = open(sys.argv[1], "rb").read()
+i = d.find(b"RTF1"); w = d[i+5] | d[i+6] << 8; h = d[i+7] | d[i+8] << 8
+assert d[i+4] == 5 and w % 2 == 1
+lb = (w + 1) // 2; j = i + 9; rows = 0
+while d[j:j+1] == b"B":
+    n = d[j+3] | d[j+4] << 8
+    for r in range(n):
+        assert d[j + 5 + r * lb + lb - 1] & 15 == 0
+    rows += n; j += 5 + n * lb + 4
+assert rows == h
+' build/board/rings-1-47x31-d3-l4/fixed.stream 2>"$OUT/l4-pad.err"; then
+    ok "l4 at width 47: the last nibble of every line in the stream is 0"
 else
-    bad "rings-1 rgb565 48x32: board and host differ or failed"
+    bad "l4 at width 47: padding nibble not 0 or stream unreadable: $(tail -1 "$OUT/l4-pad.err")"
 fi
 
 # Linked-symbol checks on the default scene's firmware (and, as a control

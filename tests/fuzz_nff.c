@@ -24,11 +24,12 @@ static int begin(fb_sink_t *s, uint16_t w, uint16_t h)
     return (w == 8 && h == 8) ? 0 : 1;
 }
 
-static void flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
 {
     (void)a;
     (void)px;
     fb_flush_ready(s);
+    return 0;
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)

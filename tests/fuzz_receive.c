@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fb.h"
 #include "uart_stream.h"
 
 typedef struct {
@@ -52,7 +53,7 @@ static int decode(const uint8_t *data, size_t size, size_t chunk, int live, rx_r
     rx_source_t src = { mem_read, text, &m, MAX_PIXELS };
     int rc = rx_frame(&src, res);
     if (rc == 0) {
-        if (!res->img.rgb || res->img.width < 1 || res->img.height < 1 || res->format > 1 ||
+        if (!res->img.rgb || res->img.width < 1 || res->img.height < 1 || res->format >= RT_FB_N_FORMATS ||
             (uint64_t)res->img.width * (uint64_t)res->img.height > MAX_PIXELS || res->offset > size ||
             res->skipped > res->offset || res->error[0] != '\0')
             abort();

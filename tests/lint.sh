@@ -37,7 +37,7 @@ check "platform/hosted/backend.c (double, fixed tolerances)" $HOSTED $DOUBLE -DR
 # comparison builds), and main.c's RGB565 framebuffer.
 BOARD="-Isrc -Iplatform/mps2-an385 -DBOARD_WIDTH=64 -DBOARD_HEIGHT=64 -DBOARD_DEPTH=5 -DRT_USE_SPD=0"
 check "platform/mps2-an385/ (fixed)" $BOARD platform/mps2-an385/
-check "platform/mps2-an385/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=FB_RGB565 platform/mps2-an385/main.c
+check "platform/mps2-an385/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=RT_FB_RGB565 platform/mps2-an385/main.c
 check "platform/mps2-an385/ (double)" $BOARD $DOUBLE platform/mps2-an385/
 check "platform/mps2-an385/ (float)" $BOARD $FLOAT platform/mps2-an385/
 

@@ -66,6 +66,16 @@ static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
     return rt_render(&store.scene, opts, sink, stats, err);
 }
 
+static int render_steps(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
+                        uint16_t lines)
+{
+    rt_render_ctx_t ctx;
+    int status = rt_render_begin(&ctx, &store.scene, opts, sink, stats, err);
+    while (status == 0 && !rt_render_done(&ctx))
+        status = rt_render_step(&ctx, lines);
+    return status != 0 ? status : rt_render_end(&ctx);
+}
+
 /* World units per scene unit: the reader scaled positions by 2^scale_log2. */
 static double world_per_unit(void)
 {
@@ -137,6 +147,6 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, rt_stats_each, probe,
+    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, probe,
     bounds, eye_dir,
 };

@@ -41,6 +41,9 @@ typedef struct {
 
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
+    /* The same through rt_render_begin / rt_render_step(lines) / rt_render_end. */
+    int (*render_steps)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
+                        uint16_t lines);
     /* rt_stats_each (stats.h): the counters by key. */
     void (*stats_each)(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
     /* Nearest hit of one ray against the loaded scene (for tests), through

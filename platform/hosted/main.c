@@ -29,7 +29,10 @@ static const char usage_text[] =
     "  --size WxH          image size (default: the scene's resolution)\n"
     "%s" /* the backends */
     "  --depth N           maximum ray-tree depth, 1..%d (default %d)\n"
-    "  --format F          framebuffer pixel format: rgb888 (default) or rgb565\n"
+    "  --viewport X,Y,W,H  render only that rectangle of the frame; the output\n"
+    "                      image is the rectangle (pixels as in the whole frame)\n"
+    "  --format F          framebuffer pixel format: %s\n"
+    "                      (the first is the default; written expanded to RGB)\n"
     "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
     "                      BVH shape and render time on stderr: 'key value' lines\n"
     "                      (text, the default) or one JSON object (json)\n"
@@ -85,43 +88,38 @@ static bool parse_double(const char *s, double *out)
 
 typedef struct {
     fb_sink_t sink;
-    image_t img;
+    image_t img;           /* the viewport (by default the whole frame) */
+    rt_viewport_t vp;
     bool progress;
-    uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 3];
-    uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 3];
+    uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
+    uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
 } host_sink_t;
 
 static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
 {
     host_sink_t *hs = s->user;
-    hs->img.width = w;
-    hs->img.height = h;
-    hs->img.rgb = malloc((size_t)w * h * 3);
+    if (hs->vp.w == 0)
+        hs->vp = (rt_viewport_t){ 0, 0, w, h };
+    hs->img.width = hs->vp.w;
+    hs->img.height = hs->vp.h;
+    hs->img.rgb = malloc((size_t)hs->vp.w * hs->vp.h * 3);
     return hs->img.rgb ? 0 : 1;
 }
 
-static void host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
 {
     host_sink_t *hs = s->user;
     size_t w = (size_t)hs->img.width;
     for (unsigned y = a->y1; y <= a->y2; y++) {
-        uint8_t *dst = hs->img.rgb + (size_t)y * w * 3;
-        const uint8_t *src = px + (size_t)(y - a->y1) * w * fb_bytes_per_pixel(s->format);
-        if (s->format == FB_RGB888) {
-            memcpy(dst, src, w * 3);
-        } else {
-            for (size_t x = 0; x < w; x++) {
-                unsigned v = (unsigned)src[2 * x] | (unsigned)src[2 * x + 1] << 8;
-                unsigned r = v >> 11, g = (v >> 5) & 63, b = v & 31;
-                dst[3 * x] = (uint8_t)((r * 255 + 15) / 31);
-                dst[3 * x + 1] = (uint8_t)((g * 255 + 31) / 63);
-                dst[3 * x + 2] = (uint8_t)((b * 255 + 15) / 31);
-            }
-        }
+        uint8_t *dst = hs->img.rgb + (size_t)(y - hs->vp.y) * w * 3;
+        const uint8_t *src = px + (size_t)(y - a->y1) * RT_FB_LINE_BYTES(s->format, w);
+        for (size_t x = 0; x < w; x++)
+            rt_fb_expand(s->format, src, x, dst + 3 * x);
     }
     if (hs->progress)
-        fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1) / hs->img.height));
+        fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1 - hs->vp.y) / hs->img.height));
     fb_flush_ready(s); /* synchronous: the band is free again */
+    return 0;
 }
 
 static double now_seconds(void)
@@ -168,6 +166,19 @@ static const char *backend_name(const rt_backend_t *be)
     return "?";
 }
 
+/* The pixel formats, from the one list (fb.h). */
+static const struct {
+    const char *name;
+    fb_format_t format;
+} formats[] = {
+#define FORMAT_ROW(id, name, value, bits) { name, id },
+    RT_FB_FORMATS(FORMAT_ROW)
+#undef FORMAT_ROW
+};
+#define FORMAT_NAMES_(id, name, value, bits) name " "
+static const char format_list[] = RT_FB_FORMATS(FORMAT_NAMES_);
+#undef FORMAT_NAMES_
+
 static void print_usage(void)
 {
     char lines[1024] = "";
@@ -175,11 +186,11 @@ static void print_usage(void)
     for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
         used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
                                  backends[i].what);
-    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH);
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list);
 }
 
 enum {
-    OPT_SIZE = 256, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -187,6 +198,7 @@ enum {
 static const struct option render_options[] = {
     { "output", required_argument, NULL, 'o' },
     { "size", required_argument, NULL, OPT_SIZE },
+    { "viewport", required_argument, NULL, OPT_VIEWPORT },
 #define BACKEND_OPTION(id, name, what) { name, no_argument, NULL, OPT_BACKEND + BACKEND_INDEX_##id },
     RT_HOST_BACKENDS(BACKEND_OPTION)
 #undef BACKEND_OPTION
@@ -202,8 +214,8 @@ static const struct option render_options[] = {
 };
 
 static const host_option_need_t render_needs[] = {
-    { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_DEPTH, "a number" },
-    { OPT_FORMAT, "rgb888 or rgb565" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
+    { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
+    { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
 };
 
 #define RENDER_HELP "rt --help"
@@ -250,6 +262,22 @@ static int cmd_render(int argc, char **argv)
             opts.height = (uint16_t)h;
             break;
         }
+        case OPT_VIEWPORT: {
+            long v[4];
+            char buf[64];
+            if (strlen(optarg) >= sizeof buf)
+                return render_usage_error("--viewport: expected X,Y,W,H, got '%s'", optarg);
+            strcpy(buf, optarg);
+            char *save = NULL, *tok = strtok_r(buf, ",", &save);
+            int n = 0;
+            for (; tok && n < 4; tok = strtok_r(NULL, ",", &save), n++)
+                if (!parse_uint(tok, n < 2 ? 0 : 1, 65535, &v[n]))
+                    break;
+            if (n != 4 || tok)
+                return render_usage_error("--viewport: expected X,Y,W,H (W, H >= 1), got '%s'", optarg);
+            opts.viewport = (rt_viewport_t){ (uint16_t)v[0], (uint16_t)v[1], (uint16_t)v[2], (uint16_t)v[3] };
+            break;
+        }
         case OPT_DEPTH: {
             long d;
             if (!parse_uint(optarg, 1, RT_MAX_DEPTH, &d))
@@ -257,14 +285,18 @@ static int cmd_render(int argc, char **argv)
             opts.max_depth = (uint8_t)d;
             break;
         }
-        case OPT_FORMAT:
-            if (!strcmp(optarg, "rgb888"))
-                format = FB_RGB888;
-            else if (!strcmp(optarg, "rgb565"))
-                format = FB_RGB565;
-            else
-                return render_usage_error("--format: expected rgb888 or rgb565, got '%s'", optarg);
+        case OPT_FORMAT: {
+            size_t i = 0;
+            while (i < sizeof formats / sizeof formats[0] && strcmp(optarg, formats[i].name) != 0)
+                i++;
+            if (i == sizeof formats / sizeof formats[0]) {
+                char msg[160];
+                snprintf(msg, sizeof msg, "--format: expected one of: %sgot '%%s'", format_list);
+                return render_usage_error(msg, optarg);
+            }
+            format = formats[i].format;
             break;
+        }
         case OPT_STATS:
             if (optarg && !strcmp(optarg, "json"))
                 stats_format = REPORT_JSON;
@@ -352,6 +384,7 @@ static int cmd_render(int argc, char **argv)
                            .begin = host_begin,
                            .flush = host_flush,
                            .user = &hs };
+    hs.vp = opts.viewport;
     hs.progress = !quiet && isatty(2);
     rt_stats_t st = { 0 };
     double t0 = now_seconds();

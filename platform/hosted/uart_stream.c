@@ -9,6 +9,8 @@
 #include <string.h>
 #include <zlib.h>
 
+#include "fb.h"
+
 typedef struct {
     const rx_source_t *src;
     rx_result_t *res;
@@ -97,7 +99,7 @@ static void emit_text(rx_t *r, size_t len)
 /* Before the frame: is the 'T' at the current byte a report line? Its
  * text must be printable, which a 'T' inside noise or boot text rarely
  * is for long, and a text that ran over the frame header never is (the
- * header's format byte is 0 or 1). */
+ * header's format byte is a small number, RT_FB_FORMATS in fb.h). */
 static bool plausible_text(rx_t *r, size_t *len)
 {
     if (!need(r, 3))
@@ -117,7 +119,7 @@ static bool plausible_text(rx_t *r, size_t *len)
 }
 
 /* One band record at the current byte; lines_done counts the rows so far. */
-static int band(rx_t *r, image_t *img, unsigned bpp, unsigned *lines_done, uLong *frame_adler)
+static int band(rx_t *r, image_t *img, fb_format_t fmt, unsigned *lines_done, uLong *frame_adler)
 {
     if (!need(r, 5))
         return fail(r, "stream truncated in a band header");
@@ -125,23 +127,18 @@ static int band(rx_t *r, image_t *img, unsigned bpp, unsigned *lines_done, uLong
     if (y != *lines_done || n == 0 || y + n > (unsigned)img->height)
         return fail(r, "band out of order or out of the frame (rows %u..%u of %d, %u received)", y, y + n,
                     img->height, *lines_done);
-    size_t bytes = (size_t)n * (size_t)img->width * bpp;
+    size_t line_bytes = RT_FB_LINE_BYTES(fmt, img->width);
+    size_t bytes = (size_t)n * line_bytes;
     if (!need(r, 5 + bytes + 4))
         return fail(r, "stream truncated in a band");
     const uint8_t *px = at(r) + 5;
     if (adler32(adler32(0L, Z_NULL, 0), px, (uInt)bytes) != u32(px + bytes))
         return fail(r, "band checksum mismatch (rows %u..%u)", y, y + n - 1);
     *frame_adler = adler32(*frame_adler, px, (uInt)bytes);
-    for (size_t i = 0; i < (size_t)n * (size_t)img->width; i++) {
-        uint8_t *dst = img->rgb + ((size_t)y * (size_t)img->width + i) * 3;
-        if (bpp == 3) {
-            memcpy(dst, px + 3 * i, 3);
-        } else {
-            unsigned v = u16(px + 2 * i);
-            dst[0] = (uint8_t)(((v >> 11) * 255 + 15) / 31);
-            dst[1] = (uint8_t)((((v >> 5) & 63) * 255 + 31) / 63);
-            dst[2] = (uint8_t)(((v & 31) * 255 + 15) / 31);
-        }
+    for (size_t l = 0; l < n; l++) {
+        uint8_t *dst = img->rgb + ((size_t)y + l) * (size_t)img->width * 3;
+        for (size_t x = 0; x < (size_t)img->width; x++)
+            rt_fb_expand(fmt, px + l * line_bytes, x, dst + 3 * x);
     }
     *lines_done += n;
     consume(r, 5 + bytes + 4);
@@ -173,10 +170,9 @@ static int decode(rx_t *r)
     const uint8_t *h = at(r);
     unsigned fmt = h[4], w = u16(h + 5), ht = u16(h + 7);
     uint32_t max_pixels = r->src->max_pixels ? r->src->max_pixels : (uint32_t)RX_MAX_DIM * RX_MAX_DIM;
-    if (fmt > 1 || w == 0 || ht == 0 || w > RX_MAX_DIM || ht > RX_MAX_DIM || (uint64_t)w * ht > max_pixels)
+    if (fmt >= RT_FB_N_FORMATS || w == 0 || ht == 0 || w > RX_MAX_DIM || ht > RX_MAX_DIM || (uint64_t)w * ht > max_pixels)
         return fail(r, "bad frame header (format %u, %ux%u)", fmt, w, ht);
     res->format = fmt;
-    unsigned bpp = fmt == 1 ? 2 : 3;
     img->rgb = calloc((size_t)w * ht, 3);
     if (!img->rgb)
         return fail(r, "out of memory for a %ux%u frame", w, ht);
@@ -197,7 +193,7 @@ static int decode(rx_t *r)
             emit_text(r, u16(at(r) + 1));
             break;
         case 'B':
-            if (band(r, img, bpp, &lines_done, &frame_adler) != 0)
+            if (band(r, img, (fb_format_t)fmt, &lines_done, &frame_adler) != 0)
                 return -1;
             break;
         case 'E':

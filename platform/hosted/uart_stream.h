@@ -32,8 +32,8 @@ typedef struct {
 } rx_source_t;
 
 typedef struct {
-    image_t img;           /* the frame as 8-bit RGB (RGB565 expanded) */
-    unsigned format;       /* the frame's pixel format: 0 RGB888, 1 RGB565 */
+    image_t img;           /* the frame as 8-bit RGB (expanded by rt_fb_expand) */
+    unsigned format;       /* the frame's pixel format (fb_format_t, fb.h) */
     unsigned long skipped; /* noise bytes skipped before the frame header */
     unsigned long offset;  /* bytes consumed */
     char error[160];       /* why it failed: "what (at byte N)" */

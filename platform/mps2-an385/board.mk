@@ -21,7 +21,8 @@ BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
 
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
-FMT_MACRO := $(if $(filter rgb565,$(FORMAT)),FB_RGB565,FB_RGB888)
+# FORMAT: a name of RT_FB_FORMATS (src/fb.h), lower case: rgb888 -> RT_FB_RGB888.
+FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # PRUNE=1 (default): code for primitive kinds and shading features the
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
 PRUNE ?= 1
@@ -36,7 +37,7 @@ ARM_ARCH = -mcpu=cortex-m3 -mthumb
 BOARD_CFLAGS = $(WARN) -ffreestanding $(ARM_ARCH) -O2 -g -ffunction-sections -fdata-sections \
                -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
                $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-               -DBOARD_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(CFG_FLAGS) -include $(FW_DIR)/scene_data.h \
+               -DBOARD_FORMAT=$(FMT_MACRO) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(CFG_FLAGS) -include $(FW_DIR)/scene_data.h \
                -Isrc -I$(BOARD_DIR) -I$(FW_DIR)
 BOARD_LDFLAGS = $(ARM_ARCH) -nostdlib -nostartfiles -T linker/mps2-an385.ld -Wl,--gc-sections
 

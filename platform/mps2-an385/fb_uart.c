@@ -4,7 +4,7 @@
 #include "board.h"
 
 static uint32_t frame_adler;
-static uint16_t frame_width;
+static size_t frame_line_bytes;
 static uint64_t io_instructions;
 
 static uint32_t adler32(uint32_t adler, const uint8_t *p, size_t n)
@@ -41,16 +41,20 @@ static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     put_u16(hdr + 7, h);
     uart_write(hdr, sizeof hdr);
     frame_adler = 1;
-    frame_width = w;
+#ifdef RT_FB_ONLY_FORMAT
+    frame_line_bytes = RT_FB_LINE_BYTES(RT_FB_ONLY_FORMAT, w); /* the build's one format */
+#else
+    frame_line_bytes = RT_FB_LINE_BYTES(s->format, w);
+#endif
     io_instructions += icount_read() - t0;
     return 0;
 }
 
-static void uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
 {
     uint64_t t0 = icount_read();
     uint16_t lines = (uint16_t)(a->y2 - a->y1 + 1);
-    size_t n = (size_t)lines * frame_width * fb_bytes_per_pixel(s->format);
+    size_t n = (size_t)lines * frame_line_bytes;
     uint8_t hdr[5] = { 'B' }, tail[4];
     put_u16(hdr + 1, a->y1);
     put_u16(hdr + 3, lines);
@@ -61,6 +65,7 @@ static void uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     frame_adler = adler32(frame_adler, px, n);
     fb_flush_ready(s); /* UART writes are synchronous */
     io_instructions += icount_read() - t0;
+    return 0;
 }
 
 static int uart_end(fb_sink_t *s)

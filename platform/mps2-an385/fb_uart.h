@@ -4,7 +4,8 @@
  *
  * Records, all integers little-endian:
  *   'R' 'T' 'F' '1' fmt:u8 width:u16 height:u16     frame header
- *   'B' y:u16 lines:u16 pixels[lines*width*bpp] adler32:u32   one band
+ *   'B' y:u16 lines:u16 pixels[lines*line_bytes] adler32:u32   one band
+ *       (fmt: fb_format_t; line_bytes = RT_FB_LINE_BYTES(fmt, width), fb.h)
  *   'E' adler32:u32                                  frame end: checksum
  *                                                    of all pixel bytes
  *   'T' len:u16 text[len]                            a report line
@@ -15,7 +16,8 @@
 #include "fb.h"
 
 /* A sink with one band buffer of `bytes`; flush time is excluded from
- * the instruction count (see fb_uart_io_instructions). */
+ * the instruction count (see fb_uart_io_instructions). It streams whole
+ * frames: no viewport, tightly packed lines (pitch 0). */
 void fb_uart_init(fb_sink_t *sink, fb_format_t format, uint8_t *band, size_t bytes);
 
 /* Instructions spent inside the sink (UART output and checksums). */

@@ -15,9 +15,9 @@
 #define BOARD_BAND_LINES 4
 #endif
 #ifndef BOARD_FORMAT
-#define BOARD_FORMAT FB_RGB888
+#define BOARD_FORMAT RT_FB_RGB888
 #endif
-#define BOARD_BPP (BOARD_FORMAT == FB_RGB565 ? 2 : 3)
+/* (a BOARD_FORMAT that is not an ID of RT_FB_FORMATS, fb.h, fails to compile here) */
 #ifndef BOARD_ADAPTIVE_MILLI /* adaptive depth threshold in 1/1000; 0 = off */
 #define BOARD_ADAPTIVE_MILLI 0
 #endif
@@ -26,7 +26,7 @@ _Static_assert(BOARD_WIDTH >= 1 && BOARD_WIDTH <= RT_MAX_WIDTH, "BOARD_WIDTH out
 _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT out of range");
 _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out of 1..RT_MAX_DEPTH");
 
-static uint8_t band[BOARD_BAND_LINES * BOARD_WIDTH * BOARD_BPP];
+static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)];
 
 /* The core's counters, keyed as on the host (stats.h). */
 static void report_counter(void *ctx, const char *key, uint64_t value)

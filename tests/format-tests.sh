@@ -1,0 +1,83 @@
+#!/bin/sh
+# Pixel format tests: a scene rendered through every framebuffer format
+# (RT_FB_FORMATS, src/fb.h; rt --format) and expanded back to 8-bit RGB
+# must match the RGB888 render within the format's quantisation:
+#   rgb888, xrgb8888   exact
+#   rgb565, rgb565be   R, B within 5/255 and G within 3/255 (half a 5- or
+#                      6-bit step, plus the rounding of the expansion);
+#                      both byte orders give the same image
+#   l8                 R = G = B, within 1/255 of the Rec.601 luma
+#                      0.299 R + 0.587 G + 0.114 B of the RGB888 image,
+#                      computed here in floating point
+#   l4                 R = G = B, within 9/255 of that luma (half a 4-bit
+#                      step, 8.5, plus rounding)
+# An odd width (61) exercises the last L4 byte's padding.
+RT=${1:-build/asan/rt}
+OUT=${2:-build/test-formats}
+mkdir -p "$OUT"
+pass=0 fail=0
+echo "format tests: every pixel format against the rgb888 render"
+for f in scenes/spd/balls-1.nff scenes/showpiece.nff; do
+    s=$(basename "$f" .nff)
+    for fmt in rgb888 rgb565 rgb565be xrgb8888 l8 l4; do
+        if ! "$RT" "$f" -o "$OUT/$s-$fmt.ppm" --size 61x37 --format $fmt --quiet 2>"$OUT/$s-$fmt.err"; then
+            fail=$((fail + 1)); echo "  FAIL  $s $fmt: render failed: $(cat "$OUT/$s-$fmt.err")"
+            continue
+        fi
+    done
+    for fmt in rgb888 rgb565 rgb565be xrgb8888 l8 l4; do
+        [ -f "$OUT/$s-$fmt.ppm" ] || continue
+        if msg=$(python3 - "$OUT/$s-rgb888.ppm" "$OUT/$s-$fmt.ppm" $fmt "$OUT/$s-rgb565.ppm" <<'PY'
+import sys
+def ppm(path):
+    d = open(path, 'rb').read()
+    parts, i = [], 0
+    while len(parts) < 4:
+        while d[i:i+1].isspace(): i += 1
+        j = i
+        while not d[j:j+1].isspace(): j += 1
+        parts.append(d[i:j]); i = j
+    assert parts[0] == b'P6' and parts[3] == b'255'
+    w, h = int(parts[1]), int(parts[2])
+    px = d[i+1:]
+    assert len(px) == w * h * 3
+    return w, h, px
+ref_path, path, fmt, p565 = sys.argv[1:5]
+w, h, ref = ppm(ref_path)
+w2, h2, img = ppm(path)
+assert (w, h) == (w2, h2), "size differs"
+worst = [0, 0, 0]
+grey_ok = True
+for i in range(w * h):
+    r, g, b = ref[3*i:3*i+3]
+    o = img[3*i:3*i+3]
+    if fmt in ('l8', 'l4'):
+        grey_ok &= o[0] == o[1] == o[2]
+        y = 0.299 * r + 0.587 * g + 0.114 * b
+        e = abs(o[0] - y)
+        worst = [max(worst[0], e)] * 3
+    else:
+        for k in range(3):
+            worst[k] = max(worst[k], abs(o[k] - (r, g, b)[k]))
+limit = {'rgb888': (0, 0, 0), 'xrgb8888': (0, 0, 0), 'rgb565': (5, 3, 5), 'rgb565be': (5, 3, 5),
+         'l8': (1, 1, 1), 'l4': (9, 9, 9)}[fmt]
+ok = grey_ok and all(worst[k] <= limit[k] for k in range(3))
+if fmt == 'rgb565be':
+    same = ppm(p565)[2] == img
+    ok = ok and same
+    extra = ', same image as rgb565' if same else ', NOT the same image as rgb565'
+else:
+    extra = ''
+print('max error R/G/B %s (limit %s)%s%s' % ('/'.join('%.2f' % e for e in worst), '/'.join(map(str, limit)),
+      '' if grey_ok else ', NOT grey', extra))
+sys.exit(0 if ok else 1)
+PY
+); then
+            pass=$((pass + 1)); echo "  ok    $s $fmt: $msg"
+        else
+            fail=$((fail + 1)); echo "  FAIL  $s $fmt: $msg"
+        fi
+    done
+done
+echo "format-tests: $pass passed, $fail failed"
+[ $fail -eq 0 ]

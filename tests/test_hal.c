@@ -1,0 +1,222 @@
+/* test_hal.c - the framebuffer HAL (src/fb.h, src/render.h) through the
+ * fixed and double backends:
+ *  - a flush failing on the third band ends the render with its status,
+ *    no further flush and no end();
+ *  - stats may be NULL;
+ *  - a viewport renders exactly the same pixels as that region of the
+ *    whole frame (normal and SPD mode; corners, interior, one pixel, full
+ *    width, one column, odd sizes), with a tight and a padded pitch, and
+ *    leaves the rest of the sink's frame untouched;
+ *  - the incremental API, stepping 1, 3 and 7 lines, gives the same frame
+ *    as one call. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "backend.h"
+#include "testlib.h"
+
+#define W 41 /* odd sizes */
+#define H 29
+#define SENTINEL 0xA5
+
+static char *read_text(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    static char buf[1 << 20];
+    *len = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[*len] = '\0';
+    return buf;
+}
+
+/* A sink that places each band's pixels (RGB888) into a whole W x H frame
+ * by the area's frame coordinates, reading lines `pitch` apart; counts its
+ * calls and fails flush number fail_at (1-based; 0: never). */
+typedef struct {
+    fb_sink_t sink;
+    uint8_t img[W * H * 3];
+    int flushes, ends, fail_at;
+    bool bad_area;
+    uint8_t band_a[(W * 3 + 16) * 5], band_b[(W * 3 + 16) * 5];
+} test_sink_t;
+
+static int t_begin(fb_sink_t *s, uint16_t w, uint16_t h)
+{
+    (void)s;
+    return w == W && h == H ? 0 : 1;
+}
+
+static int t_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+{
+    test_sink_t *t = s->user;
+    t->flushes++;
+    if (t->flushes == t->fail_at)
+        return 42;
+    if (a->x2 >= W || a->y2 >= H || a->x1 > a->x2 || a->y1 > a->y2) {
+        t->bad_area = true;
+        return 0;
+    }
+    size_t pitch = s->pitch ? s->pitch : (size_t)(a->x2 - a->x1 + 1) * 3;
+    for (unsigned y = a->y1; y <= a->y2; y++)
+        memcpy(t->img + ((size_t)y * W + a->x1) * 3, px + (size_t)(y - a->y1) * pitch, (size_t)(a->x2 - a->x1 + 1) * 3);
+    fb_flush_ready(s);
+    return 0;
+}
+
+static int t_end(fb_sink_t *s)
+{
+    test_sink_t *t = s->user;
+    t->ends++;
+    return 0;
+}
+
+/* band_lines lines of `pitch` bytes (0: of the whole width) a band */
+static void sink_init(test_sink_t *t, size_t pitch, int band_lines, bool two)
+{
+    memset(t, 0, sizeof *t);
+    memset(t->img, SENTINEL, sizeof t->img);
+    t->sink.format = RT_FB_RGB888;
+    t->sink.band[0] = t->band_a;
+    t->sink.band[1] = two ? t->band_b : NULL;
+    t->sink.pitch = pitch;
+    t->sink.band_bytes = (size_t)band_lines * (pitch ? pitch : W * 3);
+    t->sink.begin = t_begin;
+    t->sink.flush = t_flush;
+    t->sink.end = t_end;
+    t->sink.user = t;
+}
+
+/* got equals ref inside the viewport and is untouched outside it */
+static bool same_crop(const test_sink_t *got, const test_sink_t *ref, rt_viewport_t v)
+{
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            bool in = x >= v.x && x < v.x + v.w && y >= v.y && y < v.y + v.h;
+            const uint8_t *g = got->img + ((size_t)y * W + x) * 3, *r = ref->img + ((size_t)y * W + x) * 3;
+            for (int k = 0; k < 3; k++)
+                if (in ? g[k] != r[k] : g[k] != SENTINEL)
+                    return false;
+        }
+    return true;
+}
+
+static test_sink_t ref[2], got;
+static double scratch[2 * (W + 1) * 3];
+
+int main(void)
+{
+    size_t len;
+    const char *text = read_text("scenes/spd/balls-1.nff", &len);
+    if (!text) {
+        printf("  FAIL  cannot read scenes/spd/balls-1.nff (run from the repository root)\n");
+        return 1;
+    }
+    const struct {
+        const char *name;
+        const rt_backend_t *be;
+    } bes[] = { { "fixed", &rt_backend_fixed }, { "double", &rt_backend_double } };
+    const rt_viewport_t vps[] = {
+        { 0, 0, 1, 1 },         /* top-left pixel */
+        { W - 1, H - 1, 1, 1 }, /* bottom-right pixel */
+        { W - 5, 0, 5, 4 },     /* top-right corner */
+        { 0, H - 3, 6, 3 },     /* bottom-left corner */
+        { 7, 3, 13, 11 },       /* interior, odd */
+        { 1, 2, 3, 5 },         /* small, odd */
+        { 0, 5, W, 7 },         /* full width */
+        { 20, 0, 1, H },        /* one column, full height */
+        { 0, 0, W, H },         /* the whole frame, explicitly */
+    };
+    const size_t n_vps = sizeof vps / sizeof vps[0];
+    for (size_t b = 0; b < 2; b++) {
+        const rt_backend_t *be = bes[b].be;
+        const char *bn = bes[b].name;
+        rt_error_t err;
+        if (!be->load(text, len, &err)) {
+            CHECK(0, "%s: load: %s", bn, err.msg);
+            continue;
+        }
+        rt_stats_t st = { 0 };
+        render_opts_t opts[2] = { { .width = W, .height = H, .max_depth = 3 },
+                                  { .width = W, .height = H, .max_depth = 3, .spd = true, .scratch = scratch,
+                                    .scratch_bytes = sizeof scratch } };
+        for (int m = 0; m < 2; m++) {
+            /* 29 lines, 4 lines a band: 8 bands */
+            sink_init(&ref[m], 0, 4, true);
+            int rc = be->render(&opts[m], &ref[m].sink, &st, &err);
+            CHECK(rc == 0 && ref[m].flushes == 8 && ref[m].ends == 1 && !ref[m].bad_area,
+                  "%s%s: whole frame: status %d, %d flushes, %d end", bn, m ? " SPD" : "", rc, ref[m].flushes,
+                  ref[m].ends);
+        }
+
+        /* flush status: the third band fails */
+        for (int two = 0; two < 2; two++) {
+            sink_init(&got, 0, 4, two);
+            got.fail_at = 3;
+            int rc = be->render(&opts[0], &got.sink, &st, &err);
+            CHECK(rc == 42 && got.flushes == 3 && got.ends == 0 && !got.sink.flushing,
+                  "%s, %s buffer: flush 3 fails -> status %d, %d flushes, end() called %d times, not flushing", bn,
+                  two ? "double" : "single", rc, got.flushes, got.ends);
+            sink_init(&got, 0, 4, two);
+            got.fail_at = 3;
+            rc = be->render_steps(&opts[0], &got.sink, &st, &err, 3);
+            CHECK(rc == 42 && got.flushes == 3 && got.ends == 0,
+                  "%s, %s buffer, in steps of 3 lines: flush 3 fails -> status %d, %d flushes, %d end", bn,
+                  two ? "double" : "single", rc, got.flushes, got.ends);
+        }
+
+        /* stats may be NULL: the same image */
+        sink_init(&got, 0, 4, true);
+        int rc = be->render(&opts[0], &got.sink, NULL, &err);
+        CHECK(rc == 0 && memcmp(got.img, ref[0].img, sizeof got.img) == 0, "%s: stats NULL: status %d, same image",
+              bn, rc);
+
+        /* viewports, tight and padded pitch, normal and SPD */
+        for (int m = 0; m < 2; m++) {
+            int ok = 0, total = 0;
+            for (size_t i = 0; i < n_vps; i++) {
+                for (int padded = 0; padded < 2; padded++) {
+                    render_opts_t o = opts[m];
+                    o.viewport = vps[i];
+                    sink_init(&got, padded ? (size_t)vps[i].w * 3 + 7 : 0, 3, padded);
+                    rc = be->render(&o, &got.sink, &st, &err);
+                    bool good = rc == 0 && !got.bad_area && got.ends == 1 && same_crop(&got, &ref[m], vps[i]);
+                    total++;
+                    ok += good;
+                    if (!good)
+                        printf("        %s%s: viewport %u,%u %ux%u pitch %s: status %d%s\n", bn, m ? " SPD" : "",
+                               vps[i].x, vps[i].y, vps[i].w, vps[i].h, padded ? "padded" : "tight", rc,
+                               rc < 0 ? err.msg : "");
+                }
+            }
+            CHECK(ok == total, "%s%s: %d of %d viewports (x %zu rectangles, tight and padded pitch) "
+                  "byte-identical to the crop of the whole frame, the rest untouched", bn, m ? " SPD" : "", ok, total,
+                  n_vps);
+        }
+        render_opts_t o = opts[0];
+        o.viewport = (rt_viewport_t){ W - 2, 0, 3, 1 };
+        sink_init(&got, 0, 3, false);
+        rc = be->render(&o, &got.sink, &st, &err);
+        CHECK(rc == -1 && got.flushes == 0, "%s: a viewport over the frame's edge is refused: %d '%s'", bn, rc,
+              err.msg);
+
+        /* the incremental API */
+        for (int m = 0; m < 2; m++) {
+            const uint16_t steps[] = { 1, 3, 7 };
+            for (size_t k = 0; k < 3; k++) {
+                sink_init(&got, 0, 4, true);
+                rc = be->render_steps(&opts[m], &got.sink, &st, &err, steps[k]);
+                bool whole = rc == 0 && got.ends == 1 && memcmp(got.img, ref[m].img, sizeof got.img) == 0;
+                render_opts_t ov = opts[m];
+                ov.viewport = vps[4];
+                sink_init(&got, 0, 2, false);
+                rc = be->render_steps(&ov, &got.sink, &st, &err, steps[k]);
+                bool part = rc == 0 && got.ends == 1 && same_crop(&got, &ref[m], vps[4]);
+                CHECK(whole && part, "%s%s: steps of %u lines == one call (whole frame %s, viewport %s)", bn,
+                      m ? " SPD" : "", steps[k], whole ? "same" : "DIFFERS", part ? "same" : "DIFFERS");
+            }
+        }
+    }
+    return tl_summary("test_hal");
+}
