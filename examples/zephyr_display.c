@@ -81,5 +81,6 @@ int main(int argc, char **argv)
         fprintf(stderr, "zephyr_display: render failed (%d): %s\n", st, st < 0 ? err.msg : "display_write");
         return 1;
     }
+    printf("zephyr_display: %ux%u through display_write, a 4-line band, pitch %u pixels\n", W, H, PITCH_PIXELS);
     return example_write_ppm(argv[2], &display.fb[0][0], W, H);
 }

@@ -8,6 +8,7 @@
  * calls back.
  */
 #include "nff.h"
+#include "rt.h"
 
 #include "bvh.h"
 #include "camera.h"
@@ -383,7 +384,7 @@ bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *er
     return true;
 }
 
-const scene_t *rt_nff_load(const char *text, size_t len, rt_error_t *err)
+const rt_scene_t *rt_nff_load(const char *text, size_t len, rt_error_t *err)
 {
     /* linked only when used: the tables at the configured capacities */
     static scene_store_t store;

@@ -13,9 +13,6 @@
  * ("file:line: msg" is for the caller to print). */
 bool nff_read(const char *text, size_t len, scene_store_t *store, rt_error_t *err);
 
-/* The same into the library's own tables (a static scene_store_t at the
- * configured capacities): the scene, or NULL with *err set. Each call
- * replaces the previous scene. */
-const scene_t *rt_nff_load(const char *text, size_t len, rt_error_t *err);
+/* rt_nff_load (rt.h): the same into the library's own tables. */
 
 #endif

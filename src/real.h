@@ -205,4 +205,6 @@ static inline real_t r_abs(real_t a) { return a < 0 ? -a : a; }
 static inline real_t r_min(real_t a, real_t b) { return a < b ? a : b; }
 static inline real_t r_max(real_t a, real_t b) { return a > b ? a : b; }
 
+_Static_assert(sizeof(real_t) == RT_REAL_BYTES, "RT_REAL_BYTES (rt_config.h) is the size of real_t");
+
 #endif

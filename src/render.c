@@ -1,5 +1,5 @@
 /* render.c - the frame loop: eye rays per pixel, pixels packed per band. */
-#include "render.h"
+#include "rt_render.h"
 
 #include "camera.h"
 #include "trace.h"
@@ -7,13 +7,13 @@
 /* RT_FB_ONLY_FORMAT (a build flag, e.g. the board's): the one format the
  * build packs; the packer's switch folds to that case. */
 #ifdef RT_FB_ONLY_FORMAT
-#define PIXEL_FORMAT(f) ((void)(f), (fb_format_t)(RT_FB_ONLY_FORMAT))
+#define PIXEL_FORMAT(f) ((void)(f), (rt_fb_format_t)(RT_FB_ONLY_FORMAT))
 #else
 #define PIXEL_FORMAT(f) (f)
 #endif
 
 /* Pixel x of a line in format f: the one packer of every format (fb.h). */
-static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, fb_format_t f, colour_t c)
+static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, colour_t c)
 {
     unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
     unsigned w, l;
@@ -55,7 +55,7 @@ static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, fb_format_t f, colour
     }
 }
 
-static void wait_flushed(fb_sink_t *sink)
+static void wait_flushed(rt_fb_sink_t *sink)
 {
     while (sink->flushing) {
         if (sink->wait)
@@ -67,8 +67,8 @@ static void wait_flushed(fb_sink_t *sink)
  * (then no flush is in flight). */
 static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
 {
-    fb_sink_t *sink = ctx->sink;
-    fb_area_t area = { ctx->x0, ctx->band_y, (uint16_t)(ctx->x0 + ctx->w - 1), y2 };
+    rt_fb_sink_t *sink = ctx->sink;
+    rt_fb_area_t area = { ctx->x0, ctx->band_y, (uint16_t)(ctx->x0 + ctx->w - 1), y2 };
     wait_flushed(sink); /* the other buffer's flush */
     sink->flushing = true;
     int status = sink->flush(sink, &area, sink->band[ctx->cur]);
@@ -102,15 +102,15 @@ static void corner_row(int32_t j, uint16_t x0, uint16_t w, colour_t *row)
  * rows[0] holds the corners above the line, rows[1] gets those below. */
 static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
-    colour_t **rows = ctx->rows;
-    corner_row(y + 1, ctx->x0, ctx->w, rows[1]);
+    const colour_t *above = ctx->rows[0];
+    colour_t *below = ctx->rows[1];
+    corner_row(y + 1, ctx->x0, ctx->w, below);
     for (uint16_t x = 0; x < ctx->w; x++) {
-        colour_t sum = c3_add(c3_add(rows[0][x], rows[0][x + 1]), c3_add(rows[1][x], rows[1][x + 1]));
+        colour_t sum = c3_add(c3_add(above[x], above[x + 1]), c3_add(below[x], below[x + 1]));
         put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)));
     }
-    colour_t *t = rows[0];
-    rows[0] = rows[1];
-    rows[1] = t;
+    ctx->rows[1] = ctx->rows[0]; /* the lower corners are the next line's upper */
+    ctx->rows[0] = below;
 }
 #endif
 
@@ -127,8 +127,8 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
 /* The bodies of rt_render_begin, _step and _end, inlined into them and
  * into rt_render: a build that only calls rt_render (the board) links one
  * function, as small as a single loop. */
-static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts,
-                                  fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
+static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts,
+                                  rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     uint16_t w = opts->width ? opts->width : sc->width;
     uint16_t h = opts->height ? opts->height : sc->height;
@@ -180,12 +180,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 #else
     ctx->spd = opts->spd;
     if (opts->spd) {
-        if (opts->scratch == 0 || opts->scratch_bytes < RENDER_SPD_SCRATCH(vp.w)) {
+        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(vp.w)) {
             rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
             return -1;
         }
         ctx->rows[0] = opts->scratch;
-        ctx->rows[1] = ctx->rows[0] + vp.w + 1;
+        ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
     }
 #endif
     int32_t nx = w, ny = h;
@@ -225,7 +225,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 
 static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 {
-    fb_sink_t *sink = ctx->sink;
+    rt_fb_sink_t *sink = ctx->sink;
     for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
         uint16_t y = ctx->y++;
         uint8_t *line = sink->band[ctx->cur] + (size_t)(y - ctx->band_y) * ctx->pitch;
@@ -252,7 +252,7 @@ static RT_INLINE int render_end(rt_render_ctx_t *ctx)
     return ctx->sink->end ? ctx->sink->end(ctx->sink) : 0;
 }
 
-RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
+RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
                       rt_error_t *err)
 {
     rt_render_ctx_t ctx;
@@ -263,7 +263,7 @@ RT_COLD int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *s
     return status != 0 ? status : render_end(&ctx);
 }
 
-RT_COLD int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink,
+RT_COLD int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,
                             rt_stats_t *stats, rt_error_t *err)
 {
     return render_begin(ctx, sc, opts, sink, stats, err);

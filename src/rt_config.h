@@ -57,6 +57,10 @@
 #define RT_SCALE_LOG2_MAX 30
 #endif
 
+/* Bytes of the scalar real_t (real.h checks): for sizes in the public
+ * headers, which do not see the core's types. */
+#define RT_REAL_BYTES (RT_BACKEND_DOUBLE ? 8 : 4)
+
 /* Faster, less exact square roots, reciprocals and powers (fx.c). */
 #ifndef FX_FAST_MATH
 #define FX_FAST_MATH 0
@@ -166,7 +170,7 @@
 #define RT_USE_REFRACTION 1
 #endif
 
-/* The SPD test procedure (corner rays, render_opts_t.spd); boards that
+/* The SPD test procedure (corner rays, rt_render_opts_t.spd); boards that
  * never use it leave it out. */
 #ifndef RT_USE_SPD
 #define RT_USE_SPD 1

@@ -40,5 +40,19 @@ for case in "RT_MAX_DEPTH 99:RT_MAX_DEPTH out of 1..16" "RT_MAX_LIGHTS 0:RT_MAX_
         bad "$def: $(grep -m1 error "$OUT/bad.err")"
     fi
 done
+# rt.h is all a user includes, and it includes only rt_*.h headers (none
+# of the core's internal ones, which are not installed).
+printf '#include "rt.h"\n' >"$OUT/only.c"
+if cc -std=c11 -Isrc -H -fsyntax-only "$OUT/only.c" 2>"$OUT/only.h.txt"; then
+    own=$(sed -n 's/^\.* //p' "$OUT/only.h.txt" | grep '^src/' | sort -u)
+    other=$(echo "$own" | grep -v '^src/rt[_.a-z0-9]*\.h$' || true)
+    if [ -z "$other" ] && echo "$own" | grep -q 'src/rt_fb.h'; then
+        ok "rt.h includes only rt_*.h: $(echo $own | sed 's|src/||g')"
+    else
+        bad "rt.h pulls in internal headers: $other"
+    fi
+else
+    bad "rt.h does not compile on its own: $(head -3 "$OUT/only.h.txt")"
+fi
 echo "config-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

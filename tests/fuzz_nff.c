@@ -13,22 +13,22 @@
 #include <stdlib.h>
 
 #include "nff.h"
-#include "render.h"
+#include "rt_render.h"
 
 static scene_store_t store;
 static uint8_t band[8 * 3 * 2];
 
-static int begin(fb_sink_t *s, uint16_t w, uint16_t h)
+static int begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     (void)s;
     return (w == 8 && h == 8) ? 0 : 1;
 }
 
-static int flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
     (void)a;
     (void)px;
-    fb_flush_ready(s);
+    rt_fb_flush_ready(s);
     return 0;
 }
 
@@ -43,13 +43,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort(); /* every failure must say what and where */
         return 0;
     }
-    fb_sink_t sink = { 0 };
-    sink.format = FB_RGB888;
+    rt_fb_sink_t sink = { 0 };
+    sink.format = RT_FB_RGB888;
     sink.band[0] = band;
     sink.band_bytes = sizeof band;
     sink.begin = begin;
     sink.flush = flush;
-    render_opts_t opts = { 0 };
+    rt_render_opts_t opts = { 0 };
     opts.width = opts.height = 8;
     opts.max_depth = 3;
     rt_stats_t st = { 0 };

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fb.h"
+#include "rt_fb.h"
 #include "uart_stream.h"
 
 typedef struct {

@@ -35,20 +35,20 @@ static char *read_text(const char *path, size_t *len)
  * by the area's frame coordinates, reading lines `pitch` apart; counts its
  * calls and fails flush number fail_at (1-based; 0: never). */
 typedef struct {
-    fb_sink_t sink;
+    rt_fb_sink_t sink;
     uint8_t img[W * H * 3];
     int flushes, ends, fail_at;
     bool bad_area;
     uint8_t band_a[(W * 3 + 16) * 5], band_b[(W * 3 + 16) * 5];
 } test_sink_t;
 
-static int t_begin(fb_sink_t *s, uint16_t w, uint16_t h)
+static int t_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     (void)s;
     return w == W && h == H ? 0 : 1;
 }
 
-static int t_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int t_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
     test_sink_t *t = s->user;
     t->flushes++;
@@ -61,11 +61,11 @@ static int t_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     size_t pitch = s->pitch ? s->pitch : (size_t)(a->x2 - a->x1 + 1) * 3;
     for (unsigned y = a->y1; y <= a->y2; y++)
         memcpy(t->img + ((size_t)y * W + a->x1) * 3, px + (size_t)(y - a->y1) * pitch, (size_t)(a->x2 - a->x1 + 1) * 3);
-    fb_flush_ready(s);
+    rt_fb_flush_ready(s);
     return 0;
 }
 
-static int t_end(fb_sink_t *s)
+static int t_end(rt_fb_sink_t *s)
 {
     test_sink_t *t = s->user;
     t->ends++;
@@ -138,7 +138,7 @@ int main(void)
             continue;
         }
         rt_stats_t st = { 0 };
-        render_opts_t opts[2] = { { .width = W, .height = H, .max_depth = 3 },
+        rt_render_opts_t opts[2] = { { .width = W, .height = H, .max_depth = 3 },
                                   { .width = W, .height = H, .max_depth = 3, .spd = true, .scratch = scratch,
                                     .scratch_bytes = sizeof scratch } };
         for (int m = 0; m < 2; m++) {
@@ -177,7 +177,7 @@ int main(void)
             int ok = 0, total = 0;
             for (size_t i = 0; i < n_vps; i++) {
                 for (int padded = 0; padded < 2; padded++) {
-                    render_opts_t o = opts[m];
+                    rt_render_opts_t o = opts[m];
                     o.viewport = vps[i];
                     sink_init(&got, padded ? (size_t)vps[i].w * 3 + 7 : 0, 3, padded);
                     rc = be->render(&o, &got.sink, &st, &err);
@@ -194,7 +194,7 @@ int main(void)
                   "byte-identical to the crop of the whole frame, the rest untouched", bn, m ? " SPD" : "", ok, total,
                   n_vps);
         }
-        render_opts_t o = opts[0];
+        rt_render_opts_t o = opts[0];
         o.viewport = (rt_viewport_t){ W - 2, 0, 3, 1 };
         sink_init(&got, 0, 3, false);
         rc = be->render(&o, &got.sink, &st, &err);
@@ -208,7 +208,7 @@ int main(void)
                 sink_init(&got, 0, 4, true);
                 rc = be->render_steps(&opts[m], &got.sink, &st, &err, steps[k]);
                 bool whole = rc == 0 && got.ends == 1 && memcmp(got.img, ref[m].img, sizeof got.img) == 0;
-                render_opts_t ov = opts[m];
+                rt_render_opts_t ov = opts[m];
                 ov.viewport = vps[4];
                 sink_init(&got, 0, 2, false);
                 rc = be->render_steps(&ov, &got.sink, &st, &err, steps[k]);

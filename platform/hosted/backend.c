@@ -61,12 +61,12 @@ static int64_t saturations(bool reset)
 
 static void bvh_stats(bvh_stats_t *out) { bvh_tree_stats(&store.scene, out); }
 
-static int render(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
+static int render(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     return rt_render(&store.scene, opts, sink, stats, err);
 }
 
-static int render_steps(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
+static int render_steps(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
                         uint16_t lines)
 {
     rt_render_ctx_t ctx;

@@ -15,8 +15,8 @@
 #include <stdint.h>
 
 #include "bvh.h"
-#include "fb.h"
-#include "render.h"
+#include "rt_fb.h"
+#include "rt_render.h"
 #include "rt_error.h"
 #include "rt_stats.h"
 
@@ -40,9 +40,9 @@ typedef struct {
     int64_t (*saturations)(bool reset);
 
     void (*bvh_stats)(bvh_stats_t *out);
-    int (*render)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
+    int (*render)(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
     /* The same through rt_render_begin / rt_render_step(lines) / rt_render_end. */
-    int (*render_steps)(const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
+    int (*render_steps)(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
                         uint16_t lines);
     /* rt_stats_each (stats.h): the counters by key. */
     void (*stats_each)(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);

@@ -87,7 +87,7 @@ static bool parse_double(const char *s, double *out)
 #define HOST_BAND_LINES 8
 
 typedef struct {
-    fb_sink_t sink;
+    rt_fb_sink_t sink;
     image_t img;           /* the viewport (by default the whole frame) */
     rt_viewport_t vp;
     bool progress;
@@ -95,7 +95,7 @@ typedef struct {
     uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
 } host_sink_t;
 
-static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
+static int host_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     host_sink_t *hs = s->user;
     if (hs->vp.w == 0)
@@ -106,7 +106,7 @@ static int host_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     return hs->img.rgb ? 0 : 1;
 }
 
-static int host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int host_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
     host_sink_t *hs = s->user;
     size_t w = (size_t)hs->img.width;
@@ -118,7 +118,7 @@ static int host_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     }
     if (hs->progress)
         fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1 - hs->vp.y) / hs->img.height));
-    fb_flush_ready(s); /* synchronous: the band is free again */
+    rt_fb_flush_ready(s); /* synchronous: the band is free again */
     return 0;
 }
 
@@ -169,7 +169,7 @@ static const char *backend_name(const rt_backend_t *be)
 /* The pixel formats, from the one list (fb.h). */
 static const struct {
     const char *name;
-    fb_format_t format;
+    rt_fb_format_t format;
 } formats[] = {
 #define FORMAT_ROW(id, name, value, bits) { name, id },
     RT_FB_FORMATS(FORMAT_ROW)
@@ -235,8 +235,8 @@ static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
     const rt_backend_t *be = backends[0].be;
-    render_opts_t opts = { 0 };
-    fb_format_t format = FB_RGB888;
+    rt_render_opts_t opts = { 0 };
+    rt_fb_format_t format = RT_FB_RGB888;
     bool quiet = false;
     bool stats = false;
     report_format_t stats_format = REPORT_TEXT;
@@ -378,7 +378,7 @@ static int cmd_render(int argc, char **argv)
     opts.scratch_bytes = scratch ? scratch_bytes : 0;
 
     static host_sink_t hs;
-    hs.sink = (fb_sink_t){ .format = format,
+    hs.sink = (rt_fb_sink_t){ .format = format,
                            .band = { hs.band_a, hs.band_b },
                            .band_bytes = sizeof hs.band_a,
                            .begin = host_begin,

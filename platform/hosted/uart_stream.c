@@ -9,7 +9,7 @@
 #include <string.h>
 #include <zlib.h>
 
-#include "fb.h"
+#include "rt_fb.h"
 
 typedef struct {
     const rx_source_t *src;
@@ -119,7 +119,7 @@ static bool plausible_text(rx_t *r, size_t *len)
 }
 
 /* One band record at the current byte; lines_done counts the rows so far. */
-static int band(rx_t *r, image_t *img, fb_format_t fmt, unsigned *lines_done, uLong *frame_adler)
+static int band(rx_t *r, image_t *img, rt_fb_format_t fmt, unsigned *lines_done, uLong *frame_adler)
 {
     if (!need(r, 5))
         return fail(r, "stream truncated in a band header");
@@ -193,7 +193,7 @@ static int decode(rx_t *r)
             emit_text(r, u16(at(r) + 1));
             break;
         case 'B':
-            if (band(r, img, (fb_format_t)fmt, &lines_done, &frame_adler) != 0)
+            if (band(r, img, (rt_fb_format_t)fmt, &lines_done, &frame_adler) != 0)
                 return -1;
             break;
         case 'E':

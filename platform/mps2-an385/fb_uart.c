@@ -33,7 +33,7 @@ static void put_u32(uint8_t *p, uint32_t v)
     put_u16(p + 2, (uint16_t)(v >> 16));
 }
 
-static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
+static int uart_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     uint64_t t0 = icount_read();
     uint8_t hdr[9] = { 'R', 'T', 'F', '1', (uint8_t)s->format };
@@ -50,7 +50,7 @@ static int uart_begin(fb_sink_t *s, uint16_t w, uint16_t h)
     return 0;
 }
 
-static int uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
+static int uart_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
     uint64_t t0 = icount_read();
     uint16_t lines = (uint16_t)(a->y2 - a->y1 + 1);
@@ -63,12 +63,12 @@ static int uart_flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *px)
     put_u32(tail, adler32(1, px, n));
     uart_write(tail, sizeof tail);
     frame_adler = adler32(frame_adler, px, n);
-    fb_flush_ready(s); /* UART writes are synchronous */
+    rt_fb_flush_ready(s); /* UART writes are synchronous */
     io_instructions += icount_read() - t0;
     return 0;
 }
 
-static int uart_end(fb_sink_t *s)
+static int uart_end(rt_fb_sink_t *s)
 {
     (void)s;
     uint8_t rec[5] = { 'E' };
@@ -77,7 +77,7 @@ static int uart_end(fb_sink_t *s)
     return 0;
 }
 
-void fb_uart_init(fb_sink_t *sink, fb_format_t format, uint8_t *band, size_t bytes)
+void fb_uart_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t bytes)
 {
     sink->format = format;
     sink->band[0] = band;

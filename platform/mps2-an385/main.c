@@ -9,7 +9,7 @@
 #include "board.h"
 #include "board_scene.h"
 #include "fb_uart.h"
-#include "render.h"
+#include "rt_render.h"
 
 #ifndef BOARD_BAND_LINES
 #define BOARD_BAND_LINES 4
@@ -45,10 +45,10 @@ int main(void)
         uart_report(err.msg);
         return 2;
     }
-    render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
+    rt_render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
                            .adaptive_milli = BOARD_ADAPTIVE_MILLI };
     static rt_stats_t st;
-    static fb_sink_t sink;
+    static rt_fb_sink_t sink;
     fb_uart_init(&sink, BOARD_FORMAT, band, sizeof band);
 
     uint64_t t0 = icount_read();

@@ -9,7 +9,7 @@
 #define HEIGHT 32
 #define BAND_LINES 4
 
-extern const scene_t rt_scene;         /* rt_add_scene: scene_data.c */
+extern const rt_scene_t rt_scene;         /* rt_add_scene: scene_data.c */
 int out_write(const void *p, size_t n); /* 0 on success */
 
 static uint8_t band[BAND_LINES * WIDTH * 3];
@@ -27,7 +27,7 @@ static char *put_uint(char *p, unsigned v)
     return p;
 }
 
-static int begin(fb_sink_t *s, uint16_t width, uint16_t height)
+static int begin(rt_fb_sink_t *s, uint16_t width, uint16_t height)
 {
     (void)s;
     char header[24] = "P6\n", *p = header + 3;
@@ -39,15 +39,15 @@ static int begin(fb_sink_t *s, uint16_t width, uint16_t height)
     return out_write(header, (size_t)(p - header));
 }
 
-static void flush(fb_sink_t *s, const fb_area_t *a, const uint8_t *pixels)
+static int flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *pixels)
 {
     size_t n = (size_t)(a->x2 - a->x1 + 1) * (size_t)(a->y2 - a->y1 + 1) * 3u;
-    if (out_status == 0)
-        out_status = out_write(pixels, n);
-    fb_flush_ready(s); /* synchronous: the band is free again */
+    out_status = out_write(pixels, n);
+    rt_fb_flush_ready(s); /* synchronous: the band is free again */
+    return out_status;    /* a failed write ends the frame */
 }
 
-static int end(fb_sink_t *s)
+static int end(rt_fb_sink_t *s)
 {
     (void)s;
     return out_status;
@@ -55,10 +55,9 @@ static int end(fb_sink_t *s)
 
 int main(void)
 {
-    fb_sink_t sink = { .format = FB_RGB888, .band = { band, 0 }, .band_bytes = sizeof band,
+    rt_fb_sink_t sink = { .format = RT_FB_RGB888, .band = { band, 0 }, .band_bytes = sizeof band,
                        .begin = begin, .flush = flush, .end = end };
-    render_opts_t opts = { .width = WIDTH, .height = HEIGHT }; /* depth: RT_MAX_DEPTH */
-    static rt_stats_t stats; /* required: rt_render does not take NULL yet */
+    rt_render_opts_t opts = { .width = WIDTH, .height = HEIGHT }; /* depth: RT_MAX_DEPTH */
     static rt_error_t err;
-    return rt_render(&rt_scene, &opts, &sink, &stats, &err) == 0 ? 0 : 1;
+    return rt_render(&rt_scene, &opts, &sink, NULL, &err) == 0 ? 0 : 1;
 }

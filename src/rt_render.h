@@ -1,11 +1,15 @@
-/* render.h - render a scene line by line into a framebuffer sink. */
-#ifndef RENDER_H
-#define RENDER_H
+/* rt_render.h - render a scene line by line into a framebuffer sink. */
+#ifndef RT_RENDER_H
+#define RT_RENDER_H
 
-#include "fb.h"
+#include "rt_fb.h"
 #include "rt_error.h"
-#include "scene.h"
+#include "rt_config.h"
 #include "rt_stats.h"
+
+/* A scene: tables the scene compiler wrote into flash (rt_scene), or
+ * what rt_nff_load read (rt.h). */
+typedef struct scene rt_scene_t;
 
 /* A rectangle of the frame, in frame pixels (as LVGL's lv_area_t, but
  * origin and size). w = h = 0: the whole frame. */
@@ -26,20 +30,20 @@ typedef struct {
     uint16_t adaptive_milli;
     /* SPD mode: (W+1) x (H+1) corner rays, each pixel the mean of its four
      * corners, and SPD rule 8. Needs `scratch` for two rows of corner
-     * colours: at least RENDER_SPD_SCRATCH(width) bytes (the viewport's
+     * colours: at least RT_RENDER_SPD_SCRATCH(width) bytes (the viewport's
      * width if one is set). */
     bool spd;
     void *scratch;
     size_t scratch_bytes;
-} render_opts_t;
+} rt_render_opts_t;
 
-#define RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * sizeof(colour_t))
+#define RT_RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * 3 * RT_REAL_BYTES)
 
 /* The whole frame (or opts->viewport) in one call: 0 on success; a sink's
  * non-zero status (begin or flush; end() is then not called), or -1 with
  * *err set. stats may be NULL. One render at a time (the camera and
  * tracer state are static). */
-int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_stats_t *stats,
+int rt_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err);
 
 /* The same in steps, for a caller with other work between them (a UI
@@ -59,16 +63,16 @@ int rt_render(const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink, rt_
  * the flushes in flight and returns the sink's end() status. The pixels
  * are the same however the frame is stepped. */
 typedef struct {
-    fb_sink_t *sink;
+    rt_fb_sink_t *sink;
     size_t pitch, band_lines;
     uint16_t x0, w;            /* the viewport's columns */
     uint16_t y, y_end, band_y; /* next line, end, first line of the band */
     unsigned cur;              /* the band buffer being filled */
     bool spd;
-    colour_t *rows[2];         /* SPD corner rows */
+    void *rows[2];             /* SPD corner rows (in the scratch) */
 } rt_render_ctx_t;
 
-int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const render_opts_t *opts, fb_sink_t *sink,
+int rt_render_begin(rt_render_ctx_t *ctx, const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,
                     rt_stats_t *stats, rt_error_t *err);
 int rt_render_step(rt_render_ctx_t *ctx, uint16_t lines);
 int rt_render_end(rt_render_ctx_t *ctx);

@@ -1,11 +1,11 @@
 /*
- * fb.h - the framebuffer HAL: where finished scanlines go.
+ * rt_fb.h - the framebuffer HAL: where finished scanlines go.
  *
  * Shaped like LVGL's flush callback and Zephyr's display_write(): the core
  * fills a band of whole lines in a buffer the sink owns, hands it over with
  * flush(), and does not touch that buffer again until the sink signals
- * completion with fb_flush_ready(). A synchronous sink calls
- * fb_flush_ready() inside flush(); a DMA-driven one calls it from its
+ * completion with rt_fb_flush_ready(). A synchronous sink calls
+ * rt_fb_flush_ready() inside flush(); a DMA-driven one calls it from its
  * transfer-complete interrupt. With two band buffers the core renders into
  * one while the other is being flushed.
  *
@@ -13,8 +13,8 @@
  * (render.c), rt_fb_expand() turns any of them back into 8-bit R, G, B
  * (the host's image writer and UART stream decoder use it).
  */
-#ifndef FB_H
-#define FB_H
+#ifndef RT_FB_H
+#define RT_FB_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -45,16 +45,14 @@
 #define RT_FB_ENUM_(id, name, value, bits) id = value,
 typedef enum {
     RT_FB_FORMATS(RT_FB_ENUM_)
-    FB_RGB888 = RT_FB_RGB888, /* the old names, kept for now */
-    FB_RGB565 = RT_FB_RGB565
-} fb_format_t;
+} rt_fb_format_t;
 #undef RT_FB_ENUM_
 
 #define RT_FB_COUNT_(id, name, value, bits) +1
 #define RT_FB_N_FORMATS (0 RT_FB_FORMATS(RT_FB_COUNT_))
 
 /* Bits per pixel of format f (0: not a format). */
-static inline unsigned rt_fb_bits(fb_format_t f)
+static inline unsigned rt_fb_bits(rt_fb_format_t f)
 {
 #define RT_FB_ROW_(id, name, value, bits) [value] = bits,
     static const uint8_t bits[] = { RT_FB_FORMATS(RT_FB_ROW_) };
@@ -76,12 +74,12 @@ enum { RT_FB_FORMATS(RT_FB_BITS_ENUM_) };
 /* Inclusive pixel rectangle, as LVGL's lv_area_t. Bands span whole lines. */
 typedef struct {
     uint16_t x1, y1, x2, y2;
-} fb_area_t;
+} rt_fb_area_t;
 
-typedef struct fb_sink fb_sink_t;
+typedef struct rt_fb_sink rt_fb_sink_t;
 
-struct fb_sink {
-    fb_format_t format;
+struct rt_fb_sink {
+    rt_fb_format_t format;
     uint8_t *band[2];    /* band[1] may be NULL: single buffering */
     size_t band_bytes;   /* size of each band buffer */
     size_t pitch;        /* bytes from one line to the next in a band;
@@ -92,25 +90,25 @@ struct fb_sink {
      * must clean up does it before returning the failure). A flush that
      * fails must not have started a transfer: the core takes the buffer
      * back (clears `flushing`) and flushes nothing more. */
-    int (*begin)(fb_sink_t *s, uint16_t width, uint16_t height);
-    int (*flush)(fb_sink_t *s, const fb_area_t *area, const uint8_t *pixels);
-    /* Optional: idle (e.g. WFI) until fb_flush_ready(); NULL busy-waits. */
-    void (*wait)(fb_sink_t *s);
-    int (*end)(fb_sink_t *s);
+    int (*begin)(rt_fb_sink_t *s, uint16_t width, uint16_t height);
+    int (*flush)(rt_fb_sink_t *s, const rt_fb_area_t *area, const uint8_t *pixels);
+    /* Optional: idle (e.g. WFI) until rt_fb_flush_ready(); NULL busy-waits. */
+    void (*wait)(rt_fb_sink_t *s);
+    int (*end)(rt_fb_sink_t *s);
 
     void *user;
-    volatile bool flushing; /* owned by the core and fb_flush_ready() */
+    volatile bool flushing; /* owned by the core and rt_fb_flush_ready() */
 };
 
-static inline void fb_flush_ready(fb_sink_t *s) { s->flushing = false; }
+static inline void rt_fb_flush_ready(rt_fb_sink_t *s) { s->flushing = false; }
 
 /* Whole bytes per pixel (L4: 0, two pixels share a byte); prefer
  * RT_FB_LINE_BYTES. */
-static inline unsigned fb_bytes_per_pixel(fb_format_t f) { return rt_fb_bits(f) / 8u; }
+static inline unsigned rt_fb_bytes_per_pixel(rt_fb_format_t f) { return rt_fb_bits(f) / 8u; }
 
 /* Pixel x of a line in format f as 8-bit R, G, B: 565 channels expanded by
  * rounding (v * 255 / max), grey as R = G = B, L4 as v * 17. */
-static inline void rt_fb_expand(fb_format_t f, const uint8_t *line, size_t x, uint8_t rgb[3])
+static inline void rt_fb_expand(rt_fb_format_t f, const uint8_t *line, size_t x, uint8_t rgb[3])
 {
     unsigned v;
     switch (f) {
