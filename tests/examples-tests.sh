@@ -31,5 +31,30 @@ for spec in "lvgl_flush:--size 64x64 --format rgb565be" "zephyr_display:--size 6
         bad "$name: differs from rt $opts: $cmp"
     fi
 done
+# The installed library: `cmake --install` gives librt_core.a and the
+# public headers alone; an example builds against them, and nm on the
+# library shows only rt_/RT_ global symbols.
+inst="$OUT/install"
+rm -rf "$OUT/cmake" "$inst"
+if cmake -S . -B "$OUT/cmake" -DCMAKE_INSTALL_PREFIX="$inst" >"$OUT/cmake.log" 2>&1 &&
+   cmake --build "$OUT/cmake" -j2 >>"$OUT/cmake.log" 2>&1 && cmake --install "$OUT/cmake" >>"$OUT/cmake.log" 2>&1; then
+    headers=$(ls "$inst/include/rt" | tr '\n' ' ')
+    if cc -std=c11 -Wall -Wextra -Werror -I"$inst/include/rt" -Iexamples -o "$OUT/installed" \
+          examples/zephyr_display.c "$inst/lib/librt_core.a" 2>"$OUT/installed.build" &&
+       "$OUT/installed" $SCENE "$OUT/installed.ppm" >/dev/null &&
+       "$RT" compare "$OUT/installed.ppm" "$OUT/zephyr_display-ref.png" --max-error 0 >/dev/null; then
+        ok "installed library: an example built on $headers and librt_core.a renders the same pixels"
+    else
+        bad "installed library: the example did not build or differs: $(head -3 "$OUT/installed.build")"
+    fi
+    syms=$(nm -g --defined-only "$inst/lib/librt_core.a" | awk 'NF == 3 { n++; if ($3 !~ /^(rt_|RT_)/) bad = bad " " $3 }
+                                                              END { print (bad ? "unprefixed:" bad : n " global symbols, all rt_/RT_") }')
+    case $syms in
+        unprefixed*) bad "nm librt_core.a: $syms" ;;
+        *) ok "nm librt_core.a: $syms" ;;
+    esac
+else
+    bad "cmake build or install of the library failed: $(tail -3 "$OUT/cmake.log")"
+fi
 echo "examples-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]
