@@ -176,6 +176,10 @@
 #define RT_USE_SPD 1
 #endif
 
+/* RT_FB_ONLY_FORMAT: the one pixel format (an RT_FB_* of rt_fb.h) the
+ * render packs, so the other packers are left out; unset, all of them are
+ * in (the board build sets it from FORMAT=). */
+
 /* Largest image side accepted (bounds the per-line work buffers). */
 #ifndef RT_MAX_WIDTH
 #define RT_MAX_WIDTH 4096
