@@ -188,7 +188,7 @@ build/fuzz/fuzz_scenec: tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_
 	    tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC)
 
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
-                         platform/hosted/image.h src/fb.h Makefile
+                         platform/hosted/image.h src/rt_fb.h Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Isrc -Iplatform/hosted -o $@ \
 	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz

@@ -21,7 +21,7 @@ BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
 
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
-# FORMAT: a name of RT_FB_FORMATS (src/fb.h), lower case: rgb888 -> RT_FB_RGB888.
+# FORMAT: a name of RT_FB_FORMATS (src/rt_fb.h), lower case: rgb888 -> RT_FB_RGB888.
 FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # PRUNE=1 (default): code for primitive kinds and shading features the
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
