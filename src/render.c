@@ -12,7 +12,7 @@
 #define PIXEL_FORMAT(f) (f)
 #endif
 
-/* Pixel x of a line in format f: the one packer of every format (fb.h). */
+/* Pixel x of a line in format f: the one packer of every format (rt_fb.h). */
 static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, colour_t c)
 {
     unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);

@@ -166,7 +166,7 @@ static const char *backend_name(const rt_backend_t *be)
     return "?";
 }
 
-/* The pixel formats, from the one list (fb.h). */
+/* The pixel formats, from the one list (rt_fb.h). */
 static const struct {
     const char *name;
     rt_fb_format_t format;

@@ -99,7 +99,7 @@ static void emit_text(rx_t *r, size_t len)
 /* Before the frame: is the 'T' at the current byte a report line? Its
  * text must be printable, which a 'T' inside noise or boot text rarely
  * is for long, and a text that ran over the frame header never is (the
- * header's format byte is a small number, RT_FB_FORMATS in fb.h). */
+ * header's format byte is a small number, RT_FB_FORMATS in rt_fb.h). */
 static bool plausible_text(rx_t *r, size_t *len)
 {
     if (!need(r, 3))

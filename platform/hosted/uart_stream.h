@@ -33,7 +33,7 @@ typedef struct {
 
 typedef struct {
     image_t img;           /* the frame as 8-bit RGB (expanded by rt_fb_expand) */
-    unsigned format;       /* the frame's pixel format (rt_fb_format_t, fb.h) */
+    unsigned format;       /* the frame's pixel format (rt_fb_format_t, rt_fb.h) */
     unsigned long skipped; /* noise bytes skipped before the frame header */
     unsigned long offset;  /* bytes consumed */
     char error[160];       /* why it failed: "what (at byte N)" */

@@ -5,7 +5,7 @@
  * Records, all integers little-endian:
  *   'R' 'T' 'F' '1' fmt:u8 width:u16 height:u16     frame header
  *   'B' y:u16 lines:u16 pixels[lines*line_bytes] adler32:u32   one band
- *       (fmt: rt_fb_format_t; line_bytes = RT_FB_LINE_BYTES(fmt, width), fb.h)
+ *       (fmt: rt_fb_format_t; line_bytes = RT_FB_LINE_BYTES(fmt, width), rt_fb.h)
  *   'E' adler32:u32                                  frame end: checksum
  *                                                    of all pixel bytes
  *   'T' len:u16 text[len]                            a report line

@@ -17,7 +17,7 @@
 #ifndef BOARD_FORMAT
 #define BOARD_FORMAT RT_FB_RGB888
 #endif
-/* (a BOARD_FORMAT that is not an ID of RT_FB_FORMATS, fb.h, fails to compile here) */
+/* (a BOARD_FORMAT that is not an ID of RT_FB_FORMATS, rt_fb.h, fails to compile here) */
 #ifndef BOARD_ADAPTIVE_MILLI /* adaptive depth threshold in 1/1000; 0 = off */
 #define BOARD_ADAPTIVE_MILLI 0
 #endif
