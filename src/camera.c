@@ -1,6 +1,9 @@
 /* camera.c - eye rays as docs/shading-model.md defines them. */
 #include "camera.h"
 
+#include "rt_error.h"
+#include "rt_render.h"
+
 RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
 {
     vec3_t fwd = v3_sub(view->at, view->from);
@@ -60,4 +63,56 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
     r.from = PRIM_NONE;
     r.from_far = false;
     return r;
+}
+
+/* Q16.16 value v times 2^k as a scalar: false if out of range. */
+static bool q16_to_real(int32_t v, int32_t k, real_t *out)
+{
+#if RT_BACKEND_FIXED
+    return r_ldexp((real_t)v, k + FX_FRAC_BITS - 16, out);
+#else
+    return r_ldexp((real_t)v * (real_t)(1.0 / 65536), k, out);
+#endif
+}
+
+static bool vec_from_q16(const int32_t v[3], int32_t k, real_t limit, vec3_t *out)
+{
+    real_t c[3];
+    for (int i = 0; i < 3; i++)
+        if (!q16_to_real(v[i], k, &c[i]) || r_abs(c[i]) >= limit)
+            return false;
+    *out = v3(c[0], c[1], c[2]);
+    return true;
+}
+
+/* A user's viewpoint in the scene's scaled units, as the reader would
+ * have read it: positions scaled and range-checked, up as given, the
+ * angle's half tangent. */
+static bool view_from_q16(const rt_view_t *u, int32_t scale_log2, view_t *v)
+{
+    real_t far = r_from_int((int32_t)1 << RT_FAR_EXTENT_LOG2);
+    if (!vec_from_q16(u->from, scale_log2, far, &v->from) || !vec_from_q16(u->at, scale_log2, far, &v->at) ||
+        !vec_from_q16(u->up, 0, far, &v->up) || !q16_to_real(u->angle, 0, &v->angle))
+        return false;
+    v->tan_half = v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
+    return true; /* camera_init rejects a degenerate view */
+}
+
+_Static_assert(sizeof(view_t) <= sizeof(rt_camera_t) && _Alignof(view_t) <= _Alignof(rt_camera_t),
+               "rt_camera_t (rt_render.h) holds a view_t");
+
+RT_COLD int rt_camera_from_view(rt_camera_t *cam, const rt_scene_t *sc, const rt_view_t *u, rt_error_t *err)
+{
+    view_t *v = (view_t *)(void *)cam;
+    camera_t check;
+    if (!view_from_q16(u, sc->scale_log2, v)) {
+        rt_error_set(err, 0, "view: a position beyond the range the camera may take (RT_FAR_EXTENT_LOG2)");
+        return -1;
+    }
+    const char *why = camera_init(&check, v, 1, 1);
+    if (why) {
+        rt_error_set(err, 0, why);
+        return -1;
+    }
+    return 0;
 }

@@ -195,7 +195,9 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         ny++;
     }
 #endif
-    const char *why = camera_init(&cam, &sc->view, nx, ny);
+    /* another viewpoint: rt_camera_from_view made it a view_t */
+    const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
+    const char *why = camera_init(&cam, view, nx, ny);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;

@@ -17,8 +17,26 @@ typedef struct {
     uint16_t x, y, w, h;
 } rt_viewport_t;
 
+/* A viewpoint as NFF's 'v', in the scene file's units, every value in
+ * Q16.16 (times 65536), so setting one needs no floating point: from,
+ * at, up, and the full field of view in degrees (0 < angle < 180). */
+typedef struct {
+    int32_t from[3], at[3], up[3];
+    int32_t angle;
+} rt_view_t;
+#define RT_Q16(v) ((int32_t)((v) * 65536.0 + ((v) < 0 ? -0.5 : 0.5))) /* a constant in Q16.16 */
+
+/* A viewpoint ready for a scene (opts.camera); its contents are the
+ * core's. */
+typedef struct rt_camera {
+    int64_t opaque[12];
+} rt_camera_t;
+
 typedef struct {
     uint16_t width, height; /* 0: the scene's resolution */
+    /* The camera: NULL for the scene's own viewpoint, or another one made
+     * by rt_camera_from_view (the scene stays const, in flash too). */
+    const struct rt_camera *camera;
     /* Only these pixels are rendered and flushed, each the same as in the
      * whole frame (SPD mode included); the sink's areas are in frame
      * coordinates and its buffer lines hold the viewport's columns. */
@@ -43,6 +61,12 @@ typedef struct {
  * non-zero status (begin or flush; end() is then not called), or -1 with
  * *err set. stats may be NULL. One render at a time (the camera and
  * tracer state are static). */
+/* Another viewpoint for scene sc: 0, or -1 with *err set when a position
+ * lies beyond the range the reader allows the camera (RT_FAR_EXTENT_LOG2
+ * times the scene's extent) or the view is degenerate (up along the line
+ * of sight, from == at, angle out of (0, 180)). Linked only when called. */
+int rt_camera_from_view(rt_camera_t *cam, const rt_scene_t *sc, const rt_view_t *view, rt_error_t *err);
+
 int rt_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err);
 

@@ -31,6 +31,22 @@ for spec in "lvgl_flush:--size 64x64 --format rgb565be" "zephyr_display:--size 6
         bad "$name: differs from rt $opts: $cmp"
     fi
 done
+# rt_camera_from_view: another viewpoint for a const scene (tests/camera_view.c).
+if cc -std=c11 -Wall -Wextra -Werror -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
+      -Isrc -o "$OUT/camera_view" tests/camera_view.c src/*.c -lm 2>"$OUT/camera_view.build"; then
+    "$OUT/camera_view" >"$OUT/camera_view.log" 2>&1
+    st=$?
+    while IFS= read -r line; do
+        case $line in
+            "  ok "*) pass=$((pass + 1)); echo "$line" ;;
+            *) fail=$((fail + 1)); echo "$line" ;;
+        esac
+    done <"$OUT/camera_view.log"
+    [ $st -eq 0 ] || grep -q FAIL "$OUT/camera_view.log" || { fail=$((fail + 1)); echo "  FAIL  camera_view exited $st"; }
+else
+    bad "camera_view: build failed: $(head -3 "$OUT/camera_view.build")"
+fi
+
 # The installed library: `cmake --install` gives librt_core.a and the
 # public headers alone; an example builds against them, and nm on the
 # library shows only rt_/RT_ global symbols.
