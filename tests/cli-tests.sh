@@ -232,22 +232,7 @@ capacity_case blocks "nested blocks" RT_MAX_BLOCK_DEPTH
 
 # --viewport X,Y,W,H: the output is that rectangle of the frame, pixel for
 # pixel (normal and SPD mode; the crop of the whole frame is cut here).
-crop_ppm() { # IN X Y W H OUT
-    python3 -c '
-import sys
-d = open(sys.argv[1], "rb").read()
-parts, i = [], 0
-while len(parts) < 4:
-    while d[i:i+1].isspace(): i += 1
-    j = i
-    while not d[j:j+1].isspace(): j += 1
-    parts.append(d[i:j]); i = j
-w = int(parts[1]); px = d[i+1:]
-x, y, cw, ch = map(int, sys.argv[2:6])
-rows = [px[((y + r) * w + x) * 3:((y + r) * w + x + cw) * 3] for r in range(ch)]
-open(sys.argv[6], "wb").write(b"P6\n%d %d\n255\n" % (cw, ch) + b"".join(rows))
-' "$@"
-}
+crop_ppm() { python3 tests/ppm.py crop "$@"; } # IN X Y W H OUT
 for mode in "" --spd; do
     "$RT" scenes/spd/balls-1.nff -o "$OUT/vp-full.ppm" --size 41x29 $mode --quiet
     for vp in 0,0,1,1 40,28,1,1 7,3,13,11 0,5,41,7 20,0,1,29; do

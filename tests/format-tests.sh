@@ -29,19 +29,8 @@ for f in scenes/spd/balls-1.nff scenes/showpiece.nff; do
         [ -f "$OUT/$s-$fmt.ppm" ] || continue
         if msg=$(python3 - "$OUT/$s-rgb888.ppm" "$OUT/$s-$fmt.ppm" $fmt "$OUT/$s-rgb565.ppm" <<'PY'
 import sys
-def ppm(path):
-    d = open(path, 'rb').read()
-    parts, i = [], 0
-    while len(parts) < 4:
-        while d[i:i+1].isspace(): i += 1
-        j = i
-        while not d[j:j+1].isspace(): j += 1
-        parts.append(d[i:j]); i = j
-    assert parts[0] == b'P6' and parts[3] == b'255'
-    w, h = int(parts[1]), int(parts[2])
-    px = d[i+1:]
-    assert len(px) == w * h * 3
-    return w, h, px
+sys.path.insert(0, 'tests')
+from ppm import read as ppm
 ref_path, path, fmt, p565 = sys.argv[1:5]
 w, h, ref = ppm(ref_path)
 w2, h2, img = ppm(path)
