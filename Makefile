@@ -1,8 +1,9 @@
 # Fixed-point Whitted ray tracer: host build, board firmware, tests.
 #
 #   make            build the hosted CLI (build/host/rt)
-#   make run        render SCENE on the emulated board (QEMU mps2-an385),
-#                   write out/<scene>.png, print instructions per pixel,
+#   make run        render SCENE on an emulated board (BOARD=mps2-an385 by
+#                   default, BACKEND=fixed; platform/firmware/firmware.mk),
+#                   write out/<scene>-<board>-<backend>.png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
 #                   error against the host's double build
 #   make host-run   the same render on the host, fixed and double
@@ -41,7 +42,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size bench bench-quick firmware print-fwdir stress fuzz fuzz-coverage
+.PHONY: all run host-run test clean deps deps-board size bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -49,7 +50,7 @@ all: build/host/rt
 HOST_BACKENDS = fixed double float double_ftol
 BACKEND_FLAGS_fixed =
 BACKEND_FLAGS_double = -DRT_BACKEND_DOUBLE=1
-BACKEND_FLAGS_float = -DRT_BACKEND_FLOAT=1
+BACKEND_FLAGS_float = -DRT_BACKEND_FLOAT=1 -ffp-contract=off
 BACKEND_FLAGS_double_ftol = -DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1
 
 # $(1) variant, $(2) backend id, $(3) backend flags
@@ -121,14 +122,14 @@ host-run: deps-board
 	@printf 'fixed vs the exact double reference: '
 	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
 
-include platform/mps2-an385/board.mk
+include platform/firmware/firmware.mk
 
 # deps: everything the tests and benchmarks use; deps-board: only what
 # rendering needs (make run, make host-run).
 deps:
 	@sh platform/ensure-deps.sh all
 deps-board:
-	@sh platform/ensure-deps.sh board
+	@sh platform/ensure-deps.sh board $(BOARD_PACKAGES)
 
 # Run time against error over the numeric configurations (bench/results.md,
 # results.csv, plot.svg), then the BVH and pruning figures.

@@ -26,9 +26,9 @@ for s in balls-1 balls-2 balls-3 balls-default; do
     n=$(grep -c '^s ' scenes/spd/$s.nff)
     ipp="-"
     if [ $s != balls-default ]; then
-        d=build/board/$s-64x64-d5-rgb888
-        if make -s SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 "$d/fixed.elf" >"$OUT/$s.build" 2>&1 &&
-           platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$s.png" "$RT" >"$OUT/$s.report" 2>&1; then
+        if make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1 &&
+           make -s board-run SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 RUN_OUT="$OUT/$s.png" RUN_RT="$RT" \
+               >"$OUT/$s.report" 2>&1; then
             ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
         fi
     fi
@@ -53,8 +53,8 @@ echo "== firmware code size (bytes, scene tables excluded), 64x64, depth 5 =="
 printf '%-10s %8s %10s\n' scene pruned unpruned
 code_of() { arm-none-eabi-size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2; do
-    d=build/board/$s-64x64-d5-rgb888
-    make -s SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 "$d/fixed.elf" >/dev/null 2>&1
-    make -s SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 "$d-noprune/fixed.elf" >/dev/null 2>&1
+    d=build/board/mps2-an385/$s-64x64-d5-rgb888
+    make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >/dev/null 2>&1
+    make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 >/dev/null 2>&1
     printf '%-10s %8s %10s\n' $s "$(code_of $d/fixed.elf)" "$(code_of $d-noprune/fixed.elf)"
 done

@@ -73,14 +73,13 @@ def compare(a, b):
     return psnr, int(m.group(2)), float(m.group(3)), float(m.group(4))
 
 
-def board_ipp(cfg, scene):
+def board_ipp(cfg, scene, board="mps2-an385"):
     kind, board_cfg, _ = CONFIGS[cfg]
-    args = ["SCENE=" + scene_path(scene), "SIZE=" + BOARD_SIZE, "DEPTH=5", "CONFIG=" + board_cfg]
-    fw = run(["make", "-s", "print-fwdir"] + args).stdout.strip()
-    elf = os.path.join(fw, kind + ".elf")
-    run(["make", "-s", "-j2", elf] + args)
-    report = run([os.path.join("platform", "mps2-an385", "qemu-run.sh"), elf,
-                  os.path.join(OUT, "board-%s-%s.png" % (cfg, scene)), "build/host/rt"]).stdout
+    args = ["BOARD=" + board, "BACKEND=" + kind, "SCENE=" + scene_path(scene), "SIZE=" + BOARD_SIZE,
+            "DEPTH=5", "CONFIG=" + board_cfg]
+    run(["make", "-s", "-j2", "firmware"] + args)
+    report = run(["make", "-s", "board-run", "RUN_OUT=" + os.path.join(OUT, "board-%s-%s.png" % (cfg, scene))]
+                 + args).stdout
     m = re.search(r"^instructions_per_pixel (\d+)$", report, re.M)
     return int(m.group(1))
 

@@ -1,24 +1,32 @@
 #!/bin/sh
-# ensure-deps.sh [board|all]: installs the Debian packages that are missing.
+# ensure-deps.sh [board [PACKAGE...] | all]: installs the Debian packages
+# that are missing.
 #   board  what rendering needs: the host CLI (make host-run, and `rt
-#          receive` for make run), the cross compiler and QEMU
-#   all    (default) that plus the tests' and benchmarks' tools
+#          receive` for make run), plus the packages named (a board's
+#          BOARD_PACKAGES: cross compiler, QEMU); none named: mps2-an385's
+#   all    (default) every board's packages and the tests' and
+#          benchmarks' tools
 set -e
 mode=${1:-all}
 case $mode in
 board | all) ;;
-*) echo "usage: sh platform/ensure-deps.sh [board|all]" >&2; exit 2 ;;
+*) echo "usage: sh platform/ensure-deps.sh [board [PACKAGE...] | all]" >&2; exit 2 ;;
 esac
+[ $# -gt 0 ] && shift
+boards="$*"
+[ -n "$boards" ] || boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
+# every board's (platform/*/board.mk, BOARD_PACKAGES)
+[ "$mode" = all ] && boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat"
 need=""
 command -v cc >/dev/null 2>&1 || need="$need gcc"
 command -v make >/dev/null 2>&1 || need="$need make"
 command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
 [ -f /usr/include/png.h ] || need="$need libpng-dev"
-# the board: cross compiler, newlib (libm for the soft-float comparison), QEMU
-command -v arm-none-eabi-gcc >/dev/null 2>&1 || need="$need gcc-arm-none-eabi"
-[ -d /usr/lib/arm-none-eabi/newlib ] || need="$need libnewlib-arm-none-eabi"
-command -v qemu-system-arm >/dev/null 2>&1 || need="$need qemu-system-arm"
+# the boards: cross compilers, newlib (libm for the soft-float comparison), QEMU
+for p in $boards; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'ok installed' || need="$need $p"
+done
 if [ "$mode" = all ]; then
     command -v python3 >/dev/null 2>&1 || need="$need python3"   # stress suite, benchmarks, make size
     command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind

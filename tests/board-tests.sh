@@ -1,5 +1,5 @@
 #!/bin/sh
-# Board tests (QEMU mps2-an385):
+# Board tests. On the first port (QEMU mps2-an385):
 #  - the board's image is byte-identical to the hosted fixed build's, for
 #    every SPD size-1 scene and the size-2 scenes, at 64x64, depth 5;
 #  - the fixed firmware links no heap and no soft-float helper;
@@ -12,7 +12,15 @@ mkdir -p "$OUT"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
-fwdir() { echo "build/board/$1-$2-d5-rgb888"; }
+fwdir() { echo "build/board/mps2-an385/$1-$2-d5-rgb888"; }
+# fw NAME [make variables]: build the firmware (log in $OUT/NAME.build),
+# run it (image $OUT/NAME-board.png, report $OUT/NAME.report)
+fw() {
+    n=$1
+    shift
+    make -s firmware "$@" >"$OUT/$n.build" 2>&1 &&
+        make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
+}
 
 echo "board tests: QEMU mps2-an385 against the hosted fixed build"
 scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes/$1.nff; }
@@ -23,7 +31,7 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
         bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
         continue
     fi
-    if ! platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$s-board.png" "$RT" >"$OUT/$s.report" 2>&1; then
+    if ! make -s board-run SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 RUN_OUT="$OUT/$s-board.png" RUN_RT="$RT" >"$OUT/$s.report" 2>&1; then
         bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
         continue
     fi
@@ -49,9 +57,8 @@ done
 code_of() { arm-none-eabi-size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
 for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
     p=$(fwdir $s 64x64) u="$(fwdir $s 64x64)-noprune"
-    if make -s firmware SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 >"$OUT/$s-noprune.build" 2>&1 &&
-       platform/mps2-an385/qemu-run.sh "$u/fixed.elf" "$OUT/$s-noprune.png" "$RT" >"$OUT/$s-noprune.report" 2>&1 &&
-       [ -f "$OUT/$s-board.png" ] && "$RT" compare "$OUT/$s-noprune.png" "$OUT/$s-board.png" --max-error 0 >/dev/null; then
+    if fw $s-noprune SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 &&
+       [ -f "$OUT/$s-board.png" ] && "$RT" compare "$OUT/$s-noprune-board.png" "$OUT/$s-board.png" --max-error 0 >/dev/null; then
         ok "$s: pruned == unpruned image; code $(code_of "$p/fixed.elf") vs $(code_of "$u/fixed.elf") bytes"
     else
         bad "$s: pruned and unpruned firmware differ or failed"
@@ -63,9 +70,7 @@ done
 # width the last byte of every line keeps its low nibble 0).
 for case in rgb565:48x32 rgb565be:48x32 l4:48x32 l4:47x31; do
     fmt=${case%%:*} size=${case#*:}
-    d=build/board/rings-1-$size-d3-$fmt
-    if make -s firmware SCENE=scenes/spd/rings-1.nff SIZE=$size DEPTH=3 FORMAT=$fmt >"$OUT/$fmt-$size.build" 2>&1 &&
-       platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/$fmt-$size-board.png" "$RT" >"$OUT/$fmt-$size.report" 2>&1 &&
+    if fw $fmt-$size SCENE=scenes/spd/rings-1.nff SIZE=$size DEPTH=3 FORMAT=$fmt &&
        "$RT" scenes/spd/rings-1.nff -o "$OUT/$fmt-$size-host.png" --size $size --depth 3 --format $fmt --quiet &&
        cmp=$("$RT" compare "$OUT/$fmt-$size-board.png" "$OUT/$fmt-$size-host.png" --max-error 0); then
         ok "rings-1 $fmt $size: board == host fixed ($cmp)"
@@ -86,7 +91,7 @@ while d[j:j+1] == b"B":
         assert d[j + 5 + r * lb + lb - 1] & 15 == 0
     rows += n; j += 5 + n * lb + 4
 assert rows == h
-' build/board/rings-1-47x31-d3-l4/fixed.stream 2>"$OUT/l4-pad.err"; then
+' build/board/mps2-an385/rings-1-47x31-d3-l4/fixed.stream 2>"$OUT/l4-pad.err"; then
     ok "l4 at width 47: the last nibble of every line in the stream is 0"
 else
     bad "l4 at width 47: padding nibble not 0 or stream unreadable: $(tail -1 "$OUT/l4-pad.err")"
@@ -98,13 +103,13 @@ make -s firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >"$OUT/default.
 d=$(fwdir showpiece 128x128)
 bad_syms=$(arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|__aeabi_f.*|__aeabi_d.*|__aeabi_[fd]2.*)$')
 [ -z "$bad_syms" ] && ok "fixed firmware links no heap or soft-float symbol" || bad "fixed firmware links: $bad_syms"
-make -s "$d/double.elf" SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
+make -s firmware BACKEND=double SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
 arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
     ok "control: the soft-float build does link __aeabi_dmul" ||
     bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"
 
 # Footprint budgets of the default scene at depth 5.
-if platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/default.png" "$RT" >"$OUT/default.report" 2>&1; then
+if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 RUN_OUT="$OUT/default.png" RUN_RT="$RT" >"$OUT/default.report" 2>&1; then
     eval "$(arm-none-eabi-size -A "$d/fixed.elf" | awk '
         $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" { code += $2 }
         $1 == ".data" || $1 == ".bss" { ram += $2 }
@@ -140,9 +145,7 @@ fi
 # the stack inside its budget and the image equal to the host's.
 mir="$OUT/mirrors.nff"
 printf 'b 0 0 0\nv\nfrom 0.5 -1.5 0.3\nat 0 3 0\nup 0 0 1\nangle 60\nhither 1\nresolution 32 32\nl 0 0 0.9\nf 1 1 1 0.05 1 50 0 1\np 4\n-3 -3 -1\n3 -3 -1\n3 3 -1\n-3 3 -1\np 4\n-3 -3 1\n-3 3 1\n3 3 1\n3 -3 1\nf 0.9 0.2 0.2 0.8 0.2 10 0.5 1.5\ns 0 2 0 0.4\n' >"$mir"
-d=build/board/mirrors-32x32-d5-rgb888
-if make -s firmware SCENE="$mir" SIZE=32x32 DEPTH=5 >"$OUT/mirrors.build" 2>&1 &&
-   platform/mps2-an385/qemu-run.sh "$d/fixed.elf" "$OUT/mirrors-board.png" "$RT" >"$OUT/mirrors.report" 2>&1 &&
+if fw mirrors SCENE="$mir" SIZE=32x32 DEPTH=5 &&
    "$RT" "$mir" -o "$OUT/mirrors-host.png" --size 32x32 --depth 5 --quiet &&
    "$RT" compare "$OUT/mirrors-board.png" "$OUT/mirrors-host.png" --max-error 0 >/dev/null; then
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/mirrors.report")

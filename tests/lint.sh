@@ -35,15 +35,17 @@ check "platform/hosted/backend.c (double, fixed tolerances)" $HOSTED $DOUBLE -DR
 
 # The firmware: fixed (make run), double and float (the soft-float
 # comparison builds), and main.c's RGB565 framebuffer.
-BOARD="-Isrc -Iplatform/mps2-an385 -DBOARD_WIDTH=64 -DBOARD_HEIGHT=64 -DBOARD_DEPTH=5 -DRT_USE_SPD=0"
-check "platform/mps2-an385/ (fixed)" $BOARD platform/mps2-an385/
-check "platform/mps2-an385/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=RT_FB_RGB565 platform/mps2-an385/main.c
-check "platform/mps2-an385/ (double)" $BOARD $DOUBLE platform/mps2-an385/
-check "platform/mps2-an385/ (float)" $BOARD $FLOAT platform/mps2-an385/
+# Every board folder and architecture folder with the common firmware.
+BOARD="-Isrc -Iplatform/firmware -DBOARD_WIDTH=64 -DBOARD_HEIGHT=64 -DBOARD_DEPTH=5 -DRT_USE_SPD=0"
+PORTS="platform/firmware/ platform/arch/ $(ls -d platform/*/ | grep -v -e platform/firmware/ -e platform/arch/ -e platform/hosted/)"
+check "platform/firmware/ and every port (fixed)" $BOARD $PORTS
+check "platform/firmware/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=RT_FB_RGB565 platform/firmware/main.c
+check "platform/firmware/ (double)" $BOARD $DOUBLE platform/firmware/
+check "platform/firmware/ (float)" $BOARD $FLOAT platform/firmware/
 
 # The embedding example (tests/consumer/): main.c sees only rt.h.
 check "tests/consumer/ (host)" -Isrc tests/consumer/main.c tests/consumer/out_host.c
-check "tests/consumer/ (board)" -Isrc -Iplatform/mps2-an385 tests/consumer/out_mps2.c
+check "tests/consumer/ (board)" -Isrc -Iplatform/firmware tests/consumer/out_mps2.c
 
 echo "lint: $pass passed, $fail failed"
 [ $fail -eq 0 ]

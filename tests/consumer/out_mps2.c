@@ -1,6 +1,6 @@
 /* out_mps2.c - the consumer's output on the MPS2 AN385: UART0, which
  * QEMU's -nographic connects to its stdout. */
-#include "board.h"
+#include "port.h"
 
 int out_write(const void *p, size_t n);
 
@@ -8,9 +8,9 @@ int out_write(const void *p, size_t n)
 {
     static int ready;
     if (!ready) {
-        uart_init();
+        port_init();
         ready = 1;
     }
-    uart_write(p, n);
+    port_write(p, n);
     return 0;
 }

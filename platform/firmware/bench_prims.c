@@ -2,12 +2,12 @@
  * bench_prims.c - firmware that measures the cost of intersection tests:
  * 32x32 eye rays of the built-in scene (one primitive) go to
  * scene_nearest, and the instructions per ray, minus those of making the
- * ray, are reported per test. Built as prims.elf by board.mk.
+ * ray, are reported per test. Built as prims.elf by firmware.mk.
  */
-#include "board.h"
 #include "board_scene.h"
+#include "port.h"
 #include "camera.h"
-#include "fb_uart.h"
+#include "sink.h"
 #include "scene_hit.h"
 #include "trace.h"
 
@@ -18,21 +18,21 @@ int main(void)
     static rt_error_t err;
     static rt_stats_t st;
     static camera_t cam;
-    uart_init();
-    icount_start();
+    port_init();
+    port_icount_start();
     const scene_t *sc = board_scene(&err);
     if (!sc || camera_init(&cam, &sc->view, GRID, GRID)) {
-        uart_report("scene or camera failed");
+        report_text("scene or camera failed");
         return 2;
     }
     volatile real_t sink = 0;
-    uint64_t t0 = icount_read();
+    uint64_t t0 = port_icount_read();
     for (int j = 0; j < GRID; j++)
         for (int i = 0; i < GRID; i++)
             sink += camera_ray(&cam, i, j).dir.x;
-    uint64_t rays_only = icount_read() - t0;
+    uint64_t rays_only = port_icount_read() - t0;
     uint32_t hits = 0;
-    t0 = icount_read();
+    t0 = port_icount_read();
     for (int j = 0; j < GRID; j++)
         for (int i = 0; i < GRID; i++) {
             ray_t r = camera_ray(&cam, i, j);
@@ -40,12 +40,12 @@ int main(void)
             h.t = RT_T_FAR;
             hits += scene_nearest(sc, &r, RT_T_MIN, &h, &st);
         }
-    uint64_t total = icount_read() - t0 - rays_only;
+    uint64_t total = port_icount_read() - t0 - rays_only;
     uint64_t tests = rt_stats_tests(&st);
-    uart_report_value("rays", (uint64_t)GRID * GRID);
-    uart_report_value("hits", hits);
-    uart_report_value("tests", tests);
-    uart_report_value("instructions_per_test", tests ? (total + tests / 2) / tests : 0);
+    report_value("rays", (uint64_t)GRID * GRID);
+    report_value("hits", hits);
+    report_value("tests", tests);
+    report_value("instructions_per_test", tests ? (total + tests / 2) / tests : 0);
     (void)sink;
     return 0;
 }

@@ -4,7 +4,7 @@
 # the measured stack high-water mark.
 elf=$1 objdir=$2 report=$3
 here=$(dirname "$0")
-arm-none-eabi-size -A "$elf" | awk '
+${CROSS:-arm-none-eabi-}size -A "$elf" | awk '
     $1 ~ /^\./ && $2 ~ /^[0-9]+$/ && $1 !~ /^\.(debug|comment|ARM\.attributes)/ { printf "  %-12s %8d bytes\n", $1, $2; s[$1] = $2 }
     END {
         code = s[".vectors"] + s[".text"] + s[".ARM.exidx"]
@@ -12,13 +12,13 @@ arm-none-eabi-size -A "$elf" | awk '
         printf "ram:   data+bss %d bytes\n", s[".data"] + s[".bss"]
     }'
 # the stack region itself (its section also holds alignment padding)
-lim=$(arm-none-eabi-nm "$elf" | awk '$3 == "__stack_limit" { print $1 }')
-top=$(arm-none-eabi-nm "$elf" | awk '$3 == "__stack_top" { print $1 }')
+lim=$(${CROSS:-arm-none-eabi-}nm "$elf" | awk '$3 == "__stack_limit" { print $1 }')
+top=$(${CROSS:-arm-none-eabi-}nm "$elf" | awk '$3 == "__stack_top" { print $1 }')
 echo "ram:   stack region $((0x${top:-0} - 0x${lim:-0})) bytes (separate)"
-hex=$(arm-none-eabi-nm -S "$elf" | awk '$4 == "band" { print $2 }')
+hex=$(${CROSS:-arm-none-eabi-}nm -S "$elf" | awk '$4 == "band" { print $2 }')
 echo "ram:   of which band buffer $((0x${hex:-0})) bytes"
-python3 "$here/stack_usage.py" "$objdir" --root Reset_Handler --depth "${DEPTH:-5}" \
-    --indirect uart_begin,uart_flush,uart_end
+python3 "$here/stack_usage.py" "$objdir" --root main --depth "${DEPTH:-5}" \
+    --indirect "${SINK_CALLBACKS:-stream_begin,stream_flush,stream_end}"
 if [ -n "$report" ] && [ -f "$report" ]; then
     grep -E '^stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'
 fi

@@ -1,13 +1,13 @@
 #!/bin/sh
-# qemu-run.sh FIRMWARE.elf OUT.png RT [CLOCK_HZ]: run the firmware on the
-# emulated board, decode its UART stream into OUT.png and print its report
+# run.sh FIRMWARE.elf OUT.png RT [CLOCK_HZ]: run the firmware on the
+# emulated board ($QEMU: the QEMU binary and machine, from board.mk), decode its UART stream into OUT.png and print its report
 # lines, then how long QEMU took on the host and, given CLOCK_HZ, how long
 # the render would take on a board at that clock.
 # Exits non-zero when QEMU, the firmware or the stream fails.
 elf=$1 out=$2 rt=$3 hz=$4
 stream="${elf%.elf}.stream"
 t0=$(date +%s.%N)
-timeout 900 qemu-system-arm -M mps2-an385 -nographic -monitor none \
+timeout 900 $QEMU -nographic -monitor none \
     -semihosting-config enable=on,target=native -icount shift=0 \
     -kernel "$elf" </dev/null >"$stream"
 status=$?
@@ -21,7 +21,7 @@ if [ $status -ne 0 ]; then
 fi
 [ $rx -ne 0 ] && exit $rx
 # -icount shift=0 counts one instruction per virtual ns, not cycles; a real
-# Cortex-M3 takes more than one cycle for loads, branches and divisions
+# core takes more than one cycle for loads, branches and divisions
 # (and waits on flash), so the real time is likely longer.
 if [ -n "$hz" ]; then
     printf '%s\n' "$report" | awk -v hz="$hz" '$1 == "render_instructions" {

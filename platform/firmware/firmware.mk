@@ -1,0 +1,177 @@
+# firmware.mk - the firmware of every board, built per (board, scene,
+# size, depth, pixel format, backend). Included by the top-level Makefile;
+# SCENE, SIZE, DEPTH, FORMAT and NAME come from there.
+#
+#   make run  [BOARD=<QEMU machine>] [BACKEND=fixed|float] [SCENE=..] [SIZE=WxH] [DEPTH=N] [FORMAT=..]
+#   make firmware | size | board-run RUN_OUT=x.png   (the same variables)
+#
+# The port contract (platform/firmware/port.h): a board folder
+# platform/<BOARD>/ holds board.mk, which sets
+#   BOARD_ARCH      platform/arch/<arch>/ brings reset and exit (cortex-m, riscv)
+#   BOARD_CROSS     the cross toolchain's prefix (arm-none-eabi-)
+#   BOARD_CPU       compiler flags for the core (-mcpu=cortex-m3 -mthumb)
+#   BOARD_FPU       flags of a hard-float build (empty: no FPU)
+#   BOARD_QEMU      QEMU and its machine (qemu-system-arm -M mps2-an385)
+#   BOARD_PACKAGES  the Debian packages it needs (make run installs them)
+#   BOARD_CLOCK_HZ  the core's clock, for the time make run prints
+#   BOARD_BACKENDS  what BACKEND may be (fixed, float, double)
+#   BOARD_SRC       its C files: port_init, port_write, port_icount_*
+#   BOARD_LD        its linker script (MEMORY, then INCLUDE sections.ld)
+# and may set BOARD_SINK (a display sink's C file instead of the UART
+# stream, sink.h), BOARD_RUN (a run script instead of run.sh), BOARD_CFLAGS
+# (extra -D), FW_FORMAT (a pixel format the board insists on).
+#
+# Each (scene, size, depth, format) gets its own folder: the scene
+# compiler turns the NFF into const tables in flash plus a header saying
+# what the scene uses, and the firmware is built for exactly that.
+
+BOARD   ?= mps2-an385
+BACKEND ?= fixed
+BOARDS  := $(patsubst platform/%/board.mk,%,$(wildcard platform/*/board.mk))
+ifeq ($(filter $(BOARD),$(BOARDS)),)
+$(error BOARD=$(BOARD) is not a board of platform/*/board.mk: $(BOARDS))
+endif
+BOARD_FPU  :=
+BOARD_SINK := platform/firmware/sink_stream.c
+BOARD_RUN  := platform/firmware/run.sh
+include platform/$(BOARD)/board.mk
+ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
+$(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
+endif
+ifneq ($(FW_FORMAT),)
+override FORMAT := $(FW_FORMAT)
+endif
+
+FW_CC   = $(BOARD_CROSS)gcc
+FW_NM   = $(BOARD_CROSS)nm
+FW_SIZE = $(BOARD_CROSS)size
+
+# Flash tables make these limits of the scene compiler, not of RAM.
+BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
+             -DRT_MAX_VERTICES=32768 -DRT_MAX_LIGHTS=16 -DRT_MAX_MATERIALS=128
+
+W := $(word 1,$(subst x, ,$(SIZE)))
+H := $(word 2,$(subst x, ,$(SIZE)))
+# FORMAT: a name of RT_FB_FORMATS (src/rt_fb.h), lower case: rgb888 -> RT_FB_RGB888.
+FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
+# PRUNE=1 (default): code for primitive kinds and shading features the
+# scene does not use is compiled out (RT_USE_* from scene_data.h).
+PRUNE ?= 1
+# CONFIG picks a numeric configuration of the fixed backend (CFG_* in the
+# Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12, q24.
+CONFIG ?= q20
+CFG_FLAGS := $(CFG_$(CONFIG))
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
+FW_ELF := $(FW_DIR)/$(BACKEND).elf
+SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
+
+FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
+            -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
+            $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
+            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
+FW_LDFLAGS = $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections
+
+# Per backend: fixed point; float with the board's FPU when it has one
+# (else soft-float); double, soft-float (what a user without this project
+# would run: the benchmark's comparison).
+FW_FLAGS_fixed  = $(BOARD_FPU)
+FW_FLAGS_float  = $(BOARD_FPU) -DRT_BACKEND_FLOAT=1 -fno-math-errno -ffp-contract=off
+FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
+
+# The firmware's files: the core, the board-independent firmware, the
+# architecture's reset and exit, the board's own, the display sink.
+FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c \
+              platform/firmware/libc_min.c $(BOARD_SINK) $(wildcard platform/arch/$(BOARD_ARCH)/*.c) \
+              $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)
+FW_SRC_DIRS = src platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
+CORE_NAMES = $(notdir $(CORE_SRC:.c=))
+FW_NAMES = $(CORE_NAMES) $(basename $(notdir $(FW_PORT_SRC)))
+
+# ---- scene compiler (a host tool, with the firmware's capacities) -------
+
+$(SCENEC_DIR)/%.o: src/%.c $(wildcard src/*.h) platform/firmware/firmware.mk
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -c $< -o $@
+
+$(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES)) \
+                         $(wildcard platform/hosted/*.h) $(wildcard src/*.h)
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -Iplatform/hosted -o $@ \
+	    $(filter %.c %.o,$^)
+
+# ---- firmware ------------------------------------------------------------
+
+$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scenec
+	@mkdir -p $(@D)
+	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
+
+$(FW_DIR)/scene_text_data.c: $(SCENE) $(SCENEC_DIR)/rt-scenec $(FW_DIR)/scene_data.h
+	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $@ --text
+
+# $(1) backend, $(2) a folder of sources
+define firmware_objs
+$(FW_DIR)/$(1)/%.o: $(2)/%.c $(wildcard src/*.h platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
+	@mkdir -p $$(@D)
+	$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) -c $$< -o $$@
+$(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk
+	@mkdir -p $$(@D)
+	$$(FW_CC) $$(BOARD_CPU) $$(FW_FLAGS_$(1)) -c $$< -o $$@
+endef
+$(foreach b,$(BOARD_BACKENDS),$(foreach d,$(FW_SRC_DIRS) $(FW_DIR),$(eval $(call firmware_objs,$(b),$(d)))))
+
+FW_OBJS_fixed  = $(patsubst %,$(FW_DIR)/fixed/%.o,$(FW_NAMES) scene_flash scene_data)
+FW_OBJS_float  = $(patsubst %,$(FW_DIR)/float/%.o,$(FW_NAMES) scene_text scene_text_data)
+FW_OBJS_double = $(patsubst %,$(FW_DIR)/double/%.o,$(FW_NAMES) scene_text scene_text_data)
+PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fixed/bench_prims.o
+
+$(FW_DIR)/fixed.elf: $(FW_OBJS_fixed) $(BOARD_LD) platform/firmware/sections.ld
+	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -Wl,-Map=$(FW_DIR)/fixed.map -o $@ $(FW_OBJS_fixed) -lgcc
+
+# The floating-point builds read the embedded NFF text at boot and build
+# their BVH there, hence the larger stack and libm (soft-float: what a
+# user without this project would run).
+define float_elf
+$(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) platform/firmware/sections.ld
+	$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/$(1).map \
+	    -o $$@ $$(FW_OBJS_$(1)) -lm -lc -lgcc
+endef
+$(eval $(call float_elf,float))
+$(eval $(call float_elf,double))
+
+# The intersection-cost probe (bench/prims-bench.sh): no frame, just tests.
+$(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
+	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
+
+firmware: $(FW_ELF)
+
+# ---- running it ------------------------------------------------------------
+
+RUN_RT  ?= build/host/rt
+RUN_OUT ?= out/$(NAME)-$(BOARD)-$(BACKEND).png
+# The reference is the double build in the board's pixel format, so with
+# FORMAT=rgb565 the figure is the renderer's error, not the format's.
+RUN_REF = out/$(NAME)-double$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
+RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMAT) as well,the exact double reference)
+
+# Run the built firmware: RUN_OUT gets the image, stdout the report.
+board-run:
+	@QEMU="$(BOARD_QEMU)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
+
+run: deps-board
+	$(MAKE) build/host/rt $(FW_ELF)
+	@mkdir -p out
+	@$(MAKE) -s board-run >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
+	@build/host/rt $(SCENE) -o $(RUN_REF) --double --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)) vs $(RUN_REF_IS): '
+	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
+	@echo "image: $(RUN_OUT)"
+
+size: $(FW_ELF)
+	@CROSS=$(BOARD_CROSS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
+
+print-fwdir:
+	@echo $(FW_DIR)
+
+# the board's facts for scripts: make -s board-info BOARD=..
+board-info:
+	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT)"
