@@ -27,6 +27,7 @@ run tests/reference-tests.sh "$B/rt" "$B/test-reference"
 run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
+run tests/ports-tests.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
 run tests/examples-tests.sh "$B/rt" "$B/test-examples"
 run python3 tests/stress.py --quick

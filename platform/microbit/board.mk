@@ -1,0 +1,12 @@
+# board.mk - BBC micro:bit (nRF51822) under QEMU: a Cortex-M0 at 16 MHz,
+# 256 KiB flash, 16 KiB RAM, no FPU and no 32x32->64 multiply (the fixed
+# layer's ARMv6-M path, src/fx.h). Variables: platform/firmware/firmware.mk.
+BOARD_ARCH     := cortex-m
+BOARD_CROSS    := arm-none-eabi-
+BOARD_CPU      := -mcpu=cortex-m0 -mthumb
+BOARD_QEMU     := qemu-system-arm -M microbit
+BOARD_PACKAGES := gcc-arm-none-eabi qemu-system-arm
+BOARD_CLOCK_HZ ?= 16000000
+BOARD_BACKENDS := fixed
+BOARD_SRC      := platform/microbit/board.c
+BOARD_LD       := platform/microbit/link.ld

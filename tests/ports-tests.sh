@@ -1,0 +1,100 @@
+#!/bin/sh
+# Every board and backend (platform/*/board.mk, BOARD_BACKENDS) at 32x32,
+# depth 5, on SPD balls-2 (the full matrix is make bench's):
+#  - identity: the board's image is byte-identical to the host build of
+#    the same backend (rt --fixed / --float) in the board's pixel format,
+#    and the core's counters in its report equal rt --stats;
+#  - budgets from the linked ELF: no heap; no soft-float helper in a fixed
+#    build; no __aeabi_f*/__aeabi_d* in a hard-float build; flash (code,
+#    scene tables, data image) and RAM (data, bss, stack) within the
+#    board's memory as its linker script declares it;
+#  - from the run: the measured stack high-water mark inside the stack
+#    and its guard intact.
+# The double backend (soft-float everywhere) is the benchmark's cost
+# reference only: not tested for identity (two libms).
+RT=${1:-build/host/rt}
+OUT=build/test-ports
+mkdir -p "$OUT"
+pass=0 fail=0
+ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
+bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
+SOFT_FLOAT='^(__aeabi_[fd](add|sub|mul|div|cmp.*|2.*)|__aeabi_[ui]?[lu]?2[fd]|__aeabi_[fd]2.*|__(add|sub|mul|div)[sd]f3|__float[a-z]*[sd]f|__fix[a-z]*[sd]f[a-z]*|__extendsfdf2|__truncdfsf2|__(eq|ne|lt|le|gt|ge|un)[sd]f2)$'
+HEAP='^(malloc|free|calloc|realloc|_sbrk|sbrk|_malloc_r)$'
+
+echo "ports: every board and backend against the host"
+for b in $(ls platform/*/board.mk | cut -d/ -f2); do
+    eval "$(make -s board-info BOARD=$b SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5)"
+    for be in $backends; do
+        [ $be = double ] && continue
+        for s in scenes/spd/balls-2.nff; do
+            t0=$(date +%s)
+            n=$b-$be-$(basename $s .nff)
+            vars="BOARD=$b BACKEND=$be SCENE=$s SIZE=32x32 DEPTH=5"
+            if ! make -s -j2 firmware $vars >"$OUT/$n.build" 2>&1; then
+                bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
+                continue
+            fi
+            eval "$(make -s board-info $vars)"
+            if ! make -s board-run $vars RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
+                bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
+                continue
+            fi
+            "$RT" $s -o "$OUT/$n-host.png" --$be --size 32x32 --depth 5 --format $format --quiet --stats \
+                2>"$OUT/$n-host.stats"
+            ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$n.report")
+            if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
+                ok "$n: board == host $be ($format), $ipp instructions/pixel ($(($(date +%s) - t0)) s)"
+            else
+                bad "$n: board and host $be differ: $cmp"
+            fi
+            same=$(awk 'NR == FNR { host[$1] = $2; next }
+                        ($1 in host) { n++; if (host[$1] != $2) { print "differ: " $1 " board " $2 " host " host[$1]; bad = 1 } }
+                        END { if (!bad) print n " counters equal" }' "$OUT/$n-host.stats" "$OUT/$n.report")
+            case $same in
+                1[0-9]" counters equal") ok "$n: report and rt --stats: $same" ;;
+                *) bad "$n: report and rt --stats: $same" ;;
+            esac
+            # budgets from the ELF
+            syms=$(${cross}nm "$elf" | awk '{ print $NF }')
+            found=$(echo "$syms" | grep -E "$HEAP" | tr '\n' ' ')
+            if [ $be = fixed ]; then
+                found="$found$(echo "$syms" | grep -E "$SOFT_FLOAT" | tr '\n' ' ')"
+                what="heap or soft-float helper"
+            elif [ -n "$fpu" ]; then
+                found="$found$(echo "$syms" | grep -E '^__aeabi_[fd]' | tr '\n' ' ')"
+                what="heap or __aeabi_f*/__aeabi_d* (hard-float)"
+            else
+                what="heap"
+            fi
+            [ -z "$found" ] && ok "$n: links no $what" || bad "$n: links $what: $found"
+            map="${elf%.elf}.map"
+            eval "$(awk '/^Memory Configuration/ { m = 1 } m && $1 == "FLASH" { printf "flash=%d ", strtonum($3) }
+                        m && $1 == "RAM" { printf "ram=%d ", strtonum($3) } /^Linker script/ { m = 0 }' "$map" 2>/dev/null ||
+                   python3 -c '
+import re, sys
+t = open(sys.argv[1]).read().split("Linker script")[0]
+for n in ("FLASH", "RAM"):
+    m = re.search(r"^" + n + r"\s+0x[0-9a-f]+\s+(0x[0-9a-f]+)", t, re.M)
+    print("%s=%d" % (n.lower(), int(m.group(1), 16)), end=" ")' "$map")"
+            eval "$(${cross}size -A "$elf" | awk '
+                $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" || $1 == ".scene" { fl += $2 }
+                $1 == ".data" { fl += $2; ram += $2 } $1 == ".bss" || $1 == ".stack" { ram += $2 }
+                END { printf "used_flash=%d used_ram=%d\n", fl, ram }')"
+            if [ "${flash:-0}" -gt 0 ] && [ "$used_flash" -le "$flash" ] && [ "${ram:-0}" -gt 0 ] && [ "$used_ram" -le "$ram" ]; then
+                ok "$n: flash $used_flash of $flash bytes, RAM $used_ram of $ram bytes (data, bss, stack)"
+            else
+                bad "$n: flash $used_flash of ${flash:-?}, RAM $used_ram of ${ram:-?} bytes"
+            fi
+            hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/$n.report")
+            sz=$(awk '$1 == "stack_size" { print $2 }' "$OUT/$n.report")
+            guard=$(awk '$1 == "stack_guard_intact" { print $2 }' "$OUT/$n.report")
+            if [ -n "$hw" ] && [ "$hw" -lt "$sz" ] && [ "$guard" = 1 ]; then
+                ok "$n: stack high-water $hw of $sz bytes, guard intact"
+            else
+                bad "$n: stack high-water ${hw:-?} of ${sz:-?} bytes, guard ${guard:-?}"
+            fi
+        done
+    done
+done
+echo "ports: $pass passed, $fail failed"
+[ $fail -eq 0 ]
