@@ -142,6 +142,8 @@ bench: deps
 	@sh bench/prims-bench.sh
 	@echo
 	@sh bench/lib-size.sh
+	@echo
+	python3 bench/boards_bench.py
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

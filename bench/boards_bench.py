@@ -1,0 +1,158 @@
+#!/usr/bin/env python3
+"""Every board and backend: instructions and estimated cycles per pixel, error.
+
+For each board (platform/*/board.mk), each backend it offers and each
+scene (the SPD size-1 and size-2 scenes and the default scene) it builds
+the firmware at 64x64, depth 5, runs it under QEMU (-icount shift=0: exact
+instruction counts) and records
+  - instructions per pixel inside the render (the firmware's own count);
+  - estimated cycles per pixel: the run's instruction mix priced with the
+    core's documented timings (bench/cycles.py, which states the model),
+    measured on a 32x32 render of the same scene and applied to the 64x64
+    count as cycles per instruction (--cycles-scenes picks the scenes;
+    others get none);
+  - PSNR and max channel error against the exact double reference (the
+    host's rt --double at the same size, in the board's pixel format);
+  - code (text + vectors + exidx) and static RAM (data + bss) of the ELF.
+It writes bench/boards.md and bench/boards.csv.
+
+  bench/boards_bench.py [--boards a,b] [--scenes a,b] [--cycles-scenes a,b] [--no-cycles]
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+OUT = os.path.join(ROOT, "build", "bench-boards")
+SCENES = ["balls-1", "gears-1", "rings-1", "teapot-1", "tetra-1",
+          "balls-2", "rings-2", "teapot-2", "tetra-2", "showpiece"]
+CYCLE_SCENES = ["balls-2", "showpiece"]
+SIZE = "64x64"
+CYCLE_SIZE = "32x32"
+# core of each board for the cycle model (bench/cycles.py --core)
+CORES = {"mps2-an385": "m3", "lm3s6965evb": "m3", "mps2-an386": "m4", "microbit": "m0", "sifive_e": "e31"}
+
+
+def run(cmd, check=True):
+    return subprocess.run(cmd, cwd=ROOT, check=check, capture_output=True, text=True)
+
+
+def scene_path(scene):
+    p = os.path.join("scenes", "spd", scene + ".nff")
+    return p if os.path.exists(os.path.join(ROOT, p)) else os.path.join("scenes", scene + ".nff")
+
+
+def board_info(args):
+    line = run(["make", "-s", "board-info"] + args).stdout
+    return dict(t.split("=", 1) for t in shlex.split(line))
+
+
+def boards():
+    return sorted(d for d in os.listdir(os.path.join(ROOT, "platform"))
+                  if os.path.exists(os.path.join(ROOT, "platform", d, "board.mk")))
+
+
+def code_ram(cross, elf):
+    out = run([cross + "size", "-A", elf]).stdout
+    sec = {m.group(1): int(m.group(2)) for m in re.finditer(r"^(\.\S+)\s+(\d+)", out, re.M)}
+    code = sum(sec.get(s, 0) for s in (".vectors", ".text", ".ARM.exidx"))
+    return code, sec.get(".data", 0) + sec.get(".bss", 0)
+
+
+def measure(board, backend, scene, size):
+    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size, "DEPTH=5"]
+    r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
+    if r.returncode:
+        return None
+    info = board_info(args)
+    png = os.path.join(OUT, "%s-%s-%s-%s.png" % (board, backend, scene, size))
+    r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
+    m = re.search(r"^instructions_per_pixel (\d+)$", r.stdout, re.M)
+    if r.returncode or not m:
+        return None
+    return {"ipp": int(m.group(1)), "png": png, "info": info, "args": args}
+
+
+def error(scene, png, fmt, size):
+    ref = os.path.join(OUT, "ref-%s-%s-%s.png" % (scene, fmt, size))
+    if not os.path.exists(ref):
+        run(["build/host/rt", scene_path(scene), "-o", ref, "--double", "--size", size, "--depth", "5",
+             "--format", fmt, "--quiet"])
+    line = run(["build/host/rt", "compare", png, ref], check=False).stdout
+    m = re.search(r"psnr (\S+) dB\s+max-error (\d+)", line)
+    return (math.inf if m.group(1) == "inf" else float(m.group(1))), int(m.group(2))
+
+
+def cpi(board, backend, scene, info):
+    core = CORES.get(board)
+    if not core or not os.path.exists(os.path.join(ROOT, "bench", "cycles.py")):
+        return None
+    m = measure(board, backend, scene, CYCLE_SIZE)
+    if not m:
+        return None
+    elf = m["info"]["elf"]
+    qemu = "qemu-system-riscv32" if board == "sifive_e" else "qemu-system-arm"
+    r = run([sys.executable, "bench/cycles.py", elf, "--core", core, "--qemu", qemu, "--machine", board,
+             "--from-symbol", "rt_render", "--json"], check=False)
+    m = re.search(r'"cpi":\s*([0-9.]+)', r.stdout)
+    return float(m.group(1)) if m else None
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--boards", default="")
+    ap.add_argument("--scenes", default="")
+    ap.add_argument("--cycles-scenes", default=",".join(CYCLE_SCENES))
+    ap.add_argument("--no-cycles", action="store_true")
+    a = ap.parse_args()
+    os.makedirs(OUT, exist_ok=True)
+    run(["make", "-s", "build/host/rt"])
+    sel_boards = a.boards.split(",") if a.boards else boards()
+    scenes = a.scenes.split(",") if a.scenes else SCENES
+    cyc_scenes = [] if a.no_cycles else a.cycles_scenes.split(",")
+    rows = []
+    for b in sel_boards:
+        backends = board_info(["BOARD=" + b])["backends"].split()
+        for be in backends:
+            for s in scenes:
+                m = measure(b, be, s, SIZE)
+                if not m:
+                    print("%-12s %-7s %-10s failed" % (b, be, s), flush=True)
+                    rows.append({"board": b, "backend": be, "scene": s})
+                    continue
+                psnr, maxerr = error(s, m["png"], m["info"]["format"], SIZE)
+                code, ram = code_ram(m["info"]["cross"], m["info"]["elf"])
+                c = cpi(b, be, s, m["info"]) if s in cyc_scenes else None
+                row = {"board": b, "backend": be, "scene": s, "ipp": m["ipp"],
+                       "cpi": "%.3f" % c if c else "", "cpp": round(m["ipp"] * c) if c else "",
+                       "psnr": "inf" if psnr == math.inf else "%.2f" % psnr, "max_error": maxerr,
+                       "code": code, "ram": ram}
+                rows.append(row)
+                print("%-12s %-7s %-10s %8d instr/px %8s cycles/px %8s dB  code %6d  ram %7d" % (
+                    b, be, s, m["ipp"], row["cpp"], row["psnr"], code, ram), flush=True)
+    keys = ["board", "backend", "scene", "ipp", "cpi", "cpp", "psnr", "max_error", "code", "ram"]
+    with open(os.path.join(ROOT, "bench", "boards.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in keys})
+    with open(os.path.join(ROOT, "bench", "boards.md"), "w") as f:
+        f.write("# Boards and backends (bench/boards_bench.py)\n\n")
+        f.write("64x64, depth 5; instructions per pixel inside the render (QEMU -icount shift=0);\n"
+                "cycles per pixel estimated from the instruction mix of a 32x32 render priced with\n"
+                "the core's documented timings (bench/cycles.py); PSNR and max error against the\n"
+                "exact double reference in the board's pixel format; code and static RAM of the ELF.\n\n")
+        f.write("| board | backend | scene | instr/px | est. cycles/px | CPI | PSNR (dB) | max error | code (B) | RAM (B) |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            f.write("| %s |\n" % " | ".join(str(r.get(k, "failed" if k == "ipp" else "")) for k in keys))
+    print("wrote bench/boards.md and bench/boards.csv")
+
+
+if __name__ == "__main__":
+    main()
