@@ -25,15 +25,13 @@ uint64_t fx_umul64_call(uint32_t a, uint32_t b) { return fx_umul64_inline(a, b);
 #endif
 
 /* Signed products of 64-bit operands through fx_umul64x: where the signed
- * product is defined, its bits are the same. */
-static inline int64_t smul64(int64_t a, int64_t b)
-{
+ * product is defined, its bits are the same. (The plain path is a macro so
+ * that its code stays exactly the product written out.) */
 #if FX_MUL64_PARTIAL
-    return (int64_t)fx_umul64x((uint64_t)a, (uint64_t)b);
+static inline int64_t smul64(int64_t a, int64_t b) { return (int64_t)fx_umul64x((uint64_t)a, (uint64_t)b); }
 #else
-    return a * b;
+#define smul64(a, b) ((int64_t)(a) * (b))
 #endif
-}
 
 /* Leading zero bits of a non-zero 64-bit value (CLZ on the M3). */
 static int clz64(uint64_t v)

@@ -85,8 +85,9 @@ static inline int64_t fx_round_shift(int64_t v, unsigned shift)
  *      sign-extending both operands at the call); this is 17 instructions
  *      of inline assembly (the default when __ARM_ARCH_6M__ is defined);
  *   2  the same partial products out of line (fx_mul64_call and
- *      fx_umul64_call in fx.c, 22 instructions with the call): smaller
- *      code than both 0 and 1 on ARMv6-M, a little slower than 1.
+ *      fx_umul64_call in fx.c; GCC still inlines them inside fx.c):
+ *      smaller code than both 0 and 1 on ARMv6-M, 3 to 6 instructions
+ *      more per product than 1 (bench/m0-mul.sh measures all three).
  * All three give the same bits for every input. The partial path is
  * inline assembly on ARMv6-M with GCC or clang (fewer instructions than
  * the C, which has no add-with-carry), and elsewhere (a host forcing the
