@@ -19,6 +19,20 @@ volatile uint32_t fx_saturations;
 #define EXP2_DEGREE 9
 #endif
 
+#if FX_MUL64_PARTIAL == 2
+int64_t fx_mul64_call(int32_t a, int32_t b) { return fx_mul64_inline(a, b); }
+uint64_t fx_umul64_call(uint32_t a, uint32_t b) { return fx_umul64_inline(a, b); }
+#endif
+
+/* Signed products of 64-bit operands through fx_umul64x: where the signed
+ * product is defined, its bits are the same. (The plain path is a macro so
+ * that its code stays exactly the product written out.) */
+#if FX_MUL64_PARTIAL
+static inline int64_t smul64(int64_t a, int64_t b) { return (int64_t)fx_umul64x((uint64_t)a, (uint64_t)b); }
+#else
+#define smul64(a, b) ((int64_t)(a) * (b))
+#endif
+
 /* Leading zero bits of a non-zero 64-bit value (CLZ on the M3). */
 static int clz64(uint64_t v)
 {
@@ -47,9 +61,9 @@ static uint32_t rsqrt_q31(uint32_t x)
     };
     uint64_t y = seed[(x >> 27) - 8];
     for (int i = 0; i < RSQRT_STEPS; i++) {
-        uint64_t y2 = (y * y) >> 31;                /* Q.31 */
-        uint64_t xy2 = ((uint64_t)x * y2) >> 30;    /* Q.31, close to 1 */
-        y = (y * (((uint64_t)3 << 31) - xy2)) >> 32;
+        uint64_t y2 = fx_umul64x(y, y) >> 31;       /* Q.31 */
+        uint64_t xy2 = fx_umul64x(x, y2) >> 30;     /* Q.31, close to 1 */
+        y = fx_umul64x(y, ((uint64_t)3 << 31) - xy2) >> 32;
     }
     return (uint32_t)y;
 }
@@ -70,20 +84,20 @@ static uint64_t isqrt64_round(uint64_t v)
     int s;
     uint32_t x = normalise_even(v, &s);
     /* sqrt(v) = (x / 2^30) (y / 2^31) 2^((62 - s) / 2) */
-    uint64_t r = ((uint64_t)x * rsqrt_q31(x)) >> (30 + s / 2);
+    uint64_t r = fx_umul64(x, rsqrt_q31(x)) >> (30 + s / 2);
 #if FX_FAST_MATH
     if (r > 0xFFFFFFFFu)
         r = 0xFFFFFFFFu;
-    if (r * r > v)
+    if (fx_umul64x(r, r) > v)
         r--;
 #else
-    while (r * r > v)
+    while (fx_umul64x(r, r) > v)
         r--;
-    while (r < 0xFFFFFFFFu && (r + 1) * (r + 1) <= v)
+    while (r < 0xFFFFFFFFu && fx_umul64x(r + 1, r + 1) <= v)
         r++;
 #endif
     /* (r + 1/2)^2 = r^2 + r + 1/4: round up when v - r^2 > r */
-    return v - r * r > r ? r + 1 : r;
+    return v - fx_umul64x(r, r) > r ? r + 1 : r;
 }
 
 /* 2^62 / x in Q.31 for x in [2^31, 2^32): a 16-bit estimate from one
@@ -92,8 +106,8 @@ static uint64_t isqrt64_round(uint64_t v)
 static uint32_t recip_q31(uint32_t x)
 {
     uint32_t y = (0xFFFFFFFFu / (x >> 16)) << 14;          /* within 2^-15 */
-    uint32_t two_minus_xy = 0u - (uint32_t)(((uint64_t)x * y) >> 31); /* 2^32 - x y */
-    return (uint32_t)(((uint64_t)y * two_minus_xy) >> 31);
+    uint32_t two_minus_xy = 0u - (uint32_t)(fx_umul64(x, y) >> 31); /* 2^32 - x y */
+    return (uint32_t)(fx_umul64(y, two_minus_xy) >> 31);
 }
 
 fx_t fx_div(fx_t a, fx_t b)
@@ -110,12 +124,12 @@ fx_t fx_div(fx_t a, fx_t b)
     int s = clz64(d) - 32;
     uint64_t y = recip_q31((uint32_t)(d << s));   /* 2^62 / (d 2^s) */
     int shift = 62 - FX_FRAC_BITS - s;            /* q = n y 2^-shift */
-    uint64_t ny = n * y;                          /* < 2^62 */
+    uint64_t ny = fx_umul64x(n, y);               /* < 2^62 */
     uint64_t q = shift >= 0 ? ny >> shift : (shift > -8 ? ny << -shift : UINT64_MAX);
     bool neg = (a < 0) != (b < 0);
     if (q > ((uint64_t)1 << 32))
         return fx_sat64(neg ? -((int64_t)1 << 32) : (int64_t)1 << 32);
-    int64_t r = (int64_t)(n << FX_FRAC_BITS) - (int64_t)(q * d);
+    int64_t r = (int64_t)(n << FX_FRAC_BITS) - (int64_t)fx_umul64x(q, d);
 #if !FX_FAST_MATH
     while (r < 0) {
         q--;
@@ -195,14 +209,14 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
     uint64_t len2 = 0;
     for (int i = 0; i < 3; i++) {
         v[i] = len_bits <= 28 ? v[i] * ((int64_t)1 << (28 - len_bits)) : v[i] >> (len_bits - 28);
-        len2 += (uint64_t)(v[i] * v[i]);
+        len2 += (uint64_t)smul64(v[i], v[i]);
     }
     /* 1 / |v| = (y / 2^31) 2^-((62 - s) / 2) */
     int s;
     int64_t r = rsqrt_q31(normalise_even(len2, &s));
     unsigned shift = (unsigned)(62 - s / 2 - FX_FRAC_BITS);
     for (int i = 0; i < 3; i++)
-        out[i] = (fx_t)fx_round_shift(v[i] * r, shift);
+        out[i] = (fx_t)fx_round_shift(smul64(v[i], r), shift);
 }
 
 /* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1). */
@@ -218,7 +232,7 @@ static int32_t log2_q24(fx_t x)
     int32_t result = (30 - s - FX_FRAC_BITS) * ((int32_t)1 << 24);
     uint64_t mm = m;
     for (int bit = 23; bit >= 24 - POW_LOG_BITS; bit--) {
-        mm = (mm * mm) >> 30;
+        mm = fx_umul64x(mm, mm) >> 30;
         if (mm >= ((uint64_t)2 << 30)) {
             mm >>= 1;
             result += (int32_t)1 << bit;
@@ -239,7 +253,7 @@ static uint64_t exp2_frac_q30(int32_t f_q24)
     uint64_t z = (uint64_t)f_q24 << 6; /* Q.30 */
     uint64_t p = coef[EXP2_DEGREE];
     for (int k = EXP2_DEGREE - 1; k >= 0; k--)
-        p = coef[k] + ((p * z) >> 30);
+        p = coef[k] + (fx_umul64x(p, z) >> 30);
     return p;
 }
 
@@ -250,7 +264,7 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s)
     if (x >= FX_ONE || s == 0)
         return FX_ONE;
     /* y = s * log2(x) in Q.24; below -(F+2) the result rounds to 0. */
-    int64_t y = ((int64_t)s * log2_q24(x)) / ((int64_t)1 << FX_SHINE_FRAC_BITS);
+    int64_t y = smul64(s, log2_q24(x)) / ((int64_t)1 << FX_SHINE_FRAC_BITS);
     if (y <= -(int64_t)(FX_FRAC_BITS + 2) * (1 << 24))
         return 0;
     int32_t yi = (int32_t)y;
@@ -264,7 +278,7 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s)
 
 /* Q.30 sin and cos of x in [0, pi/2] (Q.30), by nested Taylor series
  * to x^15 / x^16; truncation error below 1e-11. */
-static int64_t mul_q30(int64_t a, int64_t b) { return (a * b) / ((int64_t)1 << 30); }
+static int64_t mul_q30(int64_t a, int64_t b) { return smul64(a, b) / ((int64_t)1 << 30); }
 
 static int64_t sin_q30(int64_t x)
 {

@@ -165,7 +165,13 @@ static inline uint8_t r_to_u8(real_t c)
         return 0;
     if (c >= FX_ONE)
         return 255;
+#if FX_MUL64_PARTIAL
+    /* 0 < c < 2^F: c 255 + 2^(F-1) < 2^(F+8) fits 32 bits (F <= 24), one
+     * MULS instead of a 64-bit product (GCC narrows it itself on the M3) */
+    return (uint8_t)(((uint32_t)c * 255u + (uint32_t)FX_HALF) >> FX_FRAC_BITS);
+#else
     return (uint8_t)(((int64_t)c * 255 + FX_HALF) >> FX_FRAC_BITS);
+#endif
 }
 static inline bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
 {

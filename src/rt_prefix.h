@@ -21,11 +21,13 @@
 #define decimal_exp2_bound       rt_decimal_exp2_bound
 #define fx_div                   rt_fx_div
 #define fx_from_decimal          rt_fx_from_decimal
+#define fx_mul64_call            rt_fx_mul64_call
 #define fx_pow_unit              rt_fx_pow_unit
 #define fx_recip                 rt_fx_recip
 #define fx_sincos_deg            rt_fx_sincos_deg
 #define fx_sqrt                  rt_fx_sqrt
 #define fx_tan_deg_wide          rt_fx_tan_deg_wide
+#define fx_umul64_call           rt_fx_umul64_call
 #define fx_unit3                 rt_fx_unit3
 #define fx_wdiv                  rt_fx_wdiv
 #define fx_wdiv_fx               rt_fx_wdiv_fx

@@ -6,7 +6,13 @@
 #include <math.h>
 #include <stdlib.h>
 
+/* The board's wide-product path on the host: this file's inline fixed
+ * layer (fx_mul, fx_wmul, ...) computes its products from 16x16->32
+ * partial products (fx.h, FX_MUL64_PARTIAL), while fx.c, built without
+ * the macro, and the reference products below are the plain C product. */
+#define FX_MUL64_PARTIAL 1
 #include "fx.h"
+#include "real.h"
 #include "testlib.h"
 
 static const double ULP = 1.0 / FX_ONE;
@@ -161,6 +167,122 @@ static void test_decimal(void)
           "fx_from_decimal rejects %llu and -1e30 (out of range)", (unsigned long long)too_big);
 }
 
+/* The plain products the partial path must equal, bit for bit. The
+ * 64-bit one is taken modulo 2^64 (what fx_mul64x computes; equal to the
+ * signed product wherever that is defined). */
+static int64_t plain_mul64(int32_t a, int32_t b) { return (int64_t)a * b; }
+static uint64_t plain_umul64(uint32_t a, uint32_t b) { return (uint64_t)a * b; }
+static uint64_t plain_mul64x(int32_t a, int64_t b) { return (uint64_t)(int64_t)a * (uint64_t)b; }
+static uint64_t plain_umul64x(uint64_t a, uint64_t b) { return a * b; }
+
+static const int32_t mul_edges[] = {
+    0, 1, -1, 2, -2, 3, -3, 0x7FFF, -0x7FFF, 0x8000, -0x8000, 0x8001, -0x8001, 0xFFFF, -0xFFFF,
+    0x10000, -0x10000, 0x10001, -0x10001, 0x1FFFF, -0x1FFFF, 0x40000000, -0x40000000, 0x7FFF0000,
+    -0x7FFF0000, 0x7FFF8000, 0x7FFFFFFF, -0x7FFFFFFF, INT32_MIN, (int32_t)0x80000001u, (int32_t)0x8000FFFFu,
+    (int32_t)0xFFFF0000u, (int32_t)0xFFFF8000u, (int32_t)0xFFFF7FFFu, 0x0000FFFF, 0x55555555,
+    (int32_t)0xAAAAAAAAu, 0x12345678, (int32_t)0xDEADBEEFu, FX_ONE, -FX_ONE, FX_HALF, FX_ONE - 1,
+};
+#define N_MUL_EDGES (int)(sizeof mul_edges / sizeof mul_edges[0])
+
+/* a random 32-bit value: any bits, a random magnitude, or halves at the
+ * carry corners (0x0000, 0x7FFF, 0x8000, 0xFFFF) */
+static int32_t rnd_word(void)
+{
+    static const uint32_t half[] = { 0x0000u, 0x7FFFu, 0x8000u, 0xFFFFu };
+    uint64_t r = tl_rand();
+    switch (r & 3) {
+    case 0:
+        return (int32_t)(uint32_t)(r >> 32);
+    case 1:
+        return (int32_t)(uint32_t)(r >> 32) >> ((r >> 2) & 31);
+    case 2:
+        return (int32_t)((uint32_t)(r >> 32) << 16 | half[(r >> 2) & 3]);
+    default:
+        return (int32_t)(half[(r >> 2) & 3] << 16 | (uint32_t)(r >> 32) >> 16);
+    }
+}
+
+static void test_mul64(void)
+{
+    long bad_s = 0, bad_u = 0, bad_x = 0, bad_ux = 0, n = 0;
+    for (int i = 0; i < N_MUL_EDGES; i++)
+        for (int j = 0; j < N_MUL_EDGES; j++) {
+            int32_t a = mul_edges[i], b = mul_edges[j];
+            int64_t w = (int64_t)((uint64_t)(uint32_t)b << 32 | (uint32_t)mul_edges[(i + j) % N_MUL_EDGES]);
+            bad_s += fx_mul64(a, b) != plain_mul64(a, b);
+            bad_u += fx_umul64((uint32_t)a, (uint32_t)b) != plain_umul64((uint32_t)a, (uint32_t)b);
+            bad_x += (uint64_t)fx_mul64x(a, w) != plain_mul64x(a, w) ||
+                     (uint64_t)fx_mul64x(a, (int64_t)b) != plain_mul64x(a, (int64_t)b);
+            uint64_t wa = (uint64_t)(uint32_t)a << 32 | (uint32_t)b, wb = (uint64_t)w;
+            bad_ux += fx_umul64x(wa, wb) != plain_umul64x(wa, wb) ||
+                      fx_umul64x((uint32_t)a, wb) != plain_umul64x((uint32_t)a, wb);
+            n++;
+        }
+    CHECK(bad_s == 0 && bad_u == 0 && bad_x == 0 && bad_ux == 0,
+          "partial products on all %ld pairs of %d edge values: %ld signed, %ld unsigned, %ld 32x64, %ld 64x64 "
+          "differ from the plain product",
+          n, N_MUL_EDGES, bad_s, bad_u, bad_x, bad_ux);
+
+    bad_s = bad_u = bad_x = bad_ux = n = 0;
+    for (long i = 0; i < 4000000; i++) {
+        int32_t a = rnd_word(), b = rnd_word();
+        int64_t w = (int64_t)tl_rand() >> (tl_rand() & 63);
+        bad_s += fx_mul64(a, b) != plain_mul64(a, b);
+        bad_u += fx_umul64((uint32_t)a, (uint32_t)b) != plain_umul64((uint32_t)a, (uint32_t)b);
+        bad_x += (uint64_t)fx_mul64x(a, w) != plain_mul64x(a, w);
+        uint64_t wa = tl_rand() >> (tl_rand() & 63);
+        bad_ux += fx_umul64x(wa, (uint64_t)w) != plain_umul64x(wa, (uint64_t)w);
+        n++;
+    }
+    CHECK(bad_s == 0 && bad_u == 0 && bad_x == 0 && bad_ux == 0,
+          "partial products on %ld random pairs: %ld signed, %ld unsigned, %ld 32x64, %ld 64x64 differ from the "
+          "plain product",
+          n, bad_s, bad_u, bad_x, bad_ux);
+
+    /* the inline layer built on them, against the same formulas with the
+     * plain product, on random operands of tracer-like sizes and any */
+    long bad = 0;
+    n = 0;
+    for (long i = 0; i < 1000000; i++) {
+        int32_t a = rnd_word(), b = rnd_word(), c = rnd_word();
+        fx_t dx = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE; /* |d| <= 2, as fx_wsign_dot wants */
+        fx_t dy = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE;
+        fx_t dz = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE;
+        fx_wide_t nx = (int64_t)tl_rand() >> (tl_rand() & 63), ny = (int64_t)tl_rand() >> (tl_rand() & 63);
+        fx_wide_t nz = (int64_t)tl_rand() >> (tl_rand() & 63);
+        bad += fx_mul(a, b) != fx_sat64(fx_round_shift(plain_mul64(a, b), FX_FRAC_BITS));
+        bad += fx_wmul(a, b) != plain_mul64(a, b);
+        int64_t diff = (int64_t)a - b;
+        /* as its GNUC branch: saturated only outside int32 (INT32_MIN stays) */
+        int32_t dsat = diff > INT32_MAX ? FX_MAX : diff < INT32_MIN ? FX_MIN : (int32_t)diff;
+        bad += fx_wmul_diff(a, b, c) != plain_mul64(dsat, c);
+        /* fx_wsign_dot with the plain products (n shifted as it does) */
+        uint64_t m = (uint64_t)(nx < 0 ? -nx : nx) | (uint64_t)(ny < 0 ? -ny : ny) | (uint64_t)(nz < 0 ? -nz : nz);
+        int s = 0;
+        while ((m >> s) >= ((uint64_t)1 << 40))
+            s++;
+        int64_t v = (int64_t)dx * (nx >> s) + (int64_t)dy * (ny >> s) + (int64_t)dz * (nz >> s);
+        bad += fx_wsign_dot(dx, dy, dz, nx, ny, nz) != (v > 0) - (v < 0);
+        /* fx_wmul_fx inside its range: |w| < 2^(31+F), |w a| < 2^(63-F) */
+        int wl = (int)(tl_rand() % (uint64_t)(62 - FX_FRAC_BITS < 30 + FX_FRAC_BITS ? 63 - FX_FRAC_BITS
+                                                                                      : 31 + FX_FRAC_BITS));
+        int fl = 62 - FX_FRAC_BITS - wl > 30 ? 30 : 62 - FX_FRAC_BITS - wl;
+        fx_wide_t w = (int64_t)tl_rand() >> (63 - wl); /* |w| <= 2^wl */
+        fx_t f = (fx_t)((int64_t)tl_rand() >> (63 - fl)); /* |f| <= 2^fl */
+        int64_t whi = w >> FX_FRAC_BITS, wlo = (int64_t)((uint64_t)w & (uint64_t)(FX_ONE - 1));
+        bad += fx_wmul_fx(w, f) != whi * f + fx_round_shift(wlo * f, FX_FRAC_BITS);
+        n++;
+    }
+    CHECK(bad == 0, "fx_mul, fx_wmul, fx_wmul_diff, fx_wsign_dot, fx_wmul_fx on the partial products: %ld of %ld "
+          "random cases differ from the plain product", bad, 5 * n);
+
+    bad = 0;
+    for (fx_t c = -2; c <= FX_ONE + 2; c++)
+        bad += r_to_u8(c) != (c <= 0 ? 0 : c >= FX_ONE ? 255 : (uint8_t)(((int64_t)c * 255 + FX_HALF) >> FX_FRAC_BITS));
+    CHECK(bad == 0, "r_to_u8's 32-bit product: %ld of the %ld values -2..FX_ONE+2 differ from the 64-bit one", bad,
+          (long)FX_ONE + 5);
+}
+
 int main(void)
 {
     printf("test_fx (Q%d.%d)\n", 31 - FX_FRAC_BITS, FX_FRAC_BITS);
@@ -170,5 +292,6 @@ int main(void)
     test_pow();
     test_tan();
     test_decimal();
+    test_mul64();
     return tl_summary("test_fx");
 }
