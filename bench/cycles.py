@@ -125,6 +125,11 @@ import tempfile
 import threading
 import time
 
+try:
+    import fcntl
+except ImportError:  # not POSIX: the pipe keeps its default size
+    fcntl = None
+
 # ---------------------------------------------------------------------------
 # machines and cores
 
@@ -962,31 +967,11 @@ def run_qemu(args, parser):
                 fd = os.open(fifo, os.O_RDWR | os.O_NONBLOCK)
                 os.close(fd)
         threading.Thread(target=watchdog, daemon=True).start()
-        with open(fifo, "rb", buffering=0) as f:
-            opened.set()
-            try:
-                import fcntl
-                fcntl.fcntl(f.fileno(), 1031, 1 << 20)  # F_SETPIPE_SZ: fewer, larger reads
-            except (ImportError, OSError):
-                pass
-            buf = []
-            size = 0
-            while True:
-                data = os.read(f.fileno(), 1 << 20)
-                if not data:
-                    break
-                buf.append(data)
-                size += len(data)
-                if size >= (4 << 20):
-                    parser.feed(b"".join(buf))
-                    buf, size = [], 0
-                elif len(data) < (256 << 10):
-                    # QEMU writes (and flushes) one line at a time: let the pipe
-                    # fill instead of waking up for every line
-                    time.sleep(0.005)
-            if buf:
-                parser.feed(b"".join(buf))
-        parser.finish()
+        try:
+            read_pipe(fifo, parser, opened)
+        finally:
+            if proc.poll() is None:  # interrupted: do not leave QEMU behind
+                proc.kill()
         rc = proc.wait()
     t1 = time.time()
     with open(stream_path, "rb") as s:
@@ -995,6 +980,35 @@ def run_qemu(args, parser):
         errtext = e.read().decode(errors="replace")
     shutil.rmtree(tmp, ignore_errors=True)
     return rc, stream, errtext, t1 - t0, cmd
+
+
+def read_pipe(fifo, parser, opened):
+    """Feed the parser from the named pipe until QEMU closes it."""
+    with open(fifo, "rb", buffering=0) as f:
+        opened.set()
+        try:
+            if fcntl is not None:
+                fcntl.fcntl(f.fileno(), 1031, 1 << 20)  # F_SETPIPE_SZ: fewer, larger reads
+        except OSError:
+            pass
+        buf = []
+        size = 0
+        while True:
+            data = os.read(f.fileno(), 1 << 20)
+            if not data:
+                break
+            buf.append(data)
+            size += len(data)
+            if size >= (4 << 20):
+                parser.feed(b"".join(buf))
+                buf, size = [], 0
+            elif len(data) < (256 << 10):
+                # QEMU writes (and flushes) one line at a time: let the pipe
+                # fill instead of waking up for every line
+                time.sleep(0.005)
+        if buf:
+            parser.feed(b"".join(buf))
+    parser.finish()
 
 
 def parse_log_file(path, parser):
@@ -1318,7 +1332,11 @@ def main():
         extra["firmware"] = firmware_records(stream)
         if rc != 0:
             sys.stderr.write(errtext)
-            sys.stderr.write("cycles: QEMU exited with status %d: %s\n" % (rc, " ".join(cmd)))
+            sys.stderr.write("cycles: QEMU %s: %s\n" % (
+                "killed after %g s (--timeout)" % args.timeout if rc == -9 else "exited with status %d" % rc,
+                " ".join(cmd)))
+            if parser.lines == 0:
+                sys.exit(1)
     if args.from_symbol and parser.entries == 0:
         sys.stderr.write("cycles: %s was never entered by a call\n" % args.from_symbol)
     text, data = report(args, parser, model, syms, extra)
@@ -1329,7 +1347,7 @@ def main():
             json.dump(data, f, indent=1, sort_keys=True)
             f.write("\n")
     if not args.log and rc != 0:
-        sys.exit(rc)
+        sys.exit(rc if rc > 0 else 1)
 
 
 if __name__ == "__main__":
