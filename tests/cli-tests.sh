@@ -89,6 +89,7 @@ for cmd in "$RT" "$RT compare" "$RT receive" "$SCENEC"; do
     fi
 done
 "$RT" --help | grep -q -- "--stats" && "$RT" compare --help | grep -q -- "--max-error" && "$RT" receive --help | grep -q -- "--report-wait" &&
+    "$RT" receive --help | grep -q -- "--report-only" &&
     "$SCENEC" --help | grep -q -- "--header" && ok "each usage text names its command's options" || bad "a usage text misses its options"
 
 rm -f "$OUT/eq-a.png" "$OUT/eq-b.png"
@@ -193,6 +194,40 @@ if [ "$(cat "$OUT/pipe.status")" = 0 ] && [ $dt -lt 4500 ] && cmp -s "$OUT/pipe.
     ok "receive from a pipe kept open: returned after $dt ms with the image and all $(wc -l <"$OUT/pipe.report") report lines"
 else
     bad "receive from a pipe kept open: status $(cat "$OUT/pipe.status"), $dt ms: $(head -3 "$OUT/pipe.report")"
+fi
+
+# rt receive --report-only: report lines and no frame (the UART of a board
+# that draws on its own panel: an lm3s6965evb run, kept as a fuzz seed).
+RS=tests/fuzz-corpus-receive/lm3s6965evb-reports.stream
+out=$("$RT" receive --report-only "$RS" 2>"$OUT/ro.err"); status=$?
+if [ $status -eq 0 ] && [ ! -s "$OUT/ro.err" ] && [ "$(echo "$out" | head -1)" = "frame_width 128" ] &&
+   [ "$(echo "$out" | tail -1)" = "drawn 1" ] && [ "$(echo "$out" | wc -l)" -ge 10 ]; then
+    ok "receive --report-only: $(echo "$out" | wc -l) report lines, no image"
+else
+    bad "receive --report-only: status $status, '$(echo "$out" | head -2)', $(cat "$OUT/ro.err")"
+fi
+out2=$({ printf 'boot\r\n\000T\377'; cat "$RS"; } | "$RT" receive --report-only 2>"$OUT/ro.err"); status=$?
+[ $status -eq 0 ] && [ "$out2" = "$out" ] && grep -q "skipped 9 byte(s) before the first report line" "$OUT/ro.err" &&
+    ok "receive --report-only: noise before the first line skipped, same lines" ||
+    bad "receive --report-only with leading noise: status $status, $(cat "$OUT/ro.err")"
+n=$(wc -c <"$RS")
+head -c $((n - 3)) "$RS" >"$OUT/ro-cut.stream"
+expect_cli "receive --report-only: truncated line" 2 "stream truncated in a report line" -- "$RT" receive --report-only "$OUT/ro-cut.stream"
+{ cat "$RS"; printf 'x'; } >"$OUT/ro-junk.stream"
+expect_cli "receive --report-only: a stray byte after the lines" 2 "unexpected byte 0x78 after a report line" -- "$RT" receive --report-only "$OUT/ro-junk.stream"
+{ head -c 36 "$RS"; printf 'T\003\000a\001b'; } >"$OUT/ro-bin.stream"
+expect_cli "receive --report-only: unprintable text" 2 "not printable" -- "$RT" receive --report-only "$OUT/ro-bin.stream"
+expect_cli "receive --report-only: a frame stream" 2 "a frame header in a stream of report lines only" -- "$RT" receive --report-only "$ST"
+expect_cli "receive --report-only: no line" 2 "no report line in the stream" -- sh -c "printf 'just boot text' | '$RT' receive --report-only"
+expect_cli "receive --report-only with -o" 2 "--report-only writes no image" -- "$RT" receive --report-only "$RS" -o "$OUT/out.png"
+# from a pipe kept open 4 s after the lines: back after the idle wait
+t0=$(ms)
+{ cat "$RS"; sleep 4; } | { "$RT" receive --report-only >"$OUT/ro-pipe.report" 2>&1; echo $? >"$OUT/ro-pipe.status"; ms >"$OUT/ro-pipe.end"; }
+dt=$(($(cat "$OUT/ro-pipe.end") - t0))
+if [ "$(cat "$OUT/ro-pipe.status")" = 0 ] && [ $dt -lt 3000 ] && [ "$(cat "$OUT/ro-pipe.report")" = "$out" ]; then
+    ok "receive --report-only from a pipe kept open: returned after $dt ms with all $(wc -l <"$OUT/ro-pipe.report") lines"
+else
+    bad "receive --report-only from a pipe kept open: status $(cat "$OUT/ro-pipe.status"), $dt ms: $(head -3 "$OUT/ro-pipe.report")"
 fi
 
 # Inputs the fuzzer once broke: must now load and render, or fail cleanly.

@@ -6,6 +6,10 @@
  * over 1 to 13 bytes at a time by a source that goes idle right after
  * the frame, as a serial line does. Each must give a whole frame or a
  * reason and no image, and when both give a frame it is the same one.
+ * The same input then goes through the report-only decoder (rx_reports,
+ * `rt receive --report-only`) both ways: never an image, a reason on
+ * failure, and up to the first report line (where the live source goes
+ * idle) the same result both ways.
  */
 #include <stdint.h>
 #include <stdlib.h>
@@ -65,6 +69,18 @@ static int decode(const uint8_t *data, size_t size, size_t chunk, int live, rx_r
     return rc;
 }
 
+static int decode_reports(const uint8_t *data, size_t size, size_t chunk, int live, rx_result_t *res)
+{
+    mem_source_t m = { data, size, 0, chunk, live };
+    rx_source_t src = { mem_read, text, &m, MAX_PIXELS };
+    int rc = rx_reports(&src, res);
+    if (res->img.rgb || res->offset > size || res->skipped > res->offset)
+        abort();
+    if (rc == 0 ? res->texts == 0 || res->error[0] != '\0' : rc != -1 || res->error[0] == '\0')
+        abort();
+    return rc;
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     rx_result_t whole, live;
@@ -77,5 +93,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     free(whole.img.rgb);
     free(live.img.rgb);
+
+    a = decode_reports(data, size, size ? size : 1, 0, &whole);
+    b = decode_reports(data, size, 1 + size % 13, 1, &live);
+    if (b != 0 && live.texts == 0 && (a == 0 || strcmp(whole.error, live.error) != 0))
+        abort(); /* up to the first report line both read the same bytes */
+    if (a == 0 && b == 0 && (whole.skipped != live.skipped || live.texts > whole.texts))
+        abort();
     return 0;
 }

@@ -18,8 +18,10 @@
 #   BOARD_SRC       its C files: port_init, port_write, port_icount_*
 #   BOARD_LD        its linker script (MEMORY, then INCLUDE sections.ld)
 # and may set BOARD_SINK (a display sink's C file instead of the UART
-# stream, sink.h), BOARD_RUN (a run script instead of run.sh), BOARD_CFLAGS
-# (extra -D), FW_FORMAT (a pixel format the board insists on).
+# stream, sink.h) with BOARD_SINK_CALLBACKS (its begin, flush and end
+# functions, for make size's stack bound), BOARD_RUN (a run script instead
+# of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
+# insists on).
 #
 # Each (scene, size, depth, format) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
@@ -33,6 +35,7 @@ $(error BOARD=$(BOARD) is not a board of platform/*/board.mk: $(BOARDS))
 endif
 BOARD_FPU  :=
 BOARD_SINK := platform/firmware/sink_stream.c
+BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
@@ -167,7 +170,7 @@ run: deps-board
 	@echo "image: $(RUN_OUT)"
 
 size: $(FW_ELF)
-	@CROSS=$(BOARD_CROSS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
+	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
 
 print-fwdir:
 	@echo $(FW_DIR)

@@ -22,6 +22,7 @@ static const char usage_text[] =
     "usage: rt [options] SCENE.nff -o OUT.png|OUT.ppm\n"
     "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N]\n"
     "       rt receive [STREAM] -o OUT.png   (the board's UART stream, stdin by default)\n"
+    "       rt receive [STREAM] --report-only   (its report lines alone: a board with a panel)\n"
     "       rt --version\n"
     "\n"
     "render options:\n"

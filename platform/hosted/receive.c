@@ -3,7 +3,9 @@
  * that the board's UART sink writes (uart_stream.c), print the report
  * lines on stdout and write the image. STREAM is a file, a pipe or FIFO,
  * or a serial line (put into raw mode for the run; set its speed with
- * stty first); stdin by default.
+ * stty first); stdin by default. With --report-only the stream holds
+ * report lines and no frame (a board that draws on its own panel): they
+ * are printed and no image is written.
  *
  * It returns once the frame has ended and the report lines after it are
  * in: to the end of a regular file, or until a live input (pipe, FIFO,
@@ -29,6 +31,7 @@
 
 static const char receive_usage[] =
     "usage: rt receive [STREAM] -o OUT.png [options]\n"
+    "       rt receive [STREAM] --report-only [options]\n"
     "\n"
     "Decodes the board's framed UART stream (a file, a pipe, a serial line such\n"
     "as /dev/ttyUSB0, or stdin when STREAM is missing or '-'), prints its report\n"
@@ -36,20 +39,28 @@ static const char receive_usage[] =
     "the frame header (boot text, noise) are skipped; it returns at the end of\n"
     "the frame and the report lines after it.\n"
     "  -o, --output FILE      output image (.png or .ppm)\n"
+    "  --report-only          the stream holds report lines and no frame (a board\n"
+    "                         that draws on its own panel): print them, write no\n"
+    "                         image; bytes before the first line are skipped,\n"
+    "                         after it only whole report lines may follow\n"
     "  --report-wait MS       on a pipe or serial line, the report after the frame\n"
-    "                         ends when nothing arrives for MS ms (default 500)\n"
+    "                         (--report-only: after a report line) ends when\n"
+    "                         nothing arrives for MS ms (default 500)\n"
     "  -h, --help             this text; --version: the version\n"
     "\n"
     "exit status: 0 success, 1 output failure, 2 no frame, a truncated or corrupt\n"
-    "frame (no image is written), or bad usage\n";
+    "frame (no image is written), or bad usage; with --report-only 0 when at\n"
+    "least one report line was read, 2 for none, a truncated or damaged line,\n"
+    "anything else after one, or a frame in the stream\n";
 
 #define RECEIVE_HELP "rt receive --help"
 
-enum { OPT_REPORT_WAIT = 256, OPT_VERSION };
+enum { OPT_REPORT_WAIT = 256, OPT_REPORT_ONLY, OPT_VERSION };
 
 static const struct option receive_options[] = {
     { "output", required_argument, NULL, 'o' },
     { "report-wait", required_argument, NULL, OPT_REPORT_WAIT },
+    { "report-only", no_argument, NULL, OPT_REPORT_ONLY },
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, OPT_VERSION },
     { NULL, 0, NULL, 0 },
@@ -111,6 +122,7 @@ static bool make_raw(int fd, struct termios *saved)
 int cmd_receive(int argc, char **argv)
 {
     const char *in_path = NULL, *out_path = NULL;
+    bool report_only = false;
     long wait_ms = 500;
     opterr = 0;
     int c;
@@ -118,6 +130,9 @@ int cmd_receive(int argc, char **argv)
         switch (c) {
         case 'o':
             out_path = optarg;
+            break;
+        case OPT_REPORT_ONLY:
+            report_only = true;
             break;
         case OPT_REPORT_WAIT: {
             char *end;
@@ -142,10 +157,12 @@ int cmd_receive(int argc, char **argv)
         return host_usage_error("rt receive", RECEIVE_HELP, "unexpected argument '%s'", argv[optind + 1]);
     if (argc - optind == 1 && strcmp(argv[optind], "-") != 0)
         in_path = argv[optind];
-    if (!out_path)
+    if (report_only && out_path)
+        return host_usage_error("rt receive", RECEIVE_HELP, "%s", "--report-only writes no image: drop -o");
+    if (!out_path && !report_only)
         return host_usage_error("rt receive", RECEIVE_HELP, "%s", "no output file given (-o OUT.png)");
     char why[256];
-    if (image_check_output(out_path, why, sizeof why) != 0) {
+    if (out_path && image_check_output(out_path, why, sizeof why) != 0) {
         fprintf(stderr, "rt receive: %s\n", why);
         return 1;
     }
@@ -163,7 +180,7 @@ int cmd_receive(int argc, char **argv)
 
     rx_source_t rx = { .read = fd_read, .text = print_text, .ctx = &src };
     rx_result_t res;
-    int rc = rx_frame(&rx, &res);
+    int rc = report_only ? rx_reports(&rx, &res) : rx_frame(&rx, &res);
     if (raw)
         tcsetattr(src.fd, TCSANOW, &saved);
     if (in_path)
@@ -173,7 +190,10 @@ int cmd_receive(int argc, char **argv)
         return EXIT_BAD_INPUT;
     }
     if (res.skipped)
-        fprintf(stderr, "rt receive: %s: note: skipped %lu byte(s) before the frame header\n", name, res.skipped);
+        fprintf(stderr, "rt receive: %s: note: skipped %lu byte(s) before the %s\n", name, res.skipped,
+                report_only ? "first report line" : "frame header");
+    if (report_only)
+        return 0;
     rc = 0;
     if (image_write(out_path, &res.img, why, sizeof why) != 0) {
         fprintf(stderr, "rt receive: %s\n", why);

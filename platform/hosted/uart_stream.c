@@ -1,5 +1,6 @@
-/* uart_stream.c - decoder of the board's framed UART stream (see
- * uart_stream.h for the resynchronisation and end-of-frame rules). */
+/* uart_stream.c - decoder of the board's framed UART stream, and of a
+ * stream of report lines only (see uart_stream.h for the
+ * resynchronisation and end-of-frame rules). */
 #include "uart_stream.h"
 
 #include <errno.h>
@@ -93,6 +94,7 @@ static void emit_text(rx_t *r, size_t len)
 {
     if (r->src->text)
         r->src->text(r->src->ctx, (const char *)at(r) + 3, len);
+    r->res->texts++;
     consume(r, 3 + len);
 }
 
@@ -224,6 +226,49 @@ static int decode(rx_t *r)
     if (r->read_errno)
         return fail(r, "read error");
     return 0;
+}
+
+/* Report lines only: noise before the first is skipped as before a frame;
+ * from the first on, each must follow the last, whole and printable (a
+ * serial line going idle after one ends the stream). */
+static int reports(rx_t *r)
+{
+    rx_result_t *res = r->res;
+    while (need(r, 1)) {
+        uint8_t c = at(r)[0];
+        size_t len;
+        if (c == 'R' && need(r, 4) && memcmp(at(r), "RTF1", 4) == 0)
+            return fail(r, "a frame header in a stream of report lines only");
+        if (c == 'T' && plausible_text(r, &len)) {
+            emit_text(r, len);
+            r->after_frame = true;
+        } else if (res->texts == 0) {
+            consume(r, 1);
+            res->skipped++;
+        } else if (c != 'T') {
+            return fail(r, "unexpected byte 0x%02x after a report line", c);
+        } else if (!need(r, 3) || !need(r, 3 + (size_t)u16(at(r) + 1))) {
+            return fail(r, "stream truncated in a report line");
+        } else if (u16(at(r) + 1) > RX_TEXT_MAX) {
+            return fail(r, "report line too long (%u bytes)", u16(at(r) + 1));
+        } else {
+            return fail(r, "a report line with a byte that is not printable text");
+        }
+    }
+    if (r->read_errno)
+        return fail(r, "read error");
+    if (res->texts == 0)
+        return fail(r, "no report line in the stream");
+    return 0;
+}
+
+int rx_reports(const rx_source_t *src, rx_result_t *res)
+{
+    memset(res, 0, sizeof *res);
+    rx_t r = { .src = src, .res = res };
+    int rc = reports(&r);
+    free(r.buf);
+    return rc;
 }
 
 int rx_frame(const rx_source_t *src, rx_result_t *res)

@@ -1,0 +1,143 @@
+/*
+ * oled.c - the LM3S6965 evaluation board's display (sink.h): the SSD0323
+ * controller of its 128x64 OLED, 4-bit grey, on SSI0 (a PL022), with the
+ * data/command line on GPIO C7 and the chip select on GPIO D0.
+ *
+ * Each band goes to the panel as it is flushed, so there is no frame
+ * buffer: a column window (0x15, first, last column; one column is a
+ * byte, two pixels), a row window (0x75, first, last row), then the
+ * band's bytes as data, which the controller stores along the row and
+ * wraps within the window. The core's L4 packing (rt_fb.h: two pixels
+ * per byte, the left one in the high nibble) is the controller's own, so
+ * the bytes go out as rendered. A frame smaller than the panel is drawn
+ * at its top left; after it the sink reports frame_width and
+ * frame_height, which tell the host what part of the panel to take.
+ *
+ * The frame stays on the panel (SINK_HOLDS_FRAME, board.mk): the firmware
+ * reports "drawn 1" and idles while the host captures the panel (run.sh).
+ * Only what QEMU's SSD0323 model acts on is sent; a real panel also needs
+ * its power-up sequence (supply, contrast, multiplex, remap).
+ */
+#include "port.h"
+#include "sink.h"
+
+#define PANEL_WIDTH 128
+#define PANEL_HEIGHT 64
+
+#if defined(BOARD_WIDTH) && defined(BOARD_HEIGHT)
+_Static_assert(BOARD_WIDTH <= PANEL_WIDTH && BOARD_HEIGHT <= PANEL_HEIGHT, "the frame is larger than the 128x64 OLED (SIZE)");
+#endif
+#ifdef RT_FB_ONLY_FORMAT
+_Static_assert(RT_FB_ONLY_FORMAT == RT_FB_L4, "the OLED takes l4 pixels (FW_FORMAT in board.mk)");
+#endif
+
+#define REG(addr) (*(volatile uint32_t *)(addr))
+
+/* SSI0 (PL022) */
+#define SSI0_CR0 REG(0x40008000u)
+#define SSI0_CR1 REG(0x40008004u)
+#define SSI0_DR REG(0x40008008u)
+#define SSI0_SR REG(0x4000800Cu)
+#define SSI0_CPSR REG(0x40008010u)
+#define SSI_SR_TNF (1u << 1) /* transmit FIFO not full */
+#define SSI_SR_RNE (1u << 2) /* receive FIFO not empty */
+#define SSI_SR_BSY (1u << 4)
+
+/* GPIO C and D: direction, digital enable, and the data register masked
+ * to one pin (address bits 9..2 select the pins a write changes) */
+#define GPIOC_DIR REG(0x40006400u)
+#define GPIOC_DEN REG(0x4000651Cu)
+#define OLED_DC REG(0x40006000u + (0x80u << 2)) /* C7: low command, high data */
+#define OLED_DC_DATA 0x80u
+#define GPIOD_DIR REG(0x40007400u)
+#define GPIOD_DEN REG(0x4000751Cu)
+#define OLED_CS REG(0x40007000u + (0x01u << 2)) /* D0 */
+
+/* SSD0323 commands */
+#define SSD_COLUMNS 0x15u
+#define SSD_ROWS 0x75u
+#define SSD_DISPLAY_ON 0xAFu
+
+static size_t line_bytes;
+static uint16_t frame_width, frame_height;
+static uint64_t io_instructions;
+
+/* One byte out; returns with the bus idle, so D/C may change after it. */
+static void ssi_send(uint8_t byte)
+{
+    while (!(SSI0_SR & SSI_SR_TNF))
+        ;
+    SSI0_DR = byte;
+    while (SSI0_SR & SSI_SR_BSY)
+        ;
+    while (SSI0_SR & SSI_SR_RNE) /* what came back: a full receive FIFO stalls the transmitter */
+        (void)SSI0_DR;
+}
+
+static void oled_send(uint32_t dc, const uint8_t *p, size_t n)
+{
+    OLED_DC = dc;
+    for (size_t i = 0; i < n; i++)
+        ssi_send(p[i]);
+}
+
+static int oled_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
+{
+    if (s->format != RT_FB_L4 || w > PANEL_WIDTH || h > PANEL_HEIGHT)
+        return 1;
+    uint64_t t0 = port_icount_read();
+    line_bytes = RT_FB_LINE_BYTES(RT_FB_L4, w);
+    frame_width = w;
+    frame_height = h;
+    static const uint8_t on[] = { SSD_DISPLAY_ON };
+    oled_send(0, on, sizeof on);
+    io_instructions += port_icount_read() - t0;
+    return 0;
+}
+
+static int oled_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
+{
+    uint64_t t0 = port_icount_read();
+    const uint8_t window[] = { SSD_COLUMNS, 0, (uint8_t)(line_bytes - 1), SSD_ROWS, (uint8_t)a->y1, (uint8_t)a->y2 };
+    oled_send(0, window, sizeof window);
+    oled_send(OLED_DC_DATA, px, (size_t)(a->y2 - a->y1 + 1) * line_bytes);
+    rt_fb_flush_ready(s); /* the bytes are out */
+    io_instructions += port_icount_read() - t0;
+    return 0;
+}
+
+static int oled_end(rt_fb_sink_t *s)
+{
+    (void)s;
+    uint64_t t0 = port_icount_read();
+    report_value("frame_width", frame_width);
+    report_value("frame_height", frame_height);
+    io_instructions += port_icount_read() - t0;
+    return 0;
+}
+
+void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t bytes)
+{
+    GPIOC_DIR |= 0x80u;
+    GPIOC_DEN |= 0x80u;
+    GPIOD_DIR |= 0x01u;
+    GPIOD_DEN |= 0x01u;
+    OLED_CS = 0x01u;
+    SSI0_CR1 = 0;        /* disabled while it is set up */
+    SSI0_CPSR = 2;       /* 50 MHz / 2 / (1 + 6) = 3.6 MHz, under the SSD0323's 4 MHz */
+    SSI0_CR0 = 6u << 8 | 3u << 6 | 7u; /* serial clock rate 6, SPI mode 3, 8-bit frames */
+    SSI0_CR1 = 0x02u;    /* enabled, master */
+    sink->format = format;
+    sink->band[0] = band;
+    sink->band[1] = 0;
+    sink->band_bytes = bytes;
+    sink->pitch = 0;
+    sink->begin = oled_begin;
+    sink->flush = oled_flush;
+    sink->wait = 0;
+    sink->end = oled_end;
+    sink->user = 0;
+    sink->flushing = false;
+}
+
+uint64_t sink_io_instructions(void) { return io_instructions; }
