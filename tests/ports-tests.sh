@@ -96,5 +96,15 @@ for n in ("FLASH", "RAM"):
         done
     done
 done
+# A frame whose band buffer and stack do not fit the micro:bit's 16 KiB of
+# RAM fails to link, saying what to lower; with a smaller band it builds.
+if make -s -j2 firmware BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 >"$OUT/overflow.build" 2>&1; then
+    bad "microbit at 1024x16 (12 KiB band buffer + 4 KiB stack) linked: RAM overflow not caught"
+elif grep -q "RAM overflow: data, bss and stack exceed the board's RAM: lower make BAND_LINES=" "$OUT/overflow.build" &&
+     make -s -j2 firmware BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 BAND_LINES=2 >>"$OUT/overflow.build" 2>&1; then
+    ok "microbit at 1024x16: $(grep -o 'RAM overflow.*' "$OUT/overflow.build" | head -1); BAND_LINES=2 links"
+else
+    bad "microbit at 1024x16: no clear RAM overflow message, or BAND_LINES=2 failed: $(tail -2 "$OUT/overflow.build")"
+fi
 echo "ports: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -64,16 +64,19 @@ PRUNE ?= 1
 # Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12, q24.
 CONFIG ?= q20
 CFG_FLAGS := $(CFG_$(CONFIG))
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
+# RAM: lines per band buffer (the firmware holds one band) and the stack
+BAND_LINES ?= 4
+STACK_SIZE ?= 4096
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
-FW_LDFLAGS = $(BOARD_CPU) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections
+FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
