@@ -17,12 +17,14 @@
 #   RT_CFLAGS       what the core's files need: -std=c11 -ffreestanding,
 #                   the include folders, $(RT_DEFS)
 #   RT_SCENEC_SRC   the scene compiler's sources (a HOST program: build it
-#                   with the host cc, $(RT_SCENEC_CFLAGS) and the same
-#                   capacities as the target), then
+#                   with the host cc, $(RT_SCENEC_CFLAGS), the same
+#                   capacities as the target and $(RT_SCENEC_LDLIBS)); its
+#                   tables are in RT_BACKEND's format; then
 #                     rt-scenec SCENE.nff -o scene_data.c --header scene_data.h
 #                   and, to prune, compile the core with
 #                     -DSCENE_PRUNE=1 -include scene_data.h
 #   RT_SCENEC_CFLAGS
+#   RT_SCENEC_LDLIBS  -lm (the float and double readers call tan, sin, cos)
 ifeq ($(RT_DIR),)
 RT_DIR := $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
 endif
@@ -37,7 +39,9 @@ RT_DEFS := $(if $(filter float,$(RT_BACKEND)),-DRT_BACKEND_FLOAT=1) \
 RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) $(RT_DEFS)
 
 RT_SCENEC_SRC := $(RT_DIR)/tools/scenec.c $(RT_DIR)/platform/hosted/host_io.c $(RT_SRC)
-RT_SCENEC_CFLAGS := -std=c11 -O2 -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/src -I$(RT_DIR)/platform/hosted $(RT_DEFS)
+RT_SCENEC_CFLAGS := -std=c11 -O2 -ffp-contract=off -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/src \
+                    -I$(RT_DIR)/platform/hosted $(RT_DEFS)
+RT_SCENEC_LDLIBS := -lm
 
 ifeq ($(filter fixed float double,$(RT_BACKEND)),)
 $(error rt.mk: RT_BACKEND must be fixed, float or double, not '$(RT_BACKEND)')

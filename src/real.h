@@ -10,9 +10,13 @@
  * real_wide_t holds exact products (Q.2F in the fixed build) so that
  * discriminants and dot products lose nothing before the final rounding.
  *
- * The floating-point backends use the compiler's sqrt/pow/tan builtins;
- * they are references for the host and the soft-float benchmark, not the
- * product.
+ * The floating-point backends use the compiler's sqrt/tan/sin/cos/floor
+ * builtins; the double backend also its pow. The float backend's pow is
+ * its own (real_float.c: float arithmetic alone, no libm), so a render
+ * on an IEEE single-precision FPU is bit for bit the host's: the render
+ * calls no other libm function (tan, sin, cos and floor are the reader's
+ * and the BVH builder's, and rt_camera_from_view's tan), and sqrt is
+ * correctly rounded everywhere (an instruction with -fno-math-errno).
  */
 #ifndef REAL_H
 #define REAL_H
@@ -70,7 +74,13 @@ static inline int32_t r_floor_int(real_t a) { return (int32_t)R_FN(floor)(a); }
 static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
 /* the next value above a (a > 0) */
 static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
+#if RT_BACKEND_FLOAT
+/* x^s in float arithmetic alone, 0 for x <= 0 (real_float.c, with its accuracy) */
+float r_pow_float(float x, float s);
+static inline real_t r_pow_unit(real_t x, shine_t s) { return r_pow_float(x, s); }
+#else
 static inline real_t r_pow_unit(real_t x, shine_t s) { return x <= 0 ? 0 : R_FN(pow)(x, s); }
+#endif
 static inline real_wide_t r_tan_deg_wide(real_t deg)
 {
     return R_FN(tan)(deg * (real_t)(3.14159265358979323846 / 180.0));

@@ -54,6 +54,7 @@
 #define prim_box                 rt_prim_box
 #define r_from_decimal           rt_r_from_decimal
 #define r_from_decimal_scaled    rt_r_from_decimal_scaled
+#define r_pow_float              rt_r_pow_float
 #define ray_hit_cone             rt_ray_hit_cone
 #define ray_hit_object           rt_ray_hit_object
 #define ray_hit_polygon          rt_ray_hit_polygon

@@ -32,6 +32,9 @@ check "platform/hosted/backend.c (double)" $HOSTED $DOUBLE -DBACKEND_ID=double p
 check "platform/hosted/backend.c (float)" $HOSTED $FLOAT -DBACKEND_ID=float platform/hosted/backend.c
 check "platform/hosted/backend.c (double, fixed tolerances)" $HOSTED $DOUBLE -DRT_TOLERANCES_FIXED=1 \
     -DBACKEND_ID=double_ftol platform/hosted/backend.c
+# The scene compiler writes float and double tables when built for them.
+check "tools/ (float)" $HOSTED $FLOAT tools/
+check "tools/ (double)" $HOSTED $DOUBLE tools/
 
 # The firmware: fixed (make run), double and float (the soft-float
 # comparison builds), and main.c's RGB565 framebuffer.

@@ -30,6 +30,7 @@ run tests/board-tests.sh "$B/rt"
 run tests/ports-tests.sh "$B/rt"
 run tests/board-oled-test.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
+run tests/scenec-tables-tests.sh "$B/rt" "$B/test-scenec-tables"
 run tests/examples-tests.sh "$B/rt" "$B/test-examples"
 run python3 tests/stress.py --quick
 run tests/lint.sh

@@ -11,6 +11,10 @@
  * far-apart-t disagreement is excused only where the double result itself
  * jumps when the ray is nudged by 1e-3 of the object's size (a silhouette
  * or a rim); those must stay under MAX_MISMATCH of the rays.
+ *
+ * It also holds the float backend's own power function (src/real_float.c,
+ * the Phong highlight's x^s) to the accuracy stated there, against double
+ * pow over a sweep of x and of exponents 1 ... 524287.
  */
 #include <math.h>
 #include <string.h>
@@ -205,11 +209,68 @@ static void test_camera(void)
           worst);
 }
 
+/* Relative error bound of the float backend's x^s for results in the
+ * normal range (src/real_float.c): 0.54 units in the last place. */
+#define POW_FLOAT_REL 6.2e-8
+
+static float float_of_bits(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+static void test_pow_float(void)
+{
+    static const double exps[] = { 1, 1.5, 2, 3, 7.25, 10, 20, 50, 100, 333, 1000, 1e4, 1e5, 524287 };
+    const rt_backend_t *be = &rt_backend_float;
+    double worst = 0, worst_x = 0, worst_s = 0, worst_sub = 0;
+    long n = 0, overflow_wrong = 0;
+    for (unsigned e = 0; e < sizeof exps / sizeof exps[0]; e++) {
+        double s = exps[e];
+        /* x from 2^-24 by an odd stride of floats, then every float in
+         * [1 - 2^-9, 1 + 2^-8), where large exponents are sensitive */
+        for (uint32_t u = 0x33800000u; u < 0x3F800000u + 0x8000u; u += u >= 0x3F7F8000u ? 1 : 1021) {
+            double x = float_of_bits(u), want = pow(x, s), got = be->pow_unit(x, s);
+            n++;
+            if (want > 0x1.fffffep127) {
+                overflow_wrong += got != INFINITY;
+            } else if (want >= 0x1p-126) {
+                double rel = fabs(got - want) / want;
+                if (rel > worst)
+                    worst = rel, worst_x = x, worst_s = s;
+            } else if (fabs(got - want) > worst_sub) {
+                worst_sub = fabs(got - want);
+            }
+        }
+    }
+    CHECK(worst <= POW_FLOAT_REL, "float x^s: max relative error %.3g at x = %a, s = %g over %ld (x, s) (bound %.2g)",
+          worst, worst_x, worst_s, n, POW_FLOAT_REL);
+    CHECK(worst_sub <= 0x1p-149, "float x^s: subnormal results within %.2g of x^s (bound 2^-149 = 1.4e-45)",
+          worst_sub);
+    CHECK(overflow_wrong == 0, "float x^s: %ld results beyond the float range not +inf", overflow_wrong);
+
+    /* the exact cases */
+    long exact_wrong = 0;
+    for (uint32_t u = 0x33800000u; u < 0x3F800000u; u += 4099) {
+        double x = float_of_bits(u);
+        exact_wrong += be->pow_unit(x, 1) != x;
+        exact_wrong += be->pow_unit(x, 0) != 1;
+    }
+    for (unsigned e = 0; e < sizeof exps / sizeof exps[0]; e++) {
+        exact_wrong += be->pow_unit(1, exps[e]) != 1;
+        exact_wrong += be->pow_unit(0, exps[e]) != 0;
+        exact_wrong += be->pow_unit(-0.5, exps[e]) != 0;
+    }
+    CHECK(exact_wrong == 0, "float x^s: x^1 = x, x^0 = 1, 1^s = 1, and 0 for x <= 0 (%ld wrong)", exact_wrong);
+}
+
 int main(void)
 {
     printf("test_geometry: fixed vs double, %d random rays per primitive\n", N_RAYS);
     for (unsigned i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
         test_shape(&shapes[i]);
     test_camera();
+    test_pow_float();
     return tl_summary("test_geometry");
 }

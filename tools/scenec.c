@@ -7,10 +7,20 @@
  *
  * It reads the scene with the same reader and capacities as the firmware's
  * core (so over-capacity scenes fail here, with the same message), and
- * writes the tables already converted to the fixed format, with every
- * per-primitive constant precomputed. The header says what the scene
- * contains, so the firmware can be built for exactly that scene.
+ * writes the tables already converted to the core's numeric format, with
+ * every per-primitive constant precomputed. The header says what the
+ * scene contains, so the firmware can be built for exactly that scene.
  * --text instead embeds the NFF text, for builds that read it at boot.
+ *
+ * The format is the one this program is built for, as the core: fixed
+ * point by default, float with -DRT_BACKEND_FLOAT=1, double with
+ * -DRT_BACKEND_DOUBLE=1. Floating-point values are written as exact
+ * hexadecimal constants, so the tables hold bit for bit what the reader
+ * computed here; the generated file refuses to compile for another
+ * format. Build it with the same -D flags (capacities, backend) as the
+ * firmware's core and with -ffp-contract=off (GCC's default under
+ * -std=c11), so that this host computes the reader's and the BVH
+ * builder's values as any other host does.
  */
 #include <ctype.h>
 #include <errno.h>
@@ -25,13 +35,15 @@
 #include "nff.h"
 #include "rt_version.h"
 
-#if !RT_BACKEND_FIXED
-#error "the scene compiler emits fixed-point tables: build it for the fixed backend"
+#if defined(RT_TOLERANCES_FIXED) && RT_TOLERANCES_FIXED
+#define SCENEC_TOLERANCES_FIXED 1
+#else
+#define SCENEC_TOLERANCES_FIXED 0
 #endif
 
 static scene_store_t store;
 
-/* ---- values: one emitter per field type, in the fixed format --------- */
+/* ---- values: one emitter per field type, in the core's format -------- */
 
 typedef void emit_fn(FILE *f, const void *value);
 
@@ -40,19 +52,55 @@ static void emit_u32(FILE *f, const void *v) { fprintf(f, "%" PRIu32 "u", *(cons
 static void emit_u16(FILE *f, const void *v) { fprintf(f, "%u", (unsigned)*(const uint16_t *)v); }
 static void emit_u8(FILE *f, const void *v) { fprintf(f, "%u", (unsigned)*(const uint8_t *)v); }
 static void emit_i64(FILE *f, const void *v) { fprintf(f, "INT64_C(%" PRId64 ")", *(const int64_t *)v); }
+
+/* A float or double exactly: %a for a finite value (with -0 as -0x0p+0),
+ * the compiler's constants for an infinity or a NaN (its sign, and its
+ * payload bits in the significand, kept). suffix is "f" for a float. */
+static void emit_floating(FILE *f, double v, bool neg, uint64_t payload, bool quiet, const char *suffix)
+{
+    if (v - v == 0) /* finite */
+        fprintf(f, "%a%s", v, suffix);
+    else if (v == v) /* an infinity */
+        fprintf(f, "%s__builtin_inf%s()", neg ? "-" : "", suffix);
+    else
+        fprintf(f, "%s__builtin_nan%s%s(\"0x%" PRIx64 "\")", neg ? "-" : "", quiet ? "" : "s", suffix, payload);
+}
+static void emit_float(FILE *f, const void *v)
+{
+    uint32_t u;
+    memcpy(&u, v, sizeof u);
+    emit_floating(f, *(const float *)v, u >> 31, u & 0x3FFFFFu, (u >> 22) & 1, "f");
+}
+static void emit_double(FILE *f, const void *v)
+{
+    uint64_t u;
+    memcpy(&u, v, sizeof u);
+    emit_floating(f, *(const double *)v, u >> 63, u & 0x7FFFFFFFFFFFFu, (u >> 51) & 1, "");
+}
+
+static void emit_prim_ref_t(FILE *f, const void *v) { fprintf(f, "0x%08" PRIx32 "u", *(const prim_ref_t *)v); }
+static void emit_vec3_t(FILE *f, const void *v);
+static void emit_view_t(FILE *f, const void *v);
+
+/* The emitter of a field type: real_t, real_wide_t and shine_t are
+ * int32_t, int64_t and uint32_t in the fixed build, all float (double)
+ * in the float (double) build; colour_t is vec3_t. */
+#define EMITTER(type) \
+    _Generic((type){ 0 }, int32_t: emit_i32, uint32_t: emit_u32, uint16_t: emit_u16, uint8_t: emit_u8, \
+             int64_t: emit_i64, float: emit_float, double: emit_double, vec3_t: emit_vec3_t, view_t: emit_view_t)
+
 static void emit_vec3_t(FILE *f, const void *v)
 {
     const vec3_t *p = v;
-    fprintf(f, "{ %" PRId32 ", %" PRId32 ", %" PRId32 " }", p->x, p->y, p->z);
+    emit_fn *fn = EMITTER(real_t);
+    fprintf(f, "{ ");
+    fn(f, &p->x);
+    fprintf(f, ", ");
+    fn(f, &p->y);
+    fprintf(f, ", ");
+    fn(f, &p->z);
+    fprintf(f, " }");
 }
-static void emit_prim_ref_t(FILE *f, const void *v) { fprintf(f, "0x%08" PRIx32 "u", *(const prim_ref_t *)v); }
-static void emit_view_t(FILE *f, const void *v);
-
-/* The emitter of a field type (real_t is int32_t, shine_t uint32_t and
- * colour_t vec3_t in the fixed build). */
-#define EMITTER(type) \
-    _Generic((type){ 0 }, int32_t: emit_i32, uint32_t: emit_u32, uint16_t: emit_u16, uint8_t: emit_u8, \
-             int64_t: emit_i64, vec3_t: emit_vec3_t, view_t: emit_view_t)
 
 /* n values of an array field with dimensions dims ("" for a scalar,
  * "[3][3]" for a matrix), as nested braces. */
@@ -232,9 +280,17 @@ static int scenec_emit(FILE *out, FILE *hdr, const char *src, const scene_t *sc,
         emit_text(out, text, len);
     } else {
         fprintf(out, "#include <stdint.h>\n\n#include \"scene.h\"\n\n");
+#if RT_BACKEND_FIXED
         fprintf(out, "#if !RT_BACKEND_FIXED || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
         fprintf(out, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",
                 FX_FRAC_BITS);
+#elif RT_BACKEND_FLOAT
+        fprintf(out, "#if !RT_BACKEND_FLOAT\n#error \"these tables are for the float build\"\n#endif\n\n");
+#else /* the fixed build's tolerances pad the boxes differently */
+        fprintf(out, "#if !RT_BACKEND_DOUBLE || RT_TOLERANCES_FIXED != %d\n", SCENEC_TOLERANCES_FIXED);
+        fprintf(out, "#error \"these tables are for the double build with RT_TOLERANCES_FIXED = %d\"\n#endif\n\n",
+                SCENEC_TOLERANCES_FIXED);
+#endif
         emit_tables(out, sc);
     }
     if (hdr)
@@ -251,7 +307,7 @@ static const char scenec_usage[] =
     "usage: rt-scenec SCENE.nff -o OUT.c [--header OUT.h] [--text]\n"
     "\n"
     "Compiles an NFF scene into C tables for firmware that carries its scene in\n"
-    "flash, with the firmware's capacities and fixed-point format.\n"
+    "flash, with the firmware's capacities and numeric format (this build: " R_BACKEND_NAME ").\n"
     "  -o, --output FILE   the C file to write\n"
     "  --header FILE       also write a header saying what the scene uses\n"
     "  --text              embed the NFF text instead (read at boot)\n"

@@ -146,7 +146,17 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
     return true;
 }
 
+static double pow_unit(double x, double s)
+{
+#if RT_BACKEND_FIXED
+    shine_t sh = (shine_t)(s * (1 << FX_SHINE_FRAC_BITS) + 0.5);
+#else
+    shine_t sh = (shine_t)s;
+#endif
+    return to_double(r_pow_unit(to_real(x), sh));
+}
+
 const rt_backend_t BACKEND_SYMBOL = {
     load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, probe,
-    bounds, eye_dir,
+    bounds, eye_dir, pow_unit,
 };

@@ -54,6 +54,9 @@ typedef struct {
     bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */
     bool (*eye_dir)(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3]);
+    /* x^s as the shading computes it (r_pow_unit), x and s first
+     * converted to the backend's real_t and shine_t. */
+    double (*pow_unit)(double x, double s);
 } rt_backend_t;
 
 /* The builds of the core in the host tools, one row each: X(id, name,
