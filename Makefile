@@ -150,7 +150,7 @@ bench-quick: deps
 	python3 bench/run_bench.py --quick
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
-          build/fuzz/fuzz_receive build/fuzz/fuzz_scenec
+          build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
 
@@ -163,6 +163,7 @@ test: deps
 #   fuzz_nff_double  the same, double build, host capacities (what rt runs)
 #   fuzz_nff_float   the same, float build, host capacities
 #   fuzz_scenec      the scene compiler: reader (board capacities) and emitters
+#   fuzz_scenec_float  the same for the float tables
 #   fuzz_receive     rt receive's UART stream decoder
 # Seeds: tests/fuzz-corpus (NFF), tests/fuzz-corpus-receive (streams); new
 # inputs go to build/fuzz/corpus-NAME. make test runs FUZZ_SMOKE seconds
@@ -184,11 +185,17 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Make
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_scenec: tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
+# $(1) name, $(2) backend flags: the scene compiler with the firmware's
+# capacities, for the fixed tables and for the float ones (hex floats)
+define fuzz_scenec_rule
+build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
                         $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard src/*.h) Makefile
-	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L $(BOARD_CAPS) -Isrc -Iplatform/hosted -o $@ \
-	    tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC)
+	@mkdir -p $$(@D)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Isrc \
+	    -Iplatform/hosted -o $$@ tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
+endef
+$(eval $(call fuzz_scenec_rule,fuzz_scenec,))
+$(eval $(call fuzz_scenec_rule,fuzz_scenec_float,-DRT_BACKEND_FLOAT=1))
 
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
                          platform/hosted/image.h src/rt_fb.h Makefile

@@ -1,6 +1,7 @@
-/* board_scene.h - where the firmware's scene comes from: const tables made
- * by the scene compiler (scene_flash.c), or NFF text parsed at boot into
- * RAM (scene_text.c, used for the soft-float comparison build). */
+/* board_scene.h - where the firmware's scene comes from: const tables in
+ * flash made by the scene compiler for the build's backend
+ * (scene_flash.c). A port that reads NFF text at run time instead would
+ * implement this with rt_nff_load(). */
 #ifndef BOARD_SCENE_H
 #define BOARD_SCENE_H
 

@@ -80,7 +80,8 @@ FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nos
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
-# would run: the benchmark's comparison).
+# would run: the benchmark's comparison). Each gets flash tables from the
+# scene compiler built for it.
 FW_FLAGS_fixed  = $(BOARD_FPU)
 FW_FLAGS_float  = $(BOARD_FPU) -DRT_BACKEND_FLOAT=1 -fno-math-errno -ffp-contract=off
 FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
@@ -111,8 +112,25 @@ $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scene
 	@mkdir -p $(@D)
 	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
 
-$(FW_DIR)/scene_text_data.c: $(SCENE) $(SCENEC_DIR)/rt-scenec $(FW_DIR)/scene_data.h
-	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $@ --text
+# The float and double builds get their tables from the scene compiler
+# built for that backend (host cc, -ffp-contract=off as the firmware, libm
+# for the reader's tan/sin/cos/floor): the same bits the host reader makes.
+define scenec_fp
+$(SCENEC_DIR)-$(1)/%.o: src/%.c $(wildcard src/*.h) platform/firmware/firmware.mk
+	@mkdir -p $$(@D)
+	$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Isrc -c $$< -o $$@
+
+$(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst %,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_NAMES)) \
+                         $(wildcard platform/hosted/*.h) $(wildcard src/*.h)
+	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Isrc \
+	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
+
+$(FW_DIR)/scene_data_$(1).c: $(SCENE) $(SCENEC_DIR)-$(1)/rt-scenec
+	@mkdir -p $$(@D)
+	$(SCENEC_DIR)-$(1)/rt-scenec $(SCENE) -o $$@
+endef
+$(eval $(call scenec_fp,float,-DRT_BACKEND_FLOAT=1))
+$(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 
 # $(1) backend, $(2) a folder of sources
 define firmware_objs
@@ -126,23 +144,20 @@ endef
 $(foreach b,$(BOARD_BACKENDS),$(foreach d,$(FW_SRC_DIRS) $(FW_DIR),$(eval $(call firmware_objs,$(b),$(d)))))
 
 FW_OBJS_fixed  = $(patsubst %,$(FW_DIR)/fixed/%.o,$(FW_NAMES) scene_flash scene_data)
-FW_OBJS_float  = $(patsubst %,$(FW_DIR)/float/%.o,$(FW_NAMES) scene_text scene_text_data)
-FW_OBJS_double = $(patsubst %,$(FW_DIR)/double/%.o,$(FW_NAMES) scene_text scene_text_data)
+FW_OBJS_float  = $(patsubst %,$(FW_DIR)/float/%.o,$(FW_NAMES) scene_flash scene_data_float)
+FW_OBJS_double = $(patsubst %,$(FW_DIR)/double/%.o,$(FW_NAMES) scene_flash scene_data_double)
 PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fixed/bench_prims.o
 
-$(FW_DIR)/fixed.elf: $(FW_OBJS_fixed) $(BOARD_LD) platform/firmware/sections.ld
-	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -Wl,-Map=$(FW_DIR)/fixed.map -o $@ $(FW_OBJS_fixed) -lgcc
-
-# The floating-point builds read the embedded NFF text at boot and build
-# their BVH there, hence the larger stack and libm (soft-float: what a
-# user without this project would run).
-define float_elf
+# libc and libm only for what a soft-float build needs (newlib's sqrt; a
+# hard-float build inlines vsqrt and links none of them; the fixed build
+# neither: tests/ports-tests.sh checks).
+define firmware_elf
 $(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) platform/firmware/sections.ld
-	$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,--defsym=__stack_size=0x10000 -Wl,-Map=$(FW_DIR)/$(1).map \
-	    -o $$@ $$(FW_OBJS_$(1)) -lm -lc -lgcc
+	$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
 endef
-$(eval $(call float_elf,float))
-$(eval $(call float_elf,double))
+$(eval $(call firmware_elf,fixed,))
+$(eval $(call firmware_elf,float,-lm -lc))
+$(eval $(call firmware_elf,double,-lm -lc))
 
 # The intersection-cost probe (bench/prims-bench.sh): no frame, just tests.
 $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
