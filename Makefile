@@ -135,9 +135,9 @@ deps-board:
 # results.csv, plot.svg), then the BVH and pruning figures.
 bench: deps
 	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
-	python3 bench/run_bench.py
+	python3 bench/run_bench.py --board $(BOARD)
 	@echo
-	@sh bench/bvh-bench.sh
+	@BOARD=$(BOARD) sh bench/bvh-bench.sh
 	@echo
 	@sh bench/prims-bench.sh
 	@echo
@@ -147,7 +147,7 @@ bench: deps
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
-	python3 bench/run_bench.py --quick
+	python3 bench/run_bench.py --quick --board $(BOARD)
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float

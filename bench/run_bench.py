@@ -162,6 +162,7 @@ def write_svg(path, cells, cfgs, agg, front):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="a subset that runs in about a minute")
+    ap.add_argument("--board", default="mps2-an385", help="the board of the instructions-per-pixel column")
     args = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
     extra_scenes = sorted(f[:-4] for f in os.listdir(os.path.join(ROOT, "scenes")) if f.endswith(".nff"))
@@ -179,7 +180,7 @@ def main():
             times = [render(cfg, scene, ERR_SIZE, img) for _ in range(runs)]
             psnr, maxe, o2, o8 = compare(img, ref)
             cell = {"config": cfg, "scene": scene, "psnr": psnr, "max_err": maxe, "over2_pct": o2,
-                    "over8_pct": o8, "board_ipp": board_ipp(cfg, scene),
+                    "over8_pct": o8, "board_ipp": board_ipp(cfg, scene, args.board),
                     "host_ms": 1000 * statistics.median(times),
                     "host_instr": None if args.quick else callgrind(cfg, scene)}
             cells.append(cell)
