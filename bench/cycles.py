@@ -942,6 +942,9 @@ def symbol_addr(syms, name):
 # running QEMU
 
 
+DRAWN = b"T\x07\x00drawn 1"   # the report record of a board that holds its frame (sink.h)
+
+
 def run_qemu(args, parser):
     """Start QEMU logging into a named pipe and parse the pipe while it runs."""
     tmp = tempfile.mkdtemp(prefix="cycles-")
@@ -956,13 +959,26 @@ def run_qemu(args, parser):
         proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=out, stderr=err)
         opened = threading.Event()
 
+        held = []
+
         def watchdog():
+            # A board whose sink holds the frame on its panel reports
+            # "drawn 1" and idles instead of exiting: end QEMU there.
             # QEMU may die before it opens the log: unblock our open() then
-            try:
-                proc.wait(timeout=args.timeout)
-            except subprocess.TimeoutExpired:
-                proc.kill()
-                proc.wait()
+            deadline = time.time() + args.timeout
+            while True:
+                try:
+                    proc.wait(timeout=0.5)
+                    break
+                except subprocess.TimeoutExpired:
+                    pass
+                with open(stream_path, "rb") as s:
+                    if DRAWN in s.read():
+                        held.append(True)
+                if held or time.time() > deadline:
+                    proc.kill()
+                    proc.wait()
+                    break
             if not opened.is_set():
                 fd = os.open(fifo, os.O_RDWR | os.O_NONBLOCK)
                 os.close(fd)
@@ -973,6 +989,8 @@ def run_qemu(args, parser):
             if proc.poll() is None:  # interrupted: do not leave QEMU behind
                 proc.kill()
         rc = proc.wait()
+        if held:
+            rc = 0
     t1 = time.time()
     with open(stream_path, "rb") as s:
         stream = s.read()
