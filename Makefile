@@ -169,7 +169,7 @@ test: deps
 # inputs go to build/fuzz/corpus-NAME. make test runs FUZZ_SMOKE seconds
 # of each (tests/fuzz-smoke.sh); make fuzz FUZZER=NAME runs one longer.
 FUZZ_SECONDS ?= 300
-FUZZ_SMOKE ?= 20
+FUZZ_SMOKE ?= 15
 FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
 build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile

@@ -3,7 +3,7 @@
 # seconds (default 20) from its seed corpus, under ASan and UBSan. Any
 # crash, hang (> 10 s) or sanitizer report fails it; the input is left in
 # build/fuzz-smoke/NAME/ (add it to tests/fuzz-found/ once fixed).
-SECONDS_=${FUZZ_SMOKE:-20}
+SECONDS_=${FUZZ_SMOKE:-15}
 pass=0 fail=0
 # Seeds: the corpus, and for the scene readers every input that once broke one.
 nff_seeds=tests/fuzz-corpus+tests/fuzz-found
