@@ -10,7 +10,7 @@
 #   make size       flash/RAM by section and stack use of the firmware
 #   make test       install missing packages, build, run every test
 #   make bench      run time against error over numeric configurations, BVH
-#                   scaling, code size with and without pruning (< 15 min)
+#                   scaling, code size with and without pruning, every board and backend (about 45 min)
 #   make bench-quick  a subset of the first (< 2 min)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
