@@ -5,7 +5,8 @@
 #    the same backend (rt --fixed / --float) in the board's pixel format,
 #    and the core's counters in its report equal rt --stats;
 #  - budgets from the linked ELF: no heap; no soft-float helper in a fixed
-#    build; no __aeabi_f*/__aeabi_d* in a hard-float build; flash (code,
+#    build; no __aeabi_f*/__aeabi_d* in a hard-float float build (double
+#    stays soft-float on a single-precision FPU); flash (code,
 #    scene tables, data image) and RAM (data, bss, stack) within the
 #    board's memory as its linker script declares it;
 #  - from the run: the measured stack high-water mark inside the stack
@@ -60,7 +61,7 @@ for b in $(ls platform/*/board.mk | cut -d/ -f2); do
             if [ $be = fixed ]; then
                 found="$found$(echo "$syms" | grep -E "$SOFT_FLOAT" | tr '\n' ' ')"
                 what="heap or soft-float helper"
-            elif [ -n "$fpu" ]; then
+            elif [ $be = float ] && [ -n "$fpu" ]; then
                 found="$found$(echo "$syms" | grep -E '^__aeabi_[fd]' | tr '\n' ' ')"
                 what="heap or __aeabi_f*/__aeabi_d* (hard-float)"
             else
