@@ -34,13 +34,11 @@ oled_case() { # NAME SCENE SIZE
     else
         bad "$n $size: panel and host fixed l4 differ: $cmp"
     fi
-    same=$(awk 'NR == FNR { host[$1] = $2; next }
-                ($1 in host) { n++; if (host[$1] != $2) { print "differ: " $1 " board " $2 " host " host[$1]; bad = 1 } }
-                END { if (!bad) print n " counters equal" }' "$OUT/$n-host.stats" "$OUT/$n.report")
-    case $same in
-    1[0-9]" counters equal") ok "$n $size: board report and rt --stats: $same" ;;
-    *) bad "$n $size: board report and rt --stats: $same" ;;
-    esac
+    if same=$(sh tests/same-counters.sh "$OUT/$n-host.stats" "$OUT/$n.report"); then
+        ok "$n $size: board report and rt --stats: $same"
+    else
+        bad "$n $size: board report and rt --stats: $same"
+    fi
     grep -qx "stack_guard_intact 1" "$OUT/$n.report" && grep -qx "drawn 1" "$OUT/$n.report" ||
         bad "$n $size: report lacks 'stack_guard_intact 1' or 'drawn 1'"
 }
