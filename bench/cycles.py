@@ -1263,7 +1263,7 @@ def report(args, parser, model, syms, extra):
     if "render_instructions" in fw:
         ri = fw["render_instructions"]
         diff = total_insns - ri
-        out.append("firmware's render_instructions %s (timer, 40-instruction ticks, UART sink subtracted): "
+        out.append("firmware's render_instructions %s (the board's counter, display sink subtracted): "
                    "counted here %s, difference %+d (%+.4f%%)" % (fmt_int(ri), fmt_int(total_insns), diff,
                                                                    100.0 * diff / max(1, ri)))
     st = "log: %s lines, %d translations, %d rewinds (I/O), %d stopped blocks" % (

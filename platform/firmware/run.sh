@@ -1,8 +1,9 @@
 #!/bin/sh
 # run.sh FIRMWARE.elf OUT.png RT [CLOCK_HZ]: run the firmware on the
-# emulated board ($QEMU: the QEMU binary and machine, from board.mk), decode its UART stream into OUT.png and print its report
-# lines, then how long QEMU took on the host and, given CLOCK_HZ, how long
-# the render would take on a board at that clock.
+# emulated board ($QEMU: the QEMU binary and machine, from board.mk),
+# decode its UART stream into OUT.png and print its report lines, then
+# how long QEMU took on the host and, given CLOCK_HZ, how long the render
+# would take on a board at that clock.
 # Exits non-zero when QEMU, the firmware or the stream fails.
 elf=$1 out=$2 rt=$3 hz=$4
 stream="${elf%.elf}.stream"
