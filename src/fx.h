@@ -289,9 +289,8 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
 
-/* (a - b) * c exactly, as Q.2F, the difference saturated to 32 bits:
- * one SMULL (slab tests). */
-static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c)
+/* a - b, saturated to 32 bits. */
+static inline int32_t fx_sub_sat(fx_t a, fx_t b)
 {
     int32_t d;
 #if defined(__GNUC__)
@@ -304,7 +303,21 @@ static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c)
     int64_t w = (int64_t)a - b;
     d = w > FX_MAX ? FX_MAX : w < FX_MIN ? FX_MIN : (int32_t)w;
 #endif
-    return fx_mul64(d, c);
+    return d;
+}
+
+/* (a - b) * c exactly, as Q.2F, the difference saturated to 32 bits:
+ * one SMULL. */
+static inline fx_wide_t fx_wmul_diff(fx_t a, fx_t b, fx_t c) { return fx_mul64(fx_sub_sat(a, b), c); }
+
+/* The high word of a * b, that is the product / 2^32 rounded down: one
+ * SMULL (the compiler keeps the high register). */
+static inline int32_t fx_mul_hi(int32_t a, int32_t b)
+{
+#if defined(__GNUC__)
+    __asm__("" : "+r"(a), "+r"(b)); /* as in fx_sub_sat: keeps one SMULL */
+#endif
+    return (int32_t)((uint64_t)fx_mul64(a, b) >> 32);
 }
 
 /* Sign of d . n for a Q.F vector d (|d_k| <= 2) and a Q.2F vector n, at
@@ -315,8 +328,13 @@ static inline int fx_wsign_dot(fx_t dx, fx_t dy, fx_t dz, fx_wide_t nx, fx_wide_
 {
     uint64_t m = (uint64_t)(nx < 0 ? -nx : nx) | (uint64_t)(ny < 0 ? -ny : ny) | (uint64_t)(nz < 0 ? -nz : nz);
     int s = 0;
+#if defined(__GNUC__)
+    if (m >> 40) /* the bit length of m, less 40 */
+        s = 24 - __builtin_clzll(m);
+#else
     while ((m >> s) >= ((uint64_t)1 << 40))
         s++;
+#endif
     int64_t v = fx_mul64x(dx, nx >> s) + fx_mul64x(dy, ny >> s) + fx_mul64x(dz, nz >> s);
     return (v > 0) - (v < 0);
 }

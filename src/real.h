@@ -55,7 +55,13 @@ static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
 static inline real_t r_recip(real_t b) { return R_ONE / b; }
-static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return (a - b) * c; }
+/* BVH slab distances (scene_hit.c): plain products here; see the fixed
+ * backend for the scaled form. */
+typedef real_t real_slab_t;
+static inline int r_slab_scale(real_t inv[3], const bool skip[3]) { (void)inv, (void)skip; return 0; }
+static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv) { return (bound - o) * inv; }
+static inline real_slab_t r_slab_from_t_down(real_t t, int shift) { (void)shift; return t; }
+static inline real_slab_t r_slab_from_t_up(real_t t, int shift) { (void)shift; return t; }
 /* sign of (dx, dy, dz) . (nx, ny, nz) */
 static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
 {
@@ -146,7 +152,37 @@ static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
 static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
-static inline real_wide_t r_wmul_diff(real_t a, real_t b, real_t c) { return fx_wmul_diff(a, b, c); }
+/* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the
+ * high word of the exact product (bound - o) * (inv 2^k), that is t in
+ * Q(2F - 32 + k), rounded down. k is per ray: as large as keeps every
+ * scaled reciprocal below 2^30 (so 16 to 18 fraction bits for most rays),
+ * and shift = 32 - F - k turns a Q.F distance into that format. One SMULL
+ * and 32-bit compares per plane, where the Q.2F form needs 64-bit ones. */
+typedef int32_t real_slab_t;
+static inline int r_slab_scale(real_t inv[3], const bool skip[3])
+{
+    uint32_t m = 0;
+    for (int a = 0; a < 3; a++)
+        m |= skip[a] ? 0 : (uint32_t)(inv[a] < 0 ? -inv[a] : inv[a]);
+    int k = 0; /* |inv 2^k| < 2^30 */
+#if defined(__GNUC__)
+    k = m ? __builtin_clz(m) - 2 : 0;
+#else
+    while (m && (m << k) < ((uint32_t)1 << 29))
+        k++;
+#endif
+    if (k > 32 - FX_FRAC_BITS)
+        k = 32 - FX_FRAC_BITS;
+    for (int a = 0; a < 3; a++)
+        inv[a] = skip[a] ? 0 : (real_t)((uint32_t)inv[a] << k);
+    return 32 - FX_FRAC_BITS - k;
+}
+static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv)
+{
+    return fx_mul_hi(fx_sub_sat(bound, o), inv);
+}
+static inline real_slab_t r_slab_from_t_down(real_t t, int shift) { return t >> shift; }
+static inline real_slab_t r_slab_from_t_up(real_t t, int shift) { return -((-t) >> shift); }
 static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
 {
     return fx_wsign_dot(dx, dy, dz, nx, ny, nz);

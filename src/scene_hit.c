@@ -13,55 +13,66 @@
 
 #include "prims.h"
 
-/* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h). */
+/* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h).
+ * Distances along the ray are real_slab_t (real.h): in the fixed build a
+ * 32-bit format chosen per ray, rounded down; a box is entered when the
+ * largest near distance is not above the smallest far one, which stays
+ * conservative: rounding down moves both by less than a unit. */
 
 typedef struct {
-    vec3_t origin;
-    real_t inv[3], dir_abs[3];
-    bool parallel[3];
-    bool negative[3];   /* the ray enters a slab at its max side */
+    real_t o[3];
+    real_t inv[3];         /* 1/d in r_slab_dist's scale; 0 on parallel axes */
+    real_t dir_abs[3];
+    uint8_t parallel;      /* bit a: |d_a| < RT_SLAB_PARALLEL */
+    uint8_t near_max;      /* bit a: the ray enters slab a at its max side */
+    int shift;             /* for r_slab_from_t_* */
 } slab_ray_t;
 
 static void slab_init(slab_ray_t *s, const ray_t *r)
 {
     const real_t d[3] = { r->dir.x, r->dir.y, r->dir.z };
-    s->origin = r->origin;
+    bool parallel[3];
+    s->parallel = s->near_max = 0;
     for (int a = 0; a < 3; a++) {
+        s->o[a] = v3_axis(&r->origin, (unsigned)a);
         s->dir_abs[a] = r_abs(d[a]);
-        s->parallel[a] = s->dir_abs[a] < RT_SLAB_PARALLEL;
-        s->negative[a] = d[a] < 0;
-        s->inv[a] = s->parallel[a] ? 0 : r_recip(d[a]);
+        parallel[a] = s->dir_abs[a] < RT_SLAB_PARALLEL;
+        s->parallel |= (uint8_t)(parallel[a] << a);
+        s->near_max |= (uint8_t)((d[a] < 0) << a);
+        s->inv[a] = parallel[a] ? 0 : r_recip(d[a]);
     }
+    s->shift = r_slab_scale(s->inv, parallel);
 }
 
-/* One axis of the slab test, in the wide type: t = (bound - o) / d as an
- * exact product with the reciprocal, so no rounding or saturation here. */
-static RT_INLINE bool slab_axis(const slab_ray_t *s, int a, real_t o, real_t bmin, real_t bmax,
-                                 real_t tmax, real_wide_t *lo, real_wide_t *hi)
+/* One axis: narrows [*lo, *hi] to where the ray is inside the slab;
+ * false once the interval is empty. */
+static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_t tmax,
+                                real_slab_t *lo, real_slab_t *hi)
 {
-    if (s->parallel[a]) {
+    real_t bmin = v3_axis(&n->min, a), bmax = v3_axis(&n->max, a), o = s->o[a];
+    if (s->parallel & (1u << a)) {
+        /* the ray drifts at most |d| tmax across the slab */
         real_t drift = r_mul(s->dir_abs[a], tmax) + RT_SLAB_MARGIN;
         return o >= r_add_sat(bmin, -drift) && o <= r_add_sat(bmax, drift);
     }
-    real_t near = s->negative[a] ? bmax : bmin, far = s->negative[a] ? bmin : bmax;
-    real_wide_t t0 = r_wmul_diff(near, o, s->inv[a]), t1 = r_wmul_diff(far, o, s->inv[a]);
+    bool max_first = (s->near_max >> a) & 1u;
+    real_slab_t t0 = r_slab_dist(max_first ? bmax : bmin, o, s->inv[a]);
+    real_slab_t t1 = r_slab_dist(max_first ? bmin : bmax, o, s->inv[a]);
     *lo = t0 > *lo ? t0 : *lo;
     *hi = t1 < *hi ? t1 : *hi;
-    return true;
+    return *lo <= *hi;
 }
 
-/* Whether the ray meets the node's box within [tmin, tmax]; *entry is
- * where it enters (for nearest-first ordering). */
-static bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_t tmin, real_t tmax, real_t *entry)
+/* Whether the ray meets the node's box within [lo, hi] (the ray's
+ * interval, from r_slab_from_t_*); *entry is where it enters (for
+ * nearest-first ordering). */
+static RT_INLINE bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_slab_t lo, real_slab_t hi,
+                                real_t tmax, real_slab_t *entry)
 {
-    real_wide_t lo = r_to_wide(-R_BIG), hi = r_to_wide(R_BIG);
-    if (!slab_axis(s, 0, s->origin.x, n->min.x, n->max.x, tmax, &lo, &hi) ||
-        !slab_axis(s, 1, s->origin.y, n->min.y, n->max.y, tmax, &lo, &hi) ||
-        !slab_axis(s, 2, s->origin.z, n->min.z, n->max.z, tmax, &lo, &hi))
+    if (!slab_axis(s, n, 0, tmax, &lo, &hi) || !slab_axis(s, n, 1, tmax, &lo, &hi) ||
+        !slab_axis(s, n, 2, tmax, &lo, &hi))
         return false;
-    if (lo > hi || hi < r_to_wide(tmin) || lo > r_to_wide(tmax))
-        return false;
-    *entry = lo > r_to_wide(tmin) ? r_from_wide(lo) : tmin;
+    *entry = lo;
     return true;
 }
 
@@ -78,7 +89,7 @@ static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t t
 
 typedef struct {
     uint32_t node;
-    real_t entry;
+    real_slab_t entry;
 } bvh_stack_t;
 
 /* Traversal stacks in static storage, not on the call stack: neither
@@ -91,29 +102,32 @@ static uint32_t any_stack[RT_BVH_MAX_DEPTH];
  * the root's box. A one-leaf tree needs no box test, nor the slab set-up. */
 static RT_INLINE bool enter_root(const scene_t *sc, slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
 {
-    real_t entry;
+    real_slab_t entry;
     if (sc->n_bvh_nodes == 0)
         return false;
-    if (sc->bvh_nodes[0].count)
+    if (sc->bvh_nodes[0].count) {
+        s->shift = 0; /* read, never used: nothing is pushed */
         return true;
+    }
     slab_init(s, r);
-    return slab_test(&sc->bvh_nodes[0], s, tmin, tmax, &entry);
+    return slab_test(&sc->bvh_nodes[0], s, r_slab_from_t_down(tmin, s->shift), r_slab_from_t_up(tmax, s->shift),
+                     tmax, &entry);
 }
 
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    real_t ea, eb;
+    real_slab_t ea, eb;
     if (!enter_root(sc, &s, r, tmin, h->t))
         return false;
     bvh_stack_t *stack = nearest_stack;
     unsigned sp = 0;
-    uint32_t node = 0;
+    uint32_t node = 0, visited = 0; /* counted here, added once */
     bool found = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
-        st->bvh_nodes_visited++;
+        visited++;
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count; k++) {
                 /* Ties go to the lowest reference, as in table order: a
@@ -130,8 +144,9 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
             }
         } else {
             uint32_t a = node + 1, b = n->index;
-            bool ha = slab_test(&nodes[a], &s, tmin, h->t, &ea);
-            bool hb = slab_test(&nodes[b], &s, tmin, h->t, &eb);
+            real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(h->t, s.shift);
+            bool ha = slab_test(&nodes[a], &s, lo, hi, h->t, &ea);
+            bool hb = slab_test(&nodes[b], &s, lo, hi, h->t, &eb);
             if (ha && hb) {
                 if (eb < ea) { /* nearer child first, the other waits */
                     uint32_t tn = a;
@@ -151,11 +166,14 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
             }
         }
         /* next waiting node that can still beat the best hit */
+        real_slab_t best = r_slab_from_t_up(h->t, s.shift);
         do {
-            if (sp == 0)
+            if (sp == 0) {
+                st->bvh_nodes_visited += visited;
                 return found;
+            }
             sp--;
-        } while (stack[sp].entry > h->t);
+        } while (stack[sp].entry > best);
         node = stack[sp].node;
     }
 }
@@ -164,25 +182,28 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     static slab_ray_t s; /* static like the stacks above */
-    real_t entry;
+    real_slab_t entry;
     if (!enter_root(sc, &s, r, tmin, tmax))
         return false;
+    const real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(tmax, s.shift);
     uint32_t *stack = any_stack;
     unsigned sp = 0;
-    uint32_t node = 0;
+    uint32_t node = 0, visited = 0; /* counted here, added once */
+    bool blocked = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
-        st->bvh_nodes_visited++;
+        visited++;
         if (n->count) {
-            for (uint32_t k = n->index; k < n->index + n->count; k++) {
+            for (uint32_t k = n->index; k < n->index + n->count && !blocked; k++) {
                 real_t t = tmax;
-                if (hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st, 0))
-                    return true; /* any blocker will do */
+                blocked = hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st, 0); /* any blocker will do */
             }
+            if (blocked)
+                break;
         } else {
             uint32_t a = node + 1, b = n->index;
-            bool ha = slab_test(&nodes[a], &s, tmin, tmax, &entry);
-            bool hb = slab_test(&nodes[b], &s, tmin, tmax, &entry);
+            bool ha = slab_test(&nodes[a], &s, lo, hi, tmax, &entry);
+            bool hb = slab_test(&nodes[b], &s, lo, hi, tmax, &entry);
             if (ha && hb)
                 stack[sp++] = b;
             if (ha || hb) {
@@ -191,9 +212,11 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
             }
         }
         if (sp == 0)
-            return false;
+            break;
         node = stack[--sp];
     }
+    st->bvh_nodes_visited += visited;
+    return blocked;
 }
 
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
