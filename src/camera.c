@@ -62,6 +62,7 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
     r.origin = v3_madd(t, c->start - v3_dot(to_t, r.dir), r.dir);
     r.from = PRIM_NONE;
     r.from_far = false;
+    r.leaf = RT_NO_LEAF;
     return r;
 }
 

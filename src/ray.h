@@ -29,10 +29,16 @@ typedef uint32_t prim_ref_t;
  * any plane, it cannot meet it again and skips it; going into a sphere or
  * cone (from_far) it meets it only at the far root. This replaces a
  * surface offset (tolerance.h). */
+/* `leaf` is the BVH leaf where the surface it starts on was found
+ * (RT_NO_LEAF for eye rays): the boxes on the way down to it hold the
+ * origin, so traversal walks that way without testing them (scene_hit.c).
+ * A hint only: any value gives the same hits. */
+#define RT_NO_LEAF UINT32_MAX
 typedef struct {
     vec3_t origin, dir;
     prim_ref_t from;
     bool from_far;
+    uint32_t leaf;
 } ray_t;
 
 static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin, t, r->dir); }
@@ -42,6 +48,7 @@ typedef struct {
     real_t t;
     uint8_t kind;     /* enum prim_kind */
     uint32_t index;   /* into the kind's table */
+    uint32_t leaf;    /* the BVH leaf it was found in (scene_nearest) */
     /* objects: the shape, face and flip of the boundary hit */
     uint16_t shape;
     uint8_t face;

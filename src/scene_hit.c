@@ -99,7 +99,8 @@ static bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH];
 static uint32_t any_stack[RT_BVH_MAX_DEPTH];
 
 /* Whether traversal can start: the tree is not empty and the ray meets
- * the root's box. A one-leaf tree needs no box test, nor the slab set-up. */
+ * the root's box (a ray from a surface in it does). A one-leaf tree needs
+ * no box test, nor the slab set-up. */
 static RT_INLINE bool enter_root(const scene_t *sc, slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
 {
     real_slab_t entry;
@@ -110,7 +111,7 @@ static RT_INLINE bool enter_root(const scene_t *sc, slab_ray_t *s, const ray_t *
         return true;
     }
     slab_init(s, r);
-    return slab_test(&sc->bvh_nodes[0], s, r_slab_from_t_down(tmin, s->shift), r_slab_from_t_up(tmax, s->shift),
+    return r->leaf != RT_NO_LEAF || slab_test(&sc->bvh_nodes[0], s, r_slab_from_t_down(tmin, s->shift), r_slab_from_t_up(tmax, s->shift),
                      tmax, &entry);
 }
 
@@ -124,6 +125,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
     bvh_stack_t *stack = nearest_stack;
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
+    uint32_t path = r->leaf;          /* while on the way down to it */
     bool found = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
@@ -139,9 +141,22 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                     h->t = t;
                     h->kind = (uint8_t)PRIM_KIND(ref);
                     h->index = PRIM_INDEX(ref);
+                    h->leaf = node;
                     found = true;
                 }
             }
+        } else if (path != RT_NO_LEAF) {
+            /* the child on the way to the ray's leaf first, untested; its
+             * sibling waits if the ray meets it */
+            uint32_t a = path < n->index ? node + 1 : n->index, b = path < n->index ? n->index : node + 1;
+            if (slab_test(&nodes[b], &s, r_slab_from_t_down(tmin, s.shift), r_slab_from_t_up(h->t, s.shift), h->t,
+                          &eb)) {
+                stack[sp].node = b;
+                stack[sp].entry = eb;
+                sp++;
+            }
+            node = a;
+            continue;
         } else {
             uint32_t a = node + 1, b = n->index;
             real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(h->t, s.shift);
@@ -166,6 +181,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
             }
         }
         /* next waiting node that can still beat the best hit */
+        path = RT_NO_LEAF;
         real_slab_t best = r_slab_from_t_up(h->t, s.shift);
         do {
             if (sp == 0) {
@@ -189,6 +205,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     uint32_t *stack = any_stack;
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
+    uint32_t path = r->leaf;          /* as in scene_nearest */
     bool blocked = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
@@ -200,6 +217,12 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
             }
             if (blocked)
                 break;
+        } else if (path != RT_NO_LEAF) {
+            uint32_t a = path < n->index ? node + 1 : n->index, b = path < n->index ? n->index : node + 1;
+            if (slab_test(&nodes[b], &s, lo, hi, tmax, &entry))
+                stack[sp++] = b;
+            node = a;
+            continue;
         } else {
             uint32_t a = node + 1, b = n->index;
             bool ha = slab_test(&nodes[a], &s, lo, hi, tmax, &entry);
@@ -214,6 +237,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         if (sp == 0)
             break;
         node = stack[--sp];
+        path = RT_NO_LEAF;
     }
     st->bvh_nodes_visited += visited;
     return blocked;

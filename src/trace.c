@@ -12,6 +12,7 @@ typedef struct {
     bool smooth;     /* a patch: n and n_out may disagree */
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
     bool far_root;   /* a ray going through meets it again only at its far root */
+    uint32_t leaf;   /* its BVH leaf (ray_t) */
     real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
 } surface_t;
@@ -24,6 +25,7 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     prim_surface(sc, h, s.point, &ps);
     s.ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
     s.far_root = ps.leave == LEAVE_FAR_ROOT;
+    s.leaf = h->leaf;
     s.smooth = ps.smooth;
     s.offset = ps.offset;
     s.entering = v3_dot(ray->dir, ps.ng) < 0;
@@ -43,6 +45,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
     out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
     out->from_far = s->far_root && through == s->entering;
+    out->leaf = s->leaf;
 }
 
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
@@ -99,7 +102,7 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight)
  * record stays out of the recursive trace_ray frame. */
 RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
-    hit_t h = { .t = RT_T_FAR };
+    hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
         return false;
     *s = surface_at(tr->scene, &h, ray);

@@ -108,8 +108,9 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     r.dir = v3_unit(v3(to_real(d[0]), to_real(d[1]), to_real(d[2])));
     r.from = PRIM_NONE;
     r.from_far = false;
+    r.leaf = RT_NO_LEAF;
     rt_stats_t st = { 0 };
-    hit_t h = { .t = RT_T_FAR };
+    hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
         return false;
     vec3_t p = ray_at(&r, h.t);
