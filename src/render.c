@@ -86,6 +86,7 @@ static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
 
 static camera_t cam; /* static: one render at a time; keeps the stack small */
 static tracer_t tr;  /* likewise */
+static prim_ref_t last_blocker[RT_MAX_LIGHTS];
 
 #if RT_USE_SPD
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
@@ -207,7 +208,9 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     static rt_stats_t no_stats; /* stats == NULL: counted here, unread */
     if (stats == 0)
         stats = &no_stats;
-    tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000) };
+    tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000), last_blocker };
+    for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
+        last_blocker[i] = PRIM_NONE;
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;

@@ -194,11 +194,15 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
     }
 }
 
-bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, rt_stats_t *st)
+bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
+                    rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     static slab_ray_t s; /* static like the stacks above */
     real_slab_t entry;
+    real_t t = tmax;
+    if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, st, 0))
+        return true;
     if (!enter_root(sc, &s, r, tmin, tmax))
         return false;
     const real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(tmax, s.shift);
@@ -212,8 +216,10 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         visited++;
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count && !blocked; k++) {
-                real_t t = tmax;
+                t = tmax;
                 blocked = hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st, 0); /* any blocker will do */
+                if (blocked)
+                    *last_blocker = sc->bvh_prims[k];
             }
             if (blocked)
                 break;

@@ -74,7 +74,8 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
             continue;
 #endif
         shadow.dir = ldir;
-        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), tr->stats))
+        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
+                           tr->stats))
             continue;
         colour_t lit = v3_scale(kdc, ndl);
 #if RT_USE_SPECULAR

@@ -12,6 +12,8 @@ typedef struct {
     bool spd_rules;     /* SPD rule 8: reflect off transmitting surfaces too */
     real_t min_weight;  /* adaptive depth: skip child rays whose share of
                          * the pixel falls below this; 0 = off */
+    prim_ref_t *last_blocker; /* per light: what blocked its last shadow
+                               * ray, tried first (PRIM_NONE at the start) */
 } tracer_t;
 
 /* Colour seen along `ray`; `weight` is its share of the pixel (1 for an
