@@ -11,6 +11,8 @@
  */
 #include "scene_hit.h"
 
+#include <stddef.h>
+
 #include "prims.h"
 
 /* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h).
@@ -23,44 +25,65 @@ typedef struct {
     real_t o[3];
     real_t inv[3];         /* 1/d in r_slab_dist's scale; 0 on parallel axes */
     real_t dir_abs[3];
+    uint8_t near[3], far[3]; /* byte offsets in bvh_node_t of the bound the
+                              * ray enters slab a by, and leaves it by */
     uint8_t parallel;      /* bit a: |d_a| < RT_SLAB_PARALLEL */
-    uint8_t near_max;      /* bit a: the ray enters slab a at its max side */
     int shift;             /* for r_slab_from_t_* */
 } slab_ray_t;
+
+#define NODE_MIN(a) (offsetof(bvh_node_t, min) + (a) * sizeof(real_t))
+#define NODE_MAX(a) (offsetof(bvh_node_t, max) + (a) * sizeof(real_t))
+_Static_assert(NODE_MIN(2) + sizeof(real_t) == offsetof(bvh_node_t, min) + sizeof(vec3_t) &&
+                   NODE_MAX(2) + sizeof(real_t) == offsetof(bvh_node_t, max) + sizeof(vec3_t) &&
+                   NODE_MAX(2) < 256,
+               "a node's bounds are two runs of three real_t, at byte offsets below 256");
 
 static void slab_init(slab_ray_t *s, const ray_t *r)
 {
     const real_t d[3] = { r->dir.x, r->dir.y, r->dir.z };
     bool parallel[3];
-    s->parallel = s->near_max = 0;
+    s->parallel = 0;
     for (int a = 0; a < 3; a++) {
         s->o[a] = v3_axis(&r->origin, (unsigned)a);
         s->dir_abs[a] = r_abs(d[a]);
         parallel[a] = s->dir_abs[a] < RT_SLAB_PARALLEL;
         s->parallel |= (uint8_t)(parallel[a] << a);
-        s->near_max |= (uint8_t)((d[a] < 0) << a);
+        s->near[a] = (uint8_t)(d[a] < 0 ? NODE_MAX(a) : NODE_MIN(a));
+        s->far[a] = (uint8_t)(d[a] < 0 ? NODE_MIN(a) : NODE_MAX(a));
         s->inv[a] = parallel[a] ? 0 : r_recip(d[a]);
     }
     s->shift = r_slab_scale(s->inv, parallel);
 }
 
+/* The bound of node n at byte offset off (slab_ray_t.near, .far). */
+static RT_INLINE real_t node_bound(const bvh_node_t *n, unsigned off)
+{
+    real_t v;
+    __builtin_memcpy(&v, (const unsigned char *)n + off, sizeof v);
+    return v;
+}
+
 /* One axis: narrows [*lo, *hi] to where the ray is inside the slab;
  * false once the interval is empty. */
-static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_t tmax,
-                                real_slab_t *lo, real_slab_t *hi)
+static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_slab_t *lo,
+                                real_slab_t *hi)
 {
-    real_t bmin = v3_axis(&n->min, a), bmax = v3_axis(&n->max, a), o = s->o[a];
-    if (s->parallel & (1u << a)) {
-        /* the ray drifts at most |d| tmax across the slab */
-        real_t drift = r_mul(s->dir_abs[a], tmax) + RT_SLAB_MARGIN;
-        return o >= r_add_sat(bmin, -drift) && o <= r_add_sat(bmax, drift);
-    }
-    bool max_first = (s->near_max >> a) & 1u;
-    real_slab_t t0 = r_slab_dist(max_first ? bmax : bmin, o, s->inv[a]);
-    real_slab_t t1 = r_slab_dist(max_first ? bmin : bmax, o, s->inv[a]);
+    real_slab_t t0 = r_slab_dist(node_bound(n, s->near[a]), s->o[a], s->inv[a]);
+    real_slab_t t1 = r_slab_dist(node_bound(n, s->far[a]), s->o[a], s->inv[a]);
     *lo = t0 > *lo ? t0 : *lo;
     *hi = t1 < *hi ? t1 : *hi;
     return *lo <= *hi;
+}
+
+/* The same for rays with an axis too close to parallel for a reciprocal:
+ * there the ray drifts at most |d| tmax across the slab. */
+RT_NOINLINE static bool slab_axis_any(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_t tmax,
+                                      real_slab_t *lo, real_slab_t *hi)
+{
+    if (!(s->parallel & (1u << a)))
+        return slab_axis(s, n, a, lo, hi);
+    real_t drift = r_mul(s->dir_abs[a], tmax) + RT_SLAB_MARGIN, o = s->o[a];
+    return o >= r_add_sat(v3_axis(&n->min, a), -drift) && o <= r_add_sat(v3_axis(&n->max, a), drift);
 }
 
 /* Whether the ray meets the node's box within [lo, hi] (the ray's
@@ -69,9 +92,13 @@ static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsign
 static RT_INLINE bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_slab_t lo, real_slab_t hi,
                                 real_t tmax, real_slab_t *entry)
 {
-    if (!slab_axis(s, n, 0, tmax, &lo, &hi) || !slab_axis(s, n, 1, tmax, &lo, &hi) ||
-        !slab_axis(s, n, 2, tmax, &lo, &hi))
+    if (s->parallel) {
+        if (!slab_axis_any(s, n, 0, tmax, &lo, &hi) || !slab_axis_any(s, n, 1, tmax, &lo, &hi) ||
+            !slab_axis_any(s, n, 2, tmax, &lo, &hi))
+            return false;
+    } else if (!slab_axis(s, n, 0, &lo, &hi) || !slab_axis(s, n, 1, &lo, &hi) || !slab_axis(s, n, 2, &lo, &hi)) {
         return false;
+    }
     *entry = lo;
     return true;
 }
