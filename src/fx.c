@@ -103,7 +103,7 @@ static uint64_t isqrt64_round(uint64_t v)
 /* 2^62 / x in Q.31 for x in [2^31, 2^32): a 16-bit estimate from one
  * 32-bit hardware divide (UDIV, 2..12 cycles on the M3), then one Newton
  * step y' = y (2 - x y); relative error below 2^-29. */
-static uint32_t recip_q31(uint32_t x)
+uint32_t fx_recip_q31(uint32_t x)
 {
     uint32_t y = (0xFFFFFFFFu / (x >> 16)) << 14;          /* within 2^-15 */
     uint32_t two_minus_xy = 0u - (uint32_t)(fx_umul64(x, y) >> 31); /* 2^32 - x y */
@@ -122,7 +122,7 @@ fx_t fx_div(fx_t a, fx_t b)
     uint64_t n = (uint64_t)(a < 0 ? -(int64_t)a : a);
     uint64_t d = (uint64_t)(b < 0 ? -(int64_t)b : b);
     int s = clz64(d) - 32;
-    uint64_t y = recip_q31((uint32_t)(d << s));   /* 2^62 / (d 2^s) */
+    uint64_t y = fx_recip_q31((uint32_t)(d << s));   /* 2^62 / (d 2^s) */
     int shift = 62 - FX_FRAC_BITS - s;            /* q = n y 2^-shift */
     uint64_t ny = fx_umul64x(n, y);               /* < 2^62 */
     uint64_t q = shift >= 0 ? ny >> shift : (shift > -8 ? ny << -shift : UINT64_MAX);

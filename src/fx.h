@@ -66,6 +66,21 @@ static inline fx_t fx_sat64(int64_t v)
     return (fx_t)v;
 }
 
+/* Leading zero bits of a non-zero 32-bit value (CLZ on the M3). */
+static inline int fx_clz32(uint32_t v)
+{
+#if defined(__GNUC__)
+    return __builtin_clz(v);
+#else
+    int n = 0;
+    while (!(v & 0x80000000u)) {
+        v <<= 1;
+        n++;
+    }
+    return n;
+#endif
+}
+
 /* Round a value with `shift` extra fraction bits to nearest (half up). */
 static inline int64_t fx_round_shift(int64_t v, unsigned shift)
 {
@@ -288,6 +303,9 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
+/* 2^62 / x for x in [2^31, 2^32), relative error below 2^-29: the
+ * reciprocal before rounding, for callers that scale it themselves. */
+uint32_t fx_recip_q31(uint32_t x);
 
 /* a - b, saturated to 32 bits. */
 static inline int32_t fx_sub_sat(fx_t a, fx_t b)

@@ -58,7 +58,12 @@ static inline real_t r_recip(real_t b) { return R_ONE / b; }
 /* BVH slab distances (scene_hit.c): plain products here; see the fixed
  * backend for the scaled form. */
 typedef real_t real_slab_t;
-static inline int r_slab_scale(real_t inv[3], const bool skip[3]) { (void)inv, (void)skip; return 0; }
+static inline int r_slab_inverse(const real_t d[3], const bool skip[3], real_t inv[3])
+{
+    for (int a = 0; a < 3; a++)
+        inv[a] = skip[a] ? 0 : R_ONE / d[a];
+    return 0;
+}
 static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv) { return (bound - o) * inv; }
 static inline real_slab_t r_slab_from_t_down(real_t t, int shift) { (void)shift; return t; }
 static inline real_slab_t r_slab_from_t_up(real_t t, int shift) { (void)shift; return t; }
@@ -153,28 +158,38 @@ static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the
- * high word of the exact product (bound - o) * (inv 2^k), that is t in
- * Q(2F - 32 + k), rounded down. k is per ray: as large as keeps every
- * scaled reciprocal below 2^30 (so 16 to 18 fraction bits for most rays),
- * and shift = 32 - F - k turns a Q.F distance into that format. One SMULL
- * and 32-bit compares per plane, where the Q.2F form needs 64-bit ones. */
+ * high word of the exact product (bound - o) * inv, where inv is 1/d in
+ * Q(F + k): t comes out in Q(2F - 32 + k), rounded down. k is per ray, as
+ * large as keeps every |inv| below 2^30 (16 to 18 fraction bits for most
+ * rays), and shift = 32 - F - k turns a Q.F distance into that format.
+ * One SMULL and 32-bit compares per plane, where Q.2F needs 64-bit ones.
+ * inv comes from fx_recip_q31 (2^-29) rounded once: within 2^-(F+1)
+ * relative, like a rounded fx_recip (the bound RT_BOX_SLACK assumes). */
 typedef int32_t real_slab_t;
-static inline int r_slab_scale(real_t inv[3], const bool skip[3])
+static inline int r_slab_inverse(const real_t d[3], const bool skip[3], real_t inv[3])
 {
-    uint32_t m = 0;
-    for (int a = 0; a < 3; a++)
-        m |= skip[a] ? 0 : (uint32_t)(inv[a] < 0 ? -inv[a] : inv[a]);
-    int k = 0; /* |inv 2^k| < 2^30 */
-#if defined(__GNUC__)
-    k = m ? __builtin_clz(m) - 2 : 0;
-#else
-    while (m && (m << k) < ((uint32_t)1 << 29))
-        k++;
-#endif
-    if (k > 32 - FX_FRAC_BITS)
-        k = 32 - FX_FRAC_BITS;
-    for (int a = 0; a < 3; a++)
-        inv[a] = skip[a] ? 0 : (real_t)((uint32_t)inv[a] << k);
+    int s[3], s_max = 0;
+    for (int a = 0; a < 3; a++) {
+        uint32_t m = (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
+        s[a] = skip[a] || m == 0 ? 0 : fx_clz32(m); /* m 2^s in [2^31, 2^32) */
+        s_max = s[a] > s_max ? s[a] : s_max;
+    }
+    /* 1/d = y 2^(F + s - 62) with y = fx_recip_q31(m 2^s) < 2^31, so in
+     * Q(F + k) it is y 2^(2F + s + k - 62): k = 61 - 2F - s_max keeps the
+     * largest below 2^30 */
+    int k = 61 - 2 * FX_FRAC_BITS - s_max;
+    k = k > 32 - FX_FRAC_BITS ? 32 - FX_FRAC_BITS : k;
+    for (int a = 0; a < 3; a++) {
+        if (skip[a] || d[a] == 0) {
+            inv[a] = 0;
+            continue;
+        }
+        uint32_t m = (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
+        uint32_t y = fx_recip_q31(m << s[a]);
+        int down = 62 - 2 * FX_FRAC_BITS - s[a] - k; /* >= 1 */
+        int32_t v = (int32_t)((y + ((uint32_t)1 << (down - 1))) >> down);
+        inv[a] = d[a] < 0 ? -v : v;
+    }
     return 32 - FX_FRAC_BITS - k;
 }
 static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv)

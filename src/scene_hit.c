@@ -50,9 +50,8 @@ static void slab_init(slab_ray_t *s, const ray_t *r)
         s->parallel |= (uint8_t)(parallel[a] << a);
         s->near[a] = (uint8_t)(d[a] < 0 ? NODE_MAX(a) : NODE_MIN(a));
         s->far[a] = (uint8_t)(d[a] < 0 ? NODE_MIN(a) : NODE_MAX(a));
-        s->inv[a] = parallel[a] ? 0 : r_recip(d[a]);
     }
-    s->shift = r_slab_scale(s->inv, parallel);
+    s->shift = r_slab_inverse(d, parallel, s->inv);
 }
 
 /* The bound of node n at byte offset off (slab_ray_t.near, .far). */
