@@ -58,10 +58,10 @@ static inline real_t r_recip(real_t b) { return R_ONE / b; }
 /* BVH slab distances (scene_hit.c): plain products here; see the fixed
  * backend for the scaled form. */
 typedef real_t real_slab_t;
-static inline int r_slab_inverse(const real_t d[3], const bool skip[3], real_t inv[3])
+static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3])
 {
     for (int a = 0; a < 3; a++)
-        inv[a] = skip[a] ? 0 : R_ONE / d[a];
+        inv[a] = (skip >> a) & 1u ? 0 : R_ONE / d[a];
     return 0;
 }
 static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv) { return (bound - o) * inv; }
@@ -166,28 +166,25 @@ static inline real_t r_recip(real_t b) { return fx_recip(b); }
  * inv comes from fx_recip_q31 (2^-29) rounded once: within 2^-(F+1)
  * relative, like a rounded fx_recip (the bound RT_BOX_SLACK assumes). */
 typedef int32_t real_slab_t;
-static inline int r_slab_inverse(const real_t d[3], const bool skip[3], real_t inv[3])
+static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3])
 {
-    int s[3], s_max = 0;
+    uint32_t m[3], m_min = UINT32_MAX;
     for (int a = 0; a < 3; a++) {
-        uint32_t m = (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
-        s[a] = skip[a] || m == 0 ? 0 : fx_clz32(m); /* m 2^s in [2^31, 2^32) */
-        s_max = s[a] > s_max ? s[a] : s_max;
+        m[a] = (skip >> a) & 1u ? 0 : (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
+        m_min = m[a] && m[a] < m_min ? m[a] : m_min;
     }
-    /* 1/d = y 2^(F + s - 62) with y = fx_recip_q31(m 2^s) < 2^31, so in
-     * Q(F + k) it is y 2^(2F + s + k - 62): k = 61 - 2F - s_max keeps the
-     * largest below 2^30 */
+    /* with m 2^s in [2^31, 2^32), 1/d = y 2^(F + s - 62) for y =
+     * fx_recip_q31(m 2^s) < 2^31, that is y 2^(2F + s + k - 62) in
+     * Q(F + k): k = 61 - 2F - s_max keeps the largest below 2^30 */
+    int s_max = fx_clz32(m_min);
     int k = 61 - 2 * FX_FRAC_BITS - s_max;
     k = k > 32 - FX_FRAC_BITS ? 32 - FX_FRAC_BITS : k;
     for (int a = 0; a < 3; a++) {
-        if (skip[a] || d[a] == 0) {
-            inv[a] = 0;
-            continue;
+        int32_t v = 0;
+        if (m[a]) {
+            int s = fx_clz32(m[a]), down = 62 - 2 * FX_FRAC_BITS - s - k; /* >= 1 */
+            v = (int32_t)((fx_recip_q31(m[a] << s) + ((uint32_t)1 << (down - 1))) >> down);
         }
-        uint32_t m = (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
-        uint32_t y = fx_recip_q31(m << s[a]);
-        int down = 62 - 2 * FX_FRAC_BITS - s[a] - k; /* >= 1 */
-        int32_t v = (int32_t)((y + ((uint32_t)1 << (down - 1))) >> down);
         inv[a] = d[a] < 0 ? -v : v;
     }
     return 32 - FX_FRAC_BITS - k;

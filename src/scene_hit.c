@@ -41,16 +41,17 @@ _Static_assert(NODE_MIN(2) + sizeof(real_t) == offsetof(bvh_node_t, min) + sizeo
 static void slab_init(slab_ray_t *s, const ray_t *r)
 {
     const real_t d[3] = { r->dir.x, r->dir.y, r->dir.z };
-    bool parallel[3];
-    s->parallel = 0;
-    for (int a = 0; a < 3; a++) {
-        s->o[a] = v3_axis(&r->origin, (unsigned)a);
+    unsigned parallel = 0;
+    s->o[0] = r->origin.x;
+    s->o[1] = r->origin.y;
+    s->o[2] = r->origin.z;
+    for (unsigned a = 0; a < 3; a++) {
         s->dir_abs[a] = r_abs(d[a]);
-        parallel[a] = s->dir_abs[a] < RT_SLAB_PARALLEL;
-        s->parallel |= (uint8_t)(parallel[a] << a);
+        parallel |= (unsigned)(s->dir_abs[a] < RT_SLAB_PARALLEL) << a;
         s->near[a] = (uint8_t)(d[a] < 0 ? NODE_MAX(a) : NODE_MIN(a));
         s->far[a] = (uint8_t)(d[a] < 0 ? NODE_MIN(a) : NODE_MAX(a));
     }
+    s->parallel = (uint8_t)parallel;
     s->shift = r_slab_inverse(d, parallel, s->inv);
 }
 
