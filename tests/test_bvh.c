@@ -4,6 +4,11 @@
  * every primitive returns (same primitive, same t to the last bit) in the
  * fixed build. Rays come from the camera, from random points in and around
  * the scene, and from surface points (like shadow and secondary rays).
+ * Secondary rays carry the BVH leaf of their surface as a hint (ray.h):
+ * with the right leaf and with a random one, the hit must not change. Any-
+ * hit rays (shadow rays, scene_occluded) must say "blocked" exactly when
+ * brute force finds a hit before their end, whatever the blocker they try
+ * first.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -56,7 +61,10 @@ int main(void)
         free(text);
         double mn[3], mx[3];
         be->bounds(mn, mx);
-        int rays = 0, hits = 0, differ = 0;
+        int rays = 0, hits = 0, differ = 0, hint_differ = 0, occl_differ = 0, occluded_n = 0;
+        uint32_t last_blocker = UINT32_MAX, leaf = UINT32_MAX;
+        bvh_stats_t bs;
+        be->bvh_stats(&bs);
         for (int kind = 0; kind < 3; kind++) {
             for (int i = 0; i < RAYS_PER_KIND; i++) {
                 double o[3], d[3];
@@ -86,10 +94,11 @@ int main(void)
                     }
                     unit(d0);
                     probe_hit_t h;
-                    if (!be->probe(o0, d0, true, &h)) {
+                    if (!be->probe(o0, d0, false, &h)) {
                         i--;
                         continue;
                     }
+                    leaf = h.leaf;
                     for (int k = 0; k < 3; k++) {
                         d[k] = tl_uniform(-1, 1);
                         o[k] = o0[k] + h.t * d0[k] + 1e-3 * h.normal[k] * ((d[k] * h.normal[k] >= 0) ? 1 : -1);
@@ -107,8 +116,34 @@ int main(void)
                                a.index, hb, hb ? b.t : 0, b.kind, b.index);
                     differ++;
                 }
+                /* the surface's own leaf for secondary rays, else any node */
+                uint32_t hint = kind == 2 && (i & 1) ? leaf : (uint32_t)(tl_rand() % (bs.nodes + 2));
+                probe_hit_t c;
+                bool hc = be->probe_leaf(o, d, hint, &c);
+                if (hc != hb || (hc && (c.t_raw != b.t_raw || c.kind != b.kind || c.index != b.index))) {
+                    if (hint_differ < 3)
+                        printf("    %s: leaf hint %u: bvh %d t %.6f, brute %d t %.6f\n", scenes[s], hint, hc,
+                               hc ? c.t : 0, hb, hb ? b.t : 0);
+                    hint_differ++;
+                }
+                /* a shadow ray ending before, at or after the nearest hit */
+                double tmax = hb ? b.t * (0.5 + (tl_rand() % 3) * 0.5) : tl_uniform(0.1, 100);
+                bool expect = hb && b.t < tmax;
+                if ((tl_rand() & 3) == 0)
+                    last_blocker = hb ? ((uint32_t)b.kind << 24 | b.index) : UINT32_MAX;
+                bool blocked = be->occluded(o, d, tmax, hint, &last_blocker);
+                occluded_n += blocked;
+                if (blocked != expect && !(hb && b.t == tmax)) {
+                    if (occl_differ < 3)
+                        printf("    %s: occluded %d to t %.6f, brute nearest %d t %.6f\n", scenes[s], blocked,
+                               tmax, hb, hb ? b.t : 0);
+                    occl_differ++;
+                }
             }
         }
+        CHECK(hint_differ == 0, "%s: leaf hints change no hit (%d differ)", scenes[s], hint_differ);
+        CHECK(occl_differ == 0 && occluded_n > 0, "%s: shadow rays blocked exactly when brute force hits before "
+              "their end (%d blocked, %d differ)", scenes[s], occluded_n, occl_differ);
         CHECK(differ == 0, "%s: %d rays (%d hits): BVH and brute force differ on %d", scenes[s], rays, hits,
               differ);
     }

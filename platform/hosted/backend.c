@@ -99,16 +99,23 @@ static bool bounds(double mn[3], double mx[3])
     return true;
 }
 
-static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t *out)
+static ray_t probe_ray(const double o[3], const double d[3], uint32_t leaf)
 {
-    const scene_t *sc = &store.scene;
     ray_t r;
     double w = world_per_unit();
     r.origin = v3(to_real(o[0] / w), to_real(o[1] / w), to_real(o[2] / w));
     r.dir = v3_unit(v3(to_real(d[0]), to_real(d[1]), to_real(d[2])));
     r.from = PRIM_NONE;
     r.from_far = false;
-    r.leaf = RT_NO_LEAF;
+    r.leaf = leaf;
+    return r;
+}
+
+static bool probe_with(const double o[3], const double d[3], bool brute, uint32_t leaf, probe_hit_t *out)
+{
+    const scene_t *sc = &store.scene;
+    double w = world_per_unit();
+    ray_t r = probe_ray(o, d, leaf);
     rt_stats_t st = { 0 };
     hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
@@ -131,9 +138,29 @@ static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t 
     out->point[2] = w * to_double(p.z);
     out->kind = h.kind;
     out->index = h.index;
+    out->leaf = h.leaf;
     return true;
 }
 
+static bool probe(const double o[3], const double d[3], bool brute, probe_hit_t *out)
+{
+    return probe_with(o, d, brute, RT_NO_LEAF, out);
+}
+
+static bool probe_leaf(const double o[3], const double d[3], uint32_t leaf, probe_hit_t *out)
+{
+    return probe_with(o, d, false, leaf, out);
+}
+
+static bool occluded(const double o[3], const double d[3], double tmax, uint32_t leaf, uint32_t *last_blocker)
+{
+    ray_t r = probe_ray(o, d, leaf);
+    rt_stats_t st = { 0 };
+    prim_ref_t blocker = *last_blocker;
+    bool b = scene_occluded(&store.scene, &r, RT_T_MIN, to_real(tmax / world_per_unit()), &blocker, &st);
+    *last_blocker = blocker;
+    return b;
+}
 
 static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 {
@@ -158,6 +185,6 @@ static double pow_unit(double x, double s)
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, probe,
+    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, probe, probe_leaf, occluded,
     bounds, eye_dir, pow_unit,
 };

@@ -27,6 +27,7 @@ typedef struct {
     double point[3];    /* the hit point as the backend computes it */
     int kind;           /* enum prim_kind */
     uint32_t index;
+    uint32_t leaf;      /* the BVH leaf it was found in (RT_NO_LEAF by brute force) */
 } probe_hit_t;
 
 typedef struct {
@@ -50,6 +51,13 @@ typedef struct {
      * the BVH or, with `brute`, by testing every primitive. Origin and t
      * are in the file's units (the backend applies the reader's scale). */
     bool (*probe)(const double origin[3], const double dir[3], bool brute, probe_hit_t *hit);
+    /* The same through the BVH for a ray starting in BVH leaf `leaf` (the
+     * hint of secondary rays, ray.h), and whether anything lies on the
+     * ray before tmax, trying *last_blocker first (scene_occluded; a prim
+     * reference as PRIM_REF(kind, index), or UINT32_MAX). */
+    bool (*probe_leaf)(const double origin[3], const double dir[3], uint32_t leaf, probe_hit_t *hit);
+    bool (*occluded)(const double origin[3], const double dir[3], double tmax, uint32_t leaf,
+                     uint32_t *last_blocker);
     /* The scene's bounds (root box of the BVH); false for an empty scene. */
     bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */
