@@ -29,6 +29,8 @@ typedef struct {
                               * ray enters slab a by, and leaves it by */
     uint8_t parallel;      /* bit a: |d_a| < RT_SLAB_PARALLEL */
     int shift;             /* for r_slab_from_t_* */
+    real_slab_t lo;        /* tmin */
+    real_t tmax;           /* the current far end (parallel axes' drift) */
 } slab_ray_t;
 
 #define NODE_MIN(a) (offsetof(bvh_node_t, min) + (a) * sizeof(real_t))
@@ -38,7 +40,7 @@ _Static_assert(NODE_MIN(2) + sizeof(real_t) == offsetof(bvh_node_t, min) + sizeo
                    NODE_MAX(2) < 256,
                "a node's bounds are two runs of three real_t, at byte offsets below 256");
 
-static void slab_init(slab_ray_t *s, const ray_t *r)
+static void slab_init(slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
 {
     const real_t d[3] = { r->dir.x, r->dir.y, r->dir.z };
     unsigned parallel = 0;
@@ -53,6 +55,8 @@ static void slab_init(slab_ray_t *s, const ray_t *r)
     }
     s->parallel = (uint8_t)parallel;
     s->shift = r_slab_inverse(d, parallel, s->inv);
+    s->lo = r_slab_from_t_down(tmin, s->shift);
+    s->tmax = tmax;
 }
 
 /* The bound of node n at byte offset off (slab_ray_t.near, .far). */
@@ -68,6 +72,11 @@ static RT_INLINE real_t node_bound(const bvh_node_t *n, unsigned off)
 static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_slab_t *lo,
                                 real_slab_t *hi)
 {
+    if (s->parallel & (1u << a)) {
+        /* no reciprocal: the ray drifts at most |d| tmax across the slab */
+        real_t drift = r_mul(s->dir_abs[a], s->tmax) + RT_SLAB_MARGIN, o = s->o[a];
+        return o >= r_add_sat(v3_axis(&n->min, a), -drift) && o <= r_add_sat(v3_axis(&n->max, a), drift);
+    }
     real_slab_t t0 = r_slab_dist(node_bound(n, s->near[a]), s->o[a], s->inv[a]);
     real_slab_t t1 = r_slab_dist(node_bound(n, s->far[a]), s->o[a], s->inv[a]);
     *lo = t0 > *lo ? t0 : *lo;
@@ -75,32 +84,16 @@ static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsign
     return *lo <= *hi;
 }
 
-/* The same for rays with an axis too close to parallel for a reciprocal:
- * there the ray drifts at most |d| tmax across the slab. */
-RT_NOINLINE static bool slab_axis_any(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_t tmax,
-                                      real_slab_t *lo, real_slab_t *hi)
+/* Where the ray enters the node's box within [s->lo, hi] (hi from
+ * r_slab_from_t_up), or a negative value when it does not (entries are at
+ * least tmin > 0). One copy, called from every box test: the loops stay
+ * small enough for a 16 KiB firmware. */
+RT_NOINLINE static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
 {
-    if (!(s->parallel & (1u << a)))
-        return slab_axis(s, n, a, lo, hi);
-    real_t drift = r_mul(s->dir_abs[a], tmax) + RT_SLAB_MARGIN, o = s->o[a];
-    return o >= r_add_sat(v3_axis(&n->min, a), -drift) && o <= r_add_sat(v3_axis(&n->max, a), drift);
-}
-
-/* Whether the ray meets the node's box within [lo, hi] (the ray's
- * interval, from r_slab_from_t_*); *entry is where it enters (for
- * nearest-first ordering). */
-static RT_INLINE bool slab_test(const bvh_node_t *n, const slab_ray_t *s, real_slab_t lo, real_slab_t hi,
-                                real_t tmax, real_slab_t *entry)
-{
-    if (s->parallel) {
-        if (!slab_axis_any(s, n, 0, tmax, &lo, &hi) || !slab_axis_any(s, n, 1, tmax, &lo, &hi) ||
-            !slab_axis_any(s, n, 2, tmax, &lo, &hi))
-            return false;
-    } else if (!slab_axis(s, n, 0, &lo, &hi) || !slab_axis(s, n, 1, &lo, &hi) || !slab_axis(s, n, 2, &lo, &hi)) {
-        return false;
-    }
-    *entry = lo;
-    return true;
+    real_slab_t lo = s->lo;
+    if (!slab_axis(s, n, 0, &lo, &hi) || !slab_axis(s, n, 1, &lo, &hi) || !slab_axis(s, n, 2, &lo, &hi))
+        return -1;
+    return lo;
 }
 
 /* A primitive against the ray; the primitive the ray leaves is skipped
@@ -130,23 +123,31 @@ static uint32_t any_stack[RT_BVH_MAX_DEPTH];
  * no box test, nor the slab set-up. */
 static RT_INLINE bool enter_root(const scene_t *sc, slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
 {
-    real_slab_t entry;
     if (sc->n_bvh_nodes == 0)
         return false;
     if (sc->bvh_nodes[0].count) {
         s->shift = 0; /* read, never used: nothing is pushed */
         return true;
     }
-    slab_init(s, r);
-    return r->leaf != RT_NO_LEAF || slab_test(&sc->bvh_nodes[0], s, r_slab_from_t_down(tmin, s->shift), r_slab_from_t_up(tmax, s->shift),
-                     tmax, &entry);
+    slab_init(s, r, tmin, tmax);
+    return r->leaf != RT_NO_LEAF || slab_entry(&sc->bvh_nodes[0], s, r_slab_from_t_up(tmax, s->shift)) >= 0;
+}
+
+/* The children of interior node n (at index node) in the order to visit
+ * them: on the way down to the ray's leaf `path`, the child towards it
+ * comes first, entered untested at s->lo (the other must be tested). */
+static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path, uint32_t *first,
+                               uint32_t *second)
+{
+    bool right_first = path != RT_NO_LEAF && path >= n->index;
+    *first = right_first ? n->index : node + 1;
+    *second = right_first ? node + 1 : n->index;
 }
 
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    real_slab_t ea, eb;
     if (!enter_root(sc, &s, r, tmin, h->t))
         return false;
     bvh_stack_t *stack = nearest_stack;
@@ -165,31 +166,20 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                 bool lower = !found || ref < PRIM_REF(h->kind, h->index);
                 real_t t = lower ? r_next_up(h->t) : h->t;
                 if (hit_prim(sc, ref, r, tmin, &t, st, h) && (t < h->t || lower)) {
-                    h->t = t;
+                    h->t = s.tmax = t;
                     h->kind = (uint8_t)PRIM_KIND(ref);
                     h->index = PRIM_INDEX(ref);
                     h->leaf = node;
                     found = true;
                 }
             }
-        } else if (path != RT_NO_LEAF) {
-            /* the child on the way to the ray's leaf first, untested; its
-             * sibling waits if the ray meets it */
-            uint32_t a = path < n->index ? node + 1 : n->index, b = path < n->index ? n->index : node + 1;
-            if (slab_test(&nodes[b], &s, r_slab_from_t_down(tmin, s.shift), r_slab_from_t_up(h->t, s.shift), h->t,
-                          &eb)) {
-                stack[sp].node = b;
-                stack[sp].entry = eb;
-                sp++;
-            }
-            node = a;
-            continue;
         } else {
-            uint32_t a = node + 1, b = n->index;
-            real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(h->t, s.shift);
-            bool ha = slab_test(&nodes[a], &s, lo, hi, h->t, &ea);
-            bool hb = slab_test(&nodes[b], &s, lo, hi, h->t, &eb);
-            if (ha && hb) {
+            uint32_t a, b;
+            children(n, node, path, &a, &b);
+            real_slab_t hi = r_slab_from_t_up(h->t, s.shift);
+            real_slab_t ea = path != RT_NO_LEAF ? s.lo : slab_entry(&nodes[a], &s, hi);
+            real_slab_t eb = slab_entry(&nodes[b], &s, hi);
+            if (ea >= 0 && eb >= 0) {
                 if (eb < ea) { /* nearer child first, the other waits */
                     uint32_t tn = a;
                     a = b;
@@ -199,11 +189,9 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                 stack[sp].node = b;
                 stack[sp].entry = eb;
                 sp++;
-                node = a;
-                continue;
             }
-            if (ha || hb) {
-                node = ha ? a : b;
+            if (ea >= 0 || eb >= 0) {
+                node = ea >= 0 ? a : b;
                 continue;
             }
         }
@@ -226,13 +214,12 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     static slab_ray_t s; /* static like the stacks above */
-    real_slab_t entry;
     real_t t = tmax;
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, st, 0))
         return true;
     if (!enter_root(sc, &s, r, tmin, tmax))
         return false;
-    const real_slab_t lo = r_slab_from_t_down(tmin, s.shift), hi = r_slab_from_t_up(tmax, s.shift);
+    const real_slab_t hi = r_slab_from_t_up(tmax, s.shift);
     uint32_t *stack = any_stack;
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
@@ -250,16 +237,11 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
             }
             if (blocked)
                 break;
-        } else if (path != RT_NO_LEAF) {
-            uint32_t a = path < n->index ? node + 1 : n->index, b = path < n->index ? n->index : node + 1;
-            if (slab_test(&nodes[b], &s, lo, hi, tmax, &entry))
-                stack[sp++] = b;
-            node = a;
-            continue;
         } else {
-            uint32_t a = node + 1, b = n->index;
-            bool ha = slab_test(&nodes[a], &s, lo, hi, tmax, &entry);
-            bool hb = slab_test(&nodes[b], &s, lo, hi, tmax, &entry);
+            uint32_t a, b;
+            children(n, node, path, &a, &b);
+            bool ha = path != RT_NO_LEAF || slab_entry(&nodes[a], &s, hi) >= 0;
+            bool hb = slab_entry(&nodes[b], &s, hi) >= 0;
             if (ha && hb)
                 stack[sp++] = b;
             if (ha || hb) {
