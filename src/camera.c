@@ -23,7 +23,7 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     c->ny = ny;
     int32_t span = (nx > ny ? nx : ny) - 1;
     real_wide_t tan_half = view->tan_half;
-    real_wide_t half_step = span > 0 ? tan_half / span : 0;
+    real_wide_t half_step = span > 0 ? r_wdiv_int(tan_half, span) : 0;
     /* T at the distance of `at` (within 16, like all geometry), unless the
      * view is so wide there that T's offsets would pass 256 (a wide lens,
      * or a far camera): then at unit distance */

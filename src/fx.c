@@ -48,6 +48,29 @@ static int clz64(uint64_t v)
 #endif
 }
 
+/* n / d (d != 0), truncated like C's: binary long division from n's top
+ * bit. A few dozen bytes where libgcc's 64-bit division is 700 on the M3;
+ * only set-up code and rare wide quotients divide 64-bit values here. */
+static uint64_t udiv64(uint64_t n, uint64_t d)
+{
+    uint64_t q = 0, r = 0;
+    for (int i = n ? 63 - clz64(n) : -1; i >= 0; i--) {
+        r = (r << 1) | ((n >> i) & 1u); /* r < d <= 2^63: no overflow */
+        q <<= 1;
+        if (r >= d) {
+            r -= d;
+            q |= 1;
+        }
+    }
+    return q;
+}
+
+static int64_t sdiv64(int64_t n, int64_t d)
+{
+    uint64_t q = udiv64(n < 0 ? 0 - (uint64_t)n : (uint64_t)n, d < 0 ? 0 - (uint64_t)d : (uint64_t)d);
+    return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
+}
+
 /* 1/sqrt(x / 2^30) in Q.31 for x in [2^30, 2^32): a 24-entry seed (within
  * 3.2%) and three Newton steps y' = y (3 - x y^2) / 2; relative error
  * below 2^-29. Multiplies only: the M3 has no 64-bit divide. */
@@ -160,7 +183,7 @@ fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
     }
     int64_t n = a * FX_ONE;
     int64_t h = (b < 0 ? -b : b) / 2;
-    return fx_sat64((n >= 0 ? n + h : n - h) / b);
+    return fx_sat64(sdiv64(n >= 0 ? n + h : n - h, b));
 }
 
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
@@ -171,9 +194,11 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
         return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
     }
     if (w < lim && w > -lim)
-        return (w * FX_ONE) / a;
-    return (w / a) * FX_ONE;
+        return sdiv64(w * FX_ONE, a);
+    return sdiv64(w, a) * FX_ONE;
 }
+
+fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
 
 fx_t fx_sqrt(fx_t a)
 {
@@ -285,7 +310,7 @@ static int64_t sin_q30(int64_t x)
     static const int32_t den[] = { 210, 156, 110, 72, 42, 20, 6 };
     int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
     for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
-        t = ((int64_t)1 << 30) - mul_q30(x2, t) / den[i];
+        t = ((int64_t)1 << 30) - sdiv64(mul_q30(x2, t), den[i]);
     return mul_q30(x, t);
 }
 
@@ -294,7 +319,7 @@ static int64_t cos_q30(int64_t x)
     static const int32_t den[] = { 240, 182, 132, 90, 56, 30, 12, 2 };
     int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
     for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
-        t = ((int64_t)1 << 30) - mul_q30(x2, t) / den[i];
+        t = ((int64_t)1 << 30) - sdiv64(mul_q30(x2, t), den[i]);
     return t;
 }
 
@@ -305,7 +330,7 @@ fx_wide_t fx_tan_deg_wide(fx_t deg)
     int64_t s = sin_q30(rad), c = cos_q30(rad);
     if (c <= 0)
         return INT64_MAX;
-    int64_t t30 = (s * ((int64_t)1 << 30)) / c; /* tan in Q.30 (s < 2^30, fits) */
+    int64_t t30 = sdiv64(s * ((int64_t)1 << 30), c); /* tan in Q.30 (s < 2^30, fits) */
 #if 2 * FX_FRAC_BITS >= 30
     return t30 * ((int64_t)1 << (2 * FX_FRAC_BITS - 30));
 #else
@@ -317,10 +342,10 @@ void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
 {
     /* reduce to [0, 360) degrees, then to a quadrant [0, 90] */
     int64_t full = (int64_t)360 * FX_ONE;
-    int64_t a = deg % full;
+    int64_t a = deg - sdiv64(deg, full) * full;
     if (a < 0)
         a += full;
-    int quadrant = (int)(a / ((int64_t)90 * FX_ONE));
+    int quadrant = (int)sdiv64(a, (int64_t)90 * FX_ONE);
     int64_t r = a - quadrant * (int64_t)90 * FX_ONE;
     int64_t rad = (r * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
     int64_t s = sin_q30(rad), c = cos_q30(rad);

@@ -367,6 +367,7 @@ static inline fx_wide_t fx_wmul_fx(fx_wide_t w, fx_t a)
 }
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b); /* a / b of two Q.2F values, as Q.F */
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a); /* w / a, as Q.2F; a == 0 saturates */
+fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n); /* w / n truncated, n != 0 (C's w / n) */
 fx_t fx_sqrt(fx_t a);                 /* a < 0 gives 0 */
 fx_t fx_wsqrt(fx_wide_t w);           /* sqrt of a Q.2F value, as Q.F */
 fx_t fx_pow_unit(fx_t x, fx_shine_t s);/* x^s for x in [0,1]; 0 for x <= 0 */

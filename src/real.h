@@ -80,6 +80,7 @@ static inline real_t r_from_wide(real_wide_t w) { return w; }
 static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? R_FN(sqrt)(w) : 0; }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
+static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return w / n; }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return w * a; }
 static inline int32_t r_floor_int(real_t a) { return (int32_t)R_FN(floor)(a); }
 static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
@@ -206,6 +207,7 @@ static inline real_t r_from_wide(real_wide_t w) { return fx_from_wide(w); }
 static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
+static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
 static inline real_t r_add_sat(real_t a, real_t b) { return fx_sat64((int64_t)a + b); }

@@ -208,7 +208,8 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     static rt_stats_t no_stats; /* stats == NULL: counted here, unread */
     if (stats == 0)
         stats = &no_stats;
-    tr = (tracer_t){ sc, depth, stats, opts->spd, R_RATIO(opts->adaptive_milli, 1000), last_blocker };
+    tr = (tracer_t){ sc, depth, stats, opts->spd, r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)),
+                     last_blocker };
     for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
         last_blocker[i] = PRIM_NONE;
 

@@ -24,6 +24,7 @@
 #define fx_mul64_call            rt_fx_mul64_call
 #define fx_pow_unit              rt_fx_pow_unit
 #define fx_recip                 rt_fx_recip
+#define fx_recip_q31             rt_fx_recip_q31
 #define fx_sincos_deg            rt_fx_sincos_deg
 #define fx_sqrt                  rt_fx_sqrt
 #define fx_tan_deg_wide          rt_fx_tan_deg_wide
@@ -31,6 +32,7 @@
 #define fx_unit3                 rt_fx_unit3
 #define fx_wdiv                  rt_fx_wdiv
 #define fx_wdiv_fx               rt_fx_wdiv_fx
+#define fx_wdiv_int              rt_fx_wdiv_int
 #define fx_wsqrt                 rt_fx_wsqrt
 #define lex_count                rt_lex_count
 #define lex_decimal              rt_lex_decimal
