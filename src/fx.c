@@ -49,8 +49,10 @@ static int clz64(uint64_t v)
 }
 
 /* n / d (d != 0), truncated like C's: binary long division from n's top
- * bit. A few dozen bytes where libgcc's 64-bit division is 700 on the M3;
- * only set-up code and rare wide quotients divide 64-bit values here. */
+ * bit, up to 64 steps. A few dozen bytes where libgcc's 64-bit division
+ * is 700 on the M3, for set-up code (camera, sines, tangents); the wide
+ * quotients of intersection tests (fx_wdiv, fx_wdiv_fx) keep C's
+ * division, which a firmware links only when its scene needs them. */
 static uint64_t udiv64(uint64_t n, uint64_t d)
 {
     uint64_t q = 0, r = 0;
@@ -183,7 +185,7 @@ fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
     }
     int64_t n = a * FX_ONE;
     int64_t h = (b < 0 ? -b : b) / 2;
-    return fx_sat64(sdiv64(n >= 0 ? n + h : n - h, b));
+    return fx_sat64((n >= 0 ? n + h : n - h) / b);
 }
 
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
@@ -194,8 +196,8 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
         return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
     }
     if (w < lim && w > -lim)
-        return sdiv64(w * FX_ONE, a);
-    return sdiv64(w, a) * FX_ONE;
+        return (w * FX_ONE) / a;
+    return (w / a) * FX_ONE;
 }
 
 fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
