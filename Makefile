@@ -8,6 +8,12 @@
 #                   error against the host's double build
 #   make host-run   the same render on the host, fixed and double
 #   make size       flash/RAM by section and stack use of the firmware
+#   make profile    where the firmware's render spends its instructions: per
+#                   function, group (traversal, each primitive, maths,
+#                   shading, output) and ray kind (eye, reflection,
+#                   refraction, shadow), checked against the firmware's own
+#                   counters (bench/profile.py; same variables as make run,
+#                   SIZE 64x64 unless given; about 35 s for balls-2)
 #   make test       install missing packages, build, run every test
 #   make bench      run time against error over numeric configurations, BVH
 #                   scaling, code size with and without pruning, every board and backend (about 45 min)
@@ -22,6 +28,13 @@ SCENE ?= scenes/showpiece.nff
 SIZE  ?= 128x128
 DEPTH ?= 5
 FORMAT ?= rgb888
+# make profile: QEMU logs every block executed, so it renders 64x64 unless
+# SIZE is given (on every board, the OLED's included)
+ifneq ($(filter profile,$(MAKECMDGOALS)),)
+ifeq ($(origin SIZE),file)
+override SIZE := 64x64
+endif
+endif
 
 CC      ?= cc
 LD      ?= ld
@@ -42,7 +55,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage
+.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of

@@ -2,7 +2,7 @@
 """Estimate the cycles of a firmware run under QEMU from its dynamic instruction mix.
 
     bench/cycles.py FIRMWARE.elf [--machine mps2-an385] [--core m3]
-                    [--from-symbol rt_render [--exclude-symbol uart_flush ...]]
+                    [--from-symbol rt_render [--exclude-symbol stream_flush ...]]
                     [--pixels N] [--clock-hz HZ] [--json OUT.json]
     bench/cycles.py --log QEMU.log [--stream UART.out] FIRMWARE.elf ...   (a saved log)
 
@@ -27,15 +27,19 @@ consecutive blocks (an edge), so memory stays small whatever the run length.
   the I/O instruction (the next Trace line's PC, a one-instruction block that
   then executes it). Only the instructions before it are counted.
 - "Stopped execution of TB chain before": the last logged block did not run at
-  all (icount budget or an exit request); it is not counted.
+  all (icount budget or an exit request); it is not counted. Its Trace line
+  may have changed the region state (a call's entry, a return): when the same
+  PC is logged next, re-executed, that change is not made a second time.
 - A block's last instruction, when it is a branch, is taken when the next
   block's PC is not the fall-through address.
 - --from-symbol F counts only inside the dynamic extent of F: from a block at
   F's address (entered by a call: BL/BLX, or JAL/JALR on RISC-V) until the
-  block at the return address (the call's fall-through) runs. Every entry is
-  counted. --exclude-symbol G (repeatable) counts G's extents inside F apart,
-  the way the firmware's report subtracts its UART sink (uart_begin,
-  uart_flush) from render_instructions.
+  block at the return address (the call's fall-through) runs after a return
+  (class Extents: a shadow stack of the tracked functions' frames, which
+  bench/profile.py extends to ray kinds). Every entry is counted.
+  --exclude-symbol G (repeatable) counts G's extents inside F apart, the way
+  the firmware's report subtracts its display sink (stream_begin,
+  stream_flush) from render_instructions.
 
 The instruction total is exact (the self-test bench/cycles_selftest.py checks
 hand-counted loops on every board, with and without I/O in the loop). The
@@ -681,15 +685,114 @@ def trace_pc(line):
 # the streaming log parser
 
 
-class Parser:
-    """Reads the QEMU log; keeps, per bucket (outside / region / excluded), a counter
-    of edges (block key, next block key) and of partial executions."""
+class Extents:
+    """Where the run is: the dynamic extents of chosen functions, followed with a
+    shadow call stack that holds their frames only.
 
-    def __init__(self, model, entry=None, excludes=()):
+    A frame is pushed on a Trace line at a tracked function's entry when the
+    block logged before it ends in a call (BL/BLX; JAL/JALR writing ra or t0):
+    its return address is that call's fall-through. It is popped on a Trace
+    line at its return address when the block before it ends in a return or
+    another indirect jump (BX LR, POP/LDM/LDR with PC, ret, jalr): a join point
+    of the caller that happens to be a call's fall-through address, reached by
+    a branch, is no return. A return to a frame below the top pops every frame
+    above it too (calls that never returned to their own caller).
+
+    Functions that are not tracked need no frame: their returns go to their
+    own call sites, and a tail call out of a tracked function returns to that
+    function's return address all the same. (What would fool it: an indirect
+    call site that calls a tracked function and is itself re-entered, by
+    recursion, inside that function's extent, calling an untracked one.) An
+    entry that does not follow a call (a tail call into a tracked function)
+    gets no frame: a warning, and its instructions stay with the caller.
+
+    The base class is --from-symbol / --exclude-symbol: buckets "outside",
+    "region" (inside the root's extent) and "excluded" (inside an excluded
+    function's extent called from the root's own frame). Subclasses choose
+    what can be entered where (enterable), what an entry does (enter) and the
+    bucket of each state (label).
+    """
+
+    class Frame:
+        __slots__ = ("pc", "ret", "kind", "note")
+
+        def __init__(self, pc, ret):
+            self.pc, self.ret, self.kind, self.note = pc, ret, None, None
+
+    def __init__(self, root=None, excludes=(), warnings=None):
+        self.root = root                   # PC of --from-symbol, or None: count all
+        self.excludes = frozenset(excludes)
+        self.stack = []
+        self.entries = collections.Counter()   # entry PC -> frames pushed
+        self.warnings = warnings if warnings is not None else collections.Counter()
+        self.changed()
+
+    # -- policy -------------------------------------------------------------------
+    def enterable(self):
+        """Entry PCs that push a frame (or do something) in the current state."""
+        if self.root is None:
+            return ()
+        if not self.stack:
+            return (self.root,)
+        if self.stack[-1].pc == self.root:
+            return tuple(self.excludes)
+        return ()
+
+    def label(self):
+        """The bucket of the current state."""
+        if self.root is None:
+            return "region"
+        if not self.stack:
+            return "outside"
+        return "excluded" if self.stack[-1].pc in self.excludes else "region"
+
+    def enter(self, frame):
+        """A call reached an enterable PC: whether the frame is pushed."""
+        return True
+
+    def not_a_call(self, pc):
+        return "entered --%s-symbol not by a call: ignored" % ("from" if pc == self.root else "exclude")
+
+    # -- mechanism ----------------------------------------------------------------
+    def changed(self):
+        self.bucket = self.label()
+        self.enter_pcs = frozenset(self.enterable())
+        self.watch_pcs = self.enter_pcs | frozenset(f.ret for f in self.stack)
+        self.watch_list = tuple(self.watch_pcs)
+
+    def step(self, pc, prev):
+        """A Trace line at a watched PC; prev is the Block logged before it (None if
+        it had no translation listing)."""
+        last = prev.last if prev is not None else None
+        if last is not None and (last.ret or (last.br in ("jump_reg", "pc_load") and not last.call)):
+            for i in range(len(self.stack) - 1, -1, -1):
+                if self.stack[i].ret == pc:
+                    if i < len(self.stack) - 1:
+                        self.warnings["a return went past %d tracked frame(s)" % (len(self.stack) - 1 - i)] += 1
+                    del self.stack[i:]
+                    self.changed()
+                    return
+        if pc in self.enter_pcs:
+            if last is None or not last.call:
+                self.warnings[self.not_a_call(pc)] += 1
+                return
+            f = self.Frame(pc, prev.fall)
+            if self.enter(f):
+                self.stack.append(f)
+                self.entries[pc] += 1
+            self.changed()
+
+
+class Parser:
+    """Reads the QEMU log; keeps, per bucket (outside / region / excluded, or the
+    buckets of another Extents), a counter of edges (block key, next block key)
+    and of partial executions."""
+
+    def __init__(self, model, entry=None, excludes=(), extents=None):
         self.model = model                 # decodes each translation when it is bound
-        self.entry = entry                 # PC of --from-symbol, or None: count all
-        self.excludes = set(excludes)      # PCs of --exclude-symbol
-        self.bucket = "outside" if entry is not None else "region"
+        self.warnings = collections.Counter()
+        self.extents = extents if extents is not None else Extents(entry, excludes)
+        self.extents.warnings = self.warnings
         self.edges = collections.defaultdict(collections.Counter)
         self.partial = collections.defaultdict(collections.Counter)
         self.blocks = {}                   # key -> Block
@@ -698,11 +801,7 @@ class Parser:
         self.pending = None                # translation waiting for its Trace line
         self.pending_partial = None        # (bucket, key) rewound by cpu_io_recompile
         self.in_block = None               # (symbol, insns) while reading in_asm
-        self.ret = None                    # return PC that ends the region
-        self.ret_ex = None                 # return PC that ends an excluded call
-        self.entries = 0
-        self.ex_entries = 0
-        self.warnings = collections.Counter()
+        self.stopped = None                # PC of a block that was logged but did not run
         self.stops = 0
         self.rewinds = 0
         self.translations = 0
@@ -710,46 +809,32 @@ class Parser:
         self.leftover = b""
         self._wcache = {}
 
-    # -- region state ---------------------------------------------------------
+    # -- region state (Extents) ------------------------------------------------
+    @property
+    def bucket(self):
+        return self.extents.bucket
+
+    @property
+    def entry(self):
+        return self.extents.root
+
+    @property
+    def excludes(self):
+        return self.extents.excludes
+
+    @property
+    def entries(self):
+        """Calls of --from-symbol (outside its own extent)."""
+        return self.extents.entries[self.extents.root] if self.extents.root is not None else 0
+
+    @property
+    def ex_entries(self):
+        """Calls of --exclude-symbol functions counted apart."""
+        return sum(self.extents.entries[pc] for pc in self.extents.excludes)
+
     def watch(self):
-        """PCs whose Trace line changes the state, for the current state."""
-        if self.entry is None:
-            return ()
-        if self.bucket == "outside":
-            return (self.entry,)
-        if self.bucket == "region":
-            return (self.ret,) + tuple(self.excludes)
-        return (self.ret_ex,)
-
-    def call_return(self):
-        """Return address of the call that ends the last block, or None."""
-        b = self.blocks.get(self.last) if self.last else None
-        if b is None or b.last is None or not b.last.call:
-            return None
-        return b.fall
-
-    def transition(self, pc):
-        if self.bucket == "outside":
-            if pc != self.entry:
-                return
-            r = self.call_return()
-            if r is None:
-                self.warnings["entered --from-symbol not by a call: ignored"] += 1
-                return
-            self.ret, self.bucket = r, "region"
-            self.entries += 1
-        elif self.bucket == "region":
-            if pc == self.ret:
-                self.bucket = "outside"
-            elif pc in self.excludes:
-                r = self.call_return()
-                if r is None:
-                    self.warnings["entered --exclude-symbol not by a call: ignored"] += 1
-                    return
-                self.ret_ex, self.bucket = r, "excluded"
-                self.ex_entries += 1
-        elif pc == self.ret_ex:
-            self.bucket = "region"
+        """PCs whose Trace line may change the state, for the current state."""
+        return self.extents.watch_list
 
     # -- lines ------------------------------------------------------------------
     def trace_line(self, line):
@@ -768,8 +853,9 @@ class Parser:
             self.pending_partial = None
             self.partial[bucket][(key, pc)] += 1
         self.edges[self.bucket][(self.prev, line)] += 1
-        if self.entry is not None and pc in self.watch():
-            self.transition(pc)
+        if pc in self.extents.watch_pcs and pc != self.stopped:
+            self.extents.step(pc, self.blocks.get(self.last) if self.last is not None else None)
+        self.stopped = None
         self.prev = self.last = line
 
     def other_line(self, line):
@@ -801,6 +887,10 @@ class Parser:
                 if m and not self.prev.split(b" [")[0].endswith(m.group(1)):
                     self.warnings["Stopped line for another block than the last"] += 1
                 self.prev = None
+                # its Trace line made any state change already: not again when it
+                # runs (or the entry of a block that ends in a call would be taken
+                # for a second call)
+                self.stopped = trace_pc(self.last)
         elif line.startswith(b"cpu_io_recompile"):
             self.rewinds += 1
             if self.prev is not None:
@@ -904,6 +994,7 @@ class Parser:
         lines = data[pos:stop - 1].split(b"\n")
         self.edges[self.bucket].update(zip(itertools.chain((self.prev,), lines), lines))
         self.prev = self.last = lines[-1]
+        self.stopped = None
 
 
 # ---------------------------------------------------------------------------

@@ -4,6 +4,7 @@
 #
 #   make run  [BOARD=<QEMU machine>] [BACKEND=fixed|float] [SCENE=..] [SIZE=WxH] [DEPTH=N] [FORMAT=..]
 #   make firmware | size | board-run RUN_OUT=x.png   (the same variables)
+#   make profile [PROFILE_JSON=x.json]   (the same variables; SIZE 64x64 unless given)
 #
 # The port contract (platform/firmware/port.h): a board folder
 # platform/<BOARD>/ holds board.mk, which sets
@@ -189,6 +190,17 @@ run: deps-board
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
+
+# Instructions per function, group and ray kind inside the render, under
+# QEMU (bench/profile.py), with the display sink apart as the firmware's
+# count has it; fails when the total or the ray counts disagree with the
+# firmware's report. The figures also go to PROFILE_JSON.
+PROFILE_JSON ?= $(FW_DIR)/profile-$(BACKEND).json
+profile: deps-board
+	@$(MAKE) -s $(FW_ELF) SIZE=$(SIZE)
+	python3 bench/profile.py $(FW_ELF) --machine $(BOARD) --qemu $(word 1,$(BOARD_QEMU)) \
+	    --sink $(BOARD_SINK_CALLBACKS) --json $(PROFILE_JSON) --check
+	@echo "JSON: $(PROFILE_JSON)"
 
 print-fwdir:
 	@echo $(FW_DIR)
