@@ -48,14 +48,21 @@ static void leave(const surface_t *s, bool through, ray_t *out)
     out->leaf = s->leaf;
 }
 
+/* Colour arithmetic, out of line: a few calls per light and bounce, where
+ * each inline copy of three rounded products costs ~100 bytes of flash. */
+RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale(c, k); }
+RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a, b); }
+/* a + b k, the sum saturated */
+RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
+
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
 {
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
     (void)ray; /* only the specular term looks at it */
-    colour_t kdc = v3_scale(m->colour, m->kd);
-    colour_t c = v3_scale(kdc, I); /* ambient */
+    colour_t kdc = colour_scale(m->colour, m->kd);
+    colour_t c = colour_scale(kdc, I); /* ambient */
 #if RT_USE_SHADOWS
     ray_t shadow;
     leave(s, false, &shadow);
@@ -77,17 +84,17 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
                            tr->stats))
             continue;
-        colour_t lit = v3_scale(kdc, ndl);
+        colour_t lit = colour_scale(kdc, ndl);
 #if RT_USE_SPECULAR
         if (m->ks > 0) {
             /* Phong: R = 2 (N.L) N - L against V = -D */
             vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
             real_t rv = -v3_dot(refl, ray->dir);
             real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
-            lit = c3_add(lit, v3(spec, spec, spec));
+            lit = colour_add(lit, v3(spec, spec, spec));
         }
 #endif
-        c = c3_add(c, v3_scale(v3_mul(lit, l->colour), I));
+        c = colour_add_scaled(c, v3_mul(lit, l->colour), I);
     }
 #endif
     return c;
@@ -181,13 +188,13 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
         tr->stats->reflect_rays++;
         colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
-            c = c3_add(c, v3_scale(rc, m->ks));
+            c = colour_add_scaled(c, rc, m->ks);
     }
 #endif
 #if RT_USE_REFRACTION
     if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
         tr->stats->refract_rays++;
-        c = c3_add(c, v3_scale(trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t));
+        c = colour_add_scaled(c, trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t);
     }
 #endif
     return c;
