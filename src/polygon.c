@@ -86,6 +86,7 @@ const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint1
 /* Even-odd rule: count edges crossed by the ray from q towards +u. Inline
  * with a constant axis, so each of the three copies loads just the two
  * coordinates it needs (this loop is most of the time on the gears). */
+#if RT_USE_CONCAVE
 static inline bool even_odd_axis(const vec3_t *v, uint32_t count, pt2_t q, unsigned axis)
 {
     bool inside = false;
@@ -113,6 +114,7 @@ static bool inside_even_odd(const scene_t *sc, const polygon_t *p, pt2_t q)
     default: return even_odd_axis(v, p->count, q, 2);
     }
 }
+#endif
 
 /* Watertight inside tests. Which side of the edge (p, q) the ray passes:
  * the sign of D . ((p - O) x (q - O)). The two faces sharing an edge see it
@@ -221,10 +223,12 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
         inside = inside_fan(sc, p, r);
     else
 #endif
-    if (p->convex)
-        inside = inside_convex(sc, p, r);
-    else
+#if RT_USE_CONCAVE
+    if (!p->convex)
         inside = inside_even_odd(sc, p, project(p, ray_at(r, th)));
+    else
+#endif
+        inside = inside_convex(sc, p, r);
     if (!inside)
         return false;
     *t = th;

@@ -158,6 +158,9 @@
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1
 #endif
+#ifndef RT_USE_CONCAVE              /* polygons that are not convex (even-odd) */
+#define RT_USE_CONCAVE 1
+#endif
 #ifndef RT_USE_SHADOWS
 #define RT_USE_SHADOWS 1
 #endif
