@@ -139,7 +139,22 @@ def main():
                 rows.append(row)
                 print("%-12s %-7s %-10s %8d instr/px %8s cycles/px %8s dB  code %6d  ram %7d" % (
                     b, be, s, m["ipp"], row["cpp"], row["psnr"], code, ram), flush=True)
-    keys = ["board", "backend", "scene", "ipp", "cpi", "cpp", "psnr", "max_error", "code", "ram"]
+    # the figures before issue 16's cuts (bench/boards-before.csv: this
+    # script's output at commit ed5f6d7), beside each row
+    before = {}
+    bpath = os.path.join(ROOT, "bench", "boards-before.csv")
+    if os.path.exists(bpath):
+        with open(bpath) as f:
+            before = {(r["board"], r["backend"], r["scene"]): r for r in csv.DictReader(f)}
+    for r in rows:
+        b = before.get((r["board"], r["backend"], r["scene"]))
+        if b and b.get("ipp") and r.get("ipp"):
+            r["ipp_before"] = b["ipp"]
+            r["speedup"] = "%.2f" % (int(b["ipp"]) / r["ipp"])
+            r["psnr_before"] = b.get("psnr", "")
+            r["code_before"] = b.get("code", "")
+    keys = ["board", "backend", "scene", "ipp", "ipp_before", "speedup", "cpi", "cpp", "psnr", "psnr_before",
+            "max_error", "code", "code_before", "ram"]
     with open(os.path.join(ROOT, "bench", "boards.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=keys)
         w.writeheader()
@@ -151,8 +166,11 @@ def main():
                 "cycles per pixel estimated from the instruction mix of a 32x32 render priced with\n"
                 "the core's documented timings (bench/cycles.py); PSNR and max error against the\n"
                 "exact double reference in the board's pixel format; code and static RAM of the ELF.\n\n")
-        f.write("| board | backend | scene | instr/px | est. cycles/px | CPI | PSNR (dB) | max error | code (B) | RAM (B) |\n")
-        f.write("|---|---|---|---|---|---|---|---|---|---|\n")
+        f.write("\"before\": the same measurement at commit ed5f6d7, before issue 16's cuts\n"
+                "(bench/boards-before.csv); speed-up = instructions before / after.\n\n")
+        f.write("| board | backend | scene | instr/px | before | speed-up | CPI | est. cycles/px | PSNR (dB) | "
+                "before | max error | code (B) | before | RAM (B) |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write("| %s |\n" % " | ".join(str(r.get(k, "failed" if k == "ipp" else "")) for k in keys))
     print("wrote bench/boards.md and bench/boards.csv")
