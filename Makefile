@@ -125,6 +125,13 @@ build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
 
+# The same with fx.c on the ARMv6-M path (no long multiply, no divide):
+# 16x16 partial products and the reciprocal's seed table.
+build/asan/test_fx_soft: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -Isrc -Itests -o $@ \
+	    tests/test_fx.c src/fx.c -lm
+
 NAME := $(basename $(notdir $(SCENE)))
 
 host-run: deps-board
@@ -164,7 +171,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/asan/test_fx build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/asan/test_fx build/asan/test_fx_soft build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
 
 test: deps

@@ -6,9 +6,10 @@ volatile uint32_t fx_saturations;
 #endif
 
 /* FX_FAST_MATH trades exactness for instructions: one Newton step less
- * in the reciprocal square root (relative error 2^-20 instead of 2^-29),
- * no exact last-unit fix of square roots, 16 instead of 24 log2 bits and
- * a degree-6 exp2 in powers, and no exact last-unit fix of quotients. */
+ * in fx_unit3's reciprocal square root (relative error 2^-18 instead of
+ * 2^-29), no exact last-unit fix of square roots (within 1.01 ulp), and
+ * 16 instead of 24 log2 bits and a degree-6 exp2 in powers. Quotients
+ * are exact either way: their fix costs next to nothing. */
 #if FX_FAST_MATH
 #define RSQRT_STEPS 2
 #define POW_LOG_BITS 16
@@ -33,19 +34,25 @@ static inline int64_t smul64(int64_t a, int64_t b) { return (int64_t)fx_umul64x(
 #define smul64(a, b) ((int64_t)(a) * (b))
 #endif
 
-/* Leading zero bits of a non-zero 64-bit value (CLZ on the M3). */
-static int clz64(uint64_t v)
+/* Leading zero bits of a non-zero value (CLZ on the M3). */
+static int clz32(uint32_t v)
 {
 #if defined(__GNUC__)
-    return __builtin_clzll(v);
+    return __builtin_clz(v);
 #else
     int n = 0;
-    while (!(v & ((uint64_t)1 << 63))) {
+    while (!(v & 0x80000000u)) {
         v <<= 1;
         n++;
     }
     return n;
 #endif
+}
+
+static int clz64(uint64_t v)
+{
+    uint32_t hi = (uint32_t)(v >> 32);
+    return hi ? clz32(hi) : 32 + clz32((uint32_t)v);
 }
 
 /* n / d (d != 0), truncated like C's: binary long division from n's top
@@ -73,104 +80,236 @@ static int64_t sdiv64(int64_t n, int64_t d)
     return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
 }
 
+/* One Newton step y' = y (3 - x y^2) / 2 towards 2^31 / sqrt(x / 2^30),
+ * for x in [2^30, 2^32) and y within 3.2% of it, never above 2^31, given
+ * y2 = y^2 / 2^31. Every operand fits 32 bits (x y^2 / 2^30 is within 7%
+ * of 2^31), so each product is one 32x32->64 multiply, and the bits are
+ * those of the same step on 64-bit operands: y (2^32 + e) >> 32 =
+ * y + (y e >> 32). */
+static inline uint32_t rsqrt_step_y2(uint32_t x, uint32_t y, uint32_t y2)
+{
+    uint32_t xy2 = (uint32_t)(fx_umul64(x, y2) >> 30); /* ~2^31 */
+    int32_t e = (int32_t)(0x80000000u - xy2);          /* 2^31 - x y^2 */
+    return y + (uint32_t)(int32_t)(fx_mul64((int32_t)y, e) >> 32);
+}
+
+static inline uint32_t rsqrt_step(uint32_t x, uint32_t y)
+{
+    return rsqrt_step_y2(x, y, (uint32_t)(fx_umul64(y, y) >> 31));
+}
+
 /* 1/sqrt(x / 2^30) in Q.31 for x in [2^30, 2^32): a 24-entry seed (within
- * 3.2%) and three Newton steps y' = y (3 - x y^2) / 2; relative error
- * below 2^-29. Multiplies only: the M3 has no 64-bit divide. */
+ * 3.2%, with its square for the first step) and RSQRT_STEPS Newton steps
+ * (relative error below 2^-18 after two, 2^-29 after three). fx_unit3's
+ * bits are these. */
 static uint32_t rsqrt_q31(uint32_t x)
 {
-    static const uint32_t seed[24] = { /* 2^31 / sqrt((8 + i + 0.5) / 8) */
-        2083365155u, 1970666148u, 1874477404u, 1791125178u, 1717986918u, 1653133683u,
-        1595110809u, 1542797797u, 1495315679u, 1451963954u, 1412176548u, 1375490368u,
-        1341522400u, 1309952745u, 1280511845u, 1252970736u, 1227133513u, 1202831433u,
-        1179918260u, 1158266544u, 1137764631u, 1118314230u, 1099828424u, 1082230034u,
+    static const struct { uint32_t y, y2; } seed[24] = { /* 2^31 / sqrt((8 + i + 0.5) / 8), y^2 / 2^31 */
+        { 2083365155u, 2021161079u }, { 1970666148u, 1808407281u }, { 1874477404u, 1636178017u },
+        { 1791125178u, 1493901667u }, { 1717986918u, 1374389534u }, { 1653133683u, 1272582902u },
+        { 1595110809u, 1184818564u }, { 1542797797u, 1108378657u }, { 1495315679u, 1041204193u },
+        { 1451963954u, 981706810u }, { 1412176548u, 928641577u }, { 1375490368u, 881018933u },
+        { 1341522400u, 838042399u }, { 1309952745u, 799063683u }, { 1280511845u, 763549741u },
+        { 1252970736u, 731058262u }, { 1227133513u, 701219150u }, { 1202831433u, 673720359u },
+        { 1179918260u, 648296950u }, { 1158266544u, 624722515u }, { 1137764631u, 602802427u },
+        { 1118314230u, 582368446u }, { 1099828424u, 563274399u }, { 1082230034u, 545392672u },
     };
-    uint64_t y = seed[(x >> 27) - 8];
-    for (int i = 0; i < RSQRT_STEPS; i++) {
-        uint64_t y2 = fx_umul64x(y, y) >> 31;       /* Q.31 */
-        uint64_t xy2 = fx_umul64x(x, y2) >> 30;     /* Q.31, close to 1 */
-        y = fx_umul64x(y, ((uint64_t)3 << 31) - xy2) >> 32;
-    }
-    return (uint32_t)y;
-}
-
-/* v (> 0) as (x / 2^30) * 2^(62 - s) with x in [2^30, 2^32), s even. */
-static uint32_t normalise_even(uint64_t v, int *s)
-{
-    *s = clz64(v) & ~1;
-    return (uint32_t)((v << *s) >> 32);
-}
-
-/* round(sqrt(v)): estimate from the reciprocal square root, then fix the
- * last unit exactly with integer squares. */
-static uint64_t isqrt64_round(uint64_t v)
-{
-    if (v == 0)
-        return 0;
-    int s;
-    uint32_t x = normalise_even(v, &s);
-    /* sqrt(v) = (x / 2^30) (y / 2^31) 2^((62 - s) / 2) */
-    uint64_t r = fx_umul64(x, rsqrt_q31(x)) >> (30 + s / 2);
-#if FX_FAST_MATH
-    if (r > 0xFFFFFFFFu)
-        r = 0xFFFFFFFFu;
-    if (fx_umul64x(r, r) > v)
-        r--;
-#else
-    while (fx_umul64x(r, r) > v)
-        r--;
-    while (r < 0xFFFFFFFFu && fx_umul64x(r + 1, r + 1) <= v)
-        r++;
+    uint32_t i = (x >> 27) - 8;
+    uint32_t y = rsqrt_step(x, rsqrt_step_y2(x, seed[i].y, seed[i].y2));
+#if RSQRT_STEPS > 2
+    y = rsqrt_step(x, y);
 #endif
-    /* (r + 1/2)^2 = r^2 + r + 1/4: round up when v - r^2 > r */
-    return v - fx_umul64x(r, r) > r ? r + 1 : r;
+    return y;
 }
 
-/* 2^62 / x in Q.31 for x in [2^31, 2^32): a 16-bit estimate from one
- * 32-bit hardware divide (UDIV, 2..12 cycles on the M3), then one Newton
- * step y' = y (2 - x y); relative error below 2^-29. */
-uint32_t fx_recip_q31(uint32_t x)
+/* 2^31 / sqrt(x / 2^30) for square roots, where only the accuracy
+ * counts: a line per eighth of [1, 4) (within 2^-10.5), then one Newton
+ * step on high words (the step above with 2^-27 more rounding) and 8
+ * units off: within 2^-20.5 under 2^31 / sqrt((x + 1) / 2^30) and never
+ * above it (checked for every x). Entry i is the line's value at the
+ * start of its interval, whose low 11 bits are the line's drop per unit
+ * of x's bits 26..11. */
+static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
 {
-    uint32_t y = (0xFFFFFFFFu / (x >> 16)) << 14;          /* within 2^-15 */
-    uint32_t two_minus_xy = 0u - (uint32_t)(fx_umul64(x, y) >> 31); /* 2^32 - x y */
-    return (uint32_t)(fx_umul64(y, two_minus_xy) >> 31);
+    static const uint32_t line[24] = {
+        0x7FEB4F52u, 0x789E3631u, 0x72707554u, 0x6D1F2CA6u, 0x687B5C1Au, 0x6462D3A7u,
+        0x60BCEB48u, 0x5D75DAF8u, 0x5A7EB2B4u, 0x57CB3279u, 0x5552A247u, 0x530C021Au,
+        0x50F1E9F3u, 0x4EFED1D1u, 0x4D2DF1B2u, 0x4B7BF997u, 0x49E5197Eu, 0x48671168u,
+        0x46FF6154u, 0x45AB7141u, 0x446A8131u, 0x43399921u, 0x42187113u, 0x41055906u
+    };
+    uint32_t c = line[(x >> 27) - 8];
+    uint32_t y = c - (c & 0x7FFu) * ((x >> 11) & 0xFFFFu);
+    uint32_t y2 = (uint32_t)(fx_umul64(y, y) >> 32);   /* Y^2 2^30 */
+    uint32_t t = (uint32_t)(fx_umul64(x, y2) >> 32);   /* X Y^2 2^28, ~2^28 */
+    int32_t e = (int32_t)(((uint32_t)1 << 28) - t);
+    return y + ((uint32_t)(fx_mul64((int32_t)y, e) >> 32) << 3) - 8;
+}
+
+/* round(sqrt(v)) for 0 <= v < 2^60, or with `big` for v < 2^62 - 2^32
+ * (the root stays below 2^31 - 1/2). With v = u 2^-2k, u in [2^62, 2^64)
+ * (k >= 2, or k >= 1 with big): g, under sqrt(u) by less than 2^-20.5
+ * relative, then one Newton step g + (u - g^2) / (2 sqrt(u)) on the exact
+ * residual, never above sqrt(u) and less than 1.01 under it. So g / 2^k,
+ * floored for k >= 2 (then less than 0.26 under the root) or rounded, is
+ * the answer or one under it, and the exact v - r (r + 1) tells which:
+ * (r + 1/2)^2 = r (r + 1) + 1/4. */
+static RT_INLINE uint32_t isqrt_round(uint64_t v, bool big)
+{
+    uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, x, ulo;
+    int s;
+    if (hi) {
+        s = clz32(hi) & ~1; /* >= 2 */
+        x = hi << s | lo >> (32 - s);
+        ulo = lo << s;
+    } else {
+        if (lo == 0)
+            return 0;
+        s = clz32(lo) & ~1;
+        x = lo << s;
+        ulo = 0;
+        s += 32;
+    }
+    uint32_t y = rsqrt_q31_sqrt(x);
+    uint32_t g = (uint32_t)(fx_umul64(x, y) >> 32) << 2;
+    uint64_t res = ((uint64_t)x << 32 | ulo) - fx_umul64(g, g); /* < 2^43 */
+    g += (uint32_t)(fx_umul64((uint32_t)(res >> 16), y) >> 47);
+#if FX_FAST_MATH
+    (void)big;
+    return ((g >> (s / 2 - 1)) + 1) >> 1; /* within 1.01 */
+#else
+    uint32_t r = big ? ((g >> (s / 2 - 1)) + 1) >> 1 : g >> s / 2;
+    if (fx_umul64(r, r + 1) < v)
+        r++;
+    return r;
+#endif
+}
+
+/* Cores without a 32-bit divide instruction (ARMv6-M, where it is a
+ * libgcc call of 40 to 130 instructions) seed reciprocals from a table. */
+#ifndef FX_RECIP_TABLE
+#if (defined(__arm__) && !defined(__ARM_FEATURE_IDIV)) || (defined(__riscv) && !defined(__riscv_div))
+#define FX_RECIP_TABLE 1
+#else
+#define FX_RECIP_TABLE 0
+#endif
+#endif
+
+/* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.5
+ * relative under it (both checked for every d): an estimate also never
+ * above, within 2^-13.8, then one Newton step y' = y + y (1 - d y),
+ * which stays under. The estimate is one 32-bit hardware divide (UDIV,
+ * 2..12 cycles on the M3) or, without one, a line per 64th of [1, 2)
+ * under the curve, packed as in rsqrt_q31_sqrt (drop per unit of d's
+ * bits 24..9). */
+static uint32_t recip_q63(uint32_t d)
+{
+#if FX_RECIP_TABLE
+    static const uint32_t line[64] = {
+        0xFFFC6BF1u, 0xFC0C23D2u, 0xF83AB3B5u, 0xF4864B99u, 0xF0EDB37Eu, 0xED702B65u,
+        0xEA0BA34Cu, 0xE6C01335u, 0xE38BEB1Fu, 0xE06DD309u, 0xDD655AF4u, 0xDA71AAE0u,
+        0xD791FACDu, 0xD4C582BBu, 0xD20B1AA9u, 0xCF628298u, 0xCCCB1A88u, 0xCA43D278u,
+        0xC7CC8269u, 0xC5642A5Au, 0xC30AB24Cu, 0xC0BF2A3Eu, 0xBE818A31u, 0xBC50E224u,
+        0xBA2D3A18u, 0xB815B20Cu, 0xB60A5A01u, 0xB409D9F5u, 0xB21549EBu, 0xB02AD9E0u,
+        0xAE4B21D6u, 0xAC7561CCu, 0xAAA9C1C3u, 0xA8E771BAu, 0xA72E39B1u, 0xA57DC9A8u,
+        0xA3D651A0u, 0xA2372198u, 0xA09FF990u, 0x9F10A188u, 0x9D894981u, 0x9C08E979u,
+        0x9A901972u, 0x991E416Bu, 0x97B3A165u, 0x964F215Eu, 0x94F17958u, 0x939A0952u,
+        0x9248A94Cu, 0x90FD3146u, 0x8FB77140u, 0x8E77C13Bu, 0x8D3D8136u, 0x8C083130u,
+        0x8AD8712Bu, 0x89ADC126u, 0x8887F921u, 0x8767691Du, 0x864B2918u, 0x8533D914u,
+        0x8420A90Fu, 0x8312290Bu, 0x8207F107u, 0x8101D903u
+    };
+    uint32_t c = line[(d >> 25) & 63];
+    uint32_t y = c - (c & 0x7FFu) * ((d >> 9) & 0xFFFFu);
+#else
+    uint32_t y = (0xFFFFFFFFu / ((d >> 16) + 1)) << 15;
+#endif
+    uint64_t e = ((uint64_t)1 << 63) - fx_umul64(d, y); /* 2^63 (1 - d y) < 2^50 */
+    return y + (uint32_t)(fx_umul64(y, (uint32_t)(e >> 31)) >> 32);
+}
+
+uint32_t fx_recip_q31(uint32_t x) { return recip_q63(x) >> 1; }
+
+/* All ones when v < 0, else 0 */
+static inline uint32_t sign_mask(int32_t v) { return 0u - (uint32_t)(v < 0); }
+
+/* |a| as unsigned, for any a (INT32_MIN included), without a branch */
+static inline uint32_t abs_u32(int32_t a)
+{
+    uint32_t m = sign_mask(a);
+    return ((uint32_t)a ^ m) - m;
+}
+
+/* fx_div where a or b is 0: b == 0 saturates by the sign of a */
+RT_COLD RT_NOINLINE static fx_t div_zero(fx_t a, fx_t b)
+{
+    if (b != 0)
+        return 0;
+    FX_ON_SATURATE();
+    return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
+}
+
+/* div_round's end for estimates q_est near 2^31 or above (under the
+ * floor by 12 at most): rounded with 64-bit remainders, saturated from
+ * 2^31 on. */
+RT_COLD RT_NOINLINE static fx_t div_big(uint32_t n, uint32_t d, uint32_t q_est, uint32_t sgn)
+{
+    uint64_t q = q_est;
+    uint64_t r = ((uint64_t)n << FX_FRAC_BITS) + (d >> 1) - q * d;
+    while (r >= d) {
+        q++;
+        r -= d;
+    }
+    if (q > (uint64_t)FX_MAX) {
+        FX_ON_SATURATE();
+        q = (uint64_t)FX_MAX;
+    }
+    return (fx_t)(((uint32_t)q ^ sgn) - sgn);
+}
+
+/* round(n 2^F / d) for n, d > 0, half away from zero, with the sign of
+ * sgn (0 or all ones) and saturated. */
+static RT_INLINE fx_t div_round(uint32_t n, uint32_t d, uint32_t sgn)
+{
+    /* n 2^F / d = (n' / d') 2^(31 - sh), n' and d' being n and d
+     * normalised to [2^31, 2^32); q, its floor from the reciprocal of d',
+     * is at most 2^-27.5 under it, so 12 under at most below 2^31. */
+    int tn = clz32(n), td = clz32(d);
+    int sh = 31 - FX_FRAC_BITS + tn - td;
+    if (sh < 0) { /* n' / d' > 1/2, so the quotient is above 2^31 */
+        FX_ON_SATURATE();
+        return (fx_t)(((uint32_t)FX_MAX ^ sgn) - sgn);
+    }
+    uint32_t q = 0;
+    if (sh < 32)
+        q = (uint32_t)(fx_umul64(n << tn, recip_q63(d << td)) >> 32) >> sh;
+    if (q >= 0x7F000000u) /* within 2^24 of 2^31: rare */
+        return div_big(n, d, q, sgn);
+    /* Rounded half away from zero, the quotient is floor((n 2^F + d/2) / d)
+     * (d odd or even). The remainder of that from q is below 2^32, so its
+     * low word is exact; each step up takes one d off. */
+    uint32_t r = (n << FX_FRAC_BITS) + (d >> 1) - q * d;
+    while (r >= d) {
+        q++;
+        r -= d;
+    }
+    return (fx_t)((q ^ sgn) - sgn);
 }
 
 fx_t fx_div(fx_t a, fx_t b)
 {
-    if (b == 0) {
-        FX_ON_SATURATE();
-        return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
-    }
-    /* q = |a| 2^F / |b| from the reciprocal of |b| normalised to
-     * [2^31, 2^32): an estimate within 2 of the truth, then fixed exactly
-     * with the integer remainder (no 64-bit divide, which the M3 lacks). */
-    uint64_t n = (uint64_t)(a < 0 ? -(int64_t)a : a);
-    uint64_t d = (uint64_t)(b < 0 ? -(int64_t)b : b);
-    int s = clz64(d) - 32;
-    uint64_t y = fx_recip_q31((uint32_t)(d << s));   /* 2^62 / (d 2^s) */
-    int shift = 62 - FX_FRAC_BITS - s;            /* q = n y 2^-shift */
-    uint64_t ny = fx_umul64x(n, y);               /* < 2^62 */
-    uint64_t q = shift >= 0 ? ny >> shift : (shift > -8 ? ny << -shift : UINT64_MAX);
-    bool neg = (a < 0) != (b < 0);
-    if (q > ((uint64_t)1 << 32))
-        return fx_sat64(neg ? -((int64_t)1 << 32) : (int64_t)1 << 32);
-    int64_t r = (int64_t)(n << FX_FRAC_BITS) - (int64_t)fx_umul64x(q, d);
-#if !FX_FAST_MATH
-    while (r < 0) {
-        q--;
-        r += (int64_t)d;
-    }
-    while (r >= (int64_t)d) {
-        q++;
-        r -= (int64_t)d;
-    }
-#endif
-    if (2 * r >= (int64_t)d) /* round half away from zero */
-        q++;
-    return fx_sat64(neg ? -(int64_t)q : (int64_t)q);
+    uint32_t n = abs_u32(a), d = abs_u32(b);
+    if (n == 0 || d == 0)
+        return div_zero(a, b);
+    return div_round(n, d, sign_mask(a ^ b));
 }
 
-fx_t fx_recip(fx_t b) { return fx_div(FX_ONE, b); }
+/* fx_div(FX_ONE, b), with the numerator's normalisation folded away */
+fx_t fx_recip(fx_t b)
+{
+    uint32_t d = abs_u32(b);
+    if (d == 0)
+        return div_zero(FX_ONE, b);
+    return div_round(FX_ONE, d, sign_mask(b));
+}
 
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
 {
@@ -200,50 +339,74 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
     return (w / a) * FX_ONE;
 }
 
-fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
-
-fx_t fx_sqrt(fx_t a)
+/* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more) */
+RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w)
 {
-    if (a <= 0)
+    if (w < 0)
         return 0;
-    return (fx_t)isqrt64_round((uint64_t)a << FX_FRAC_BITS);
+    if (w < ((int64_t)1 << 62) - ((int64_t)1 << 32))
+        return (fx_t)isqrt_round((uint64_t)w, true);
+    /* sqrt(2^62 - 2^32) rounds to 2^31 - 1; from (2^31 - 1/2)^2 on, the
+     * root rounds to 2^31 or more */
+    return w > ((int64_t)1 << 62) - ((int64_t)1 << 31) ? fx_sat64(FX_MAX + (int64_t)1) : FX_MAX;
 }
 
 fx_t fx_wsqrt(fx_wide_t w)
 {
-    if (w <= 0)
-        return 0;
-    uint64_t r = isqrt64_round((uint64_t)w);
-    return r > (uint64_t)FX_MAX ? fx_sat64(FX_MAX + (int64_t)1) : (fx_t)r;
+    if ((uint64_t)w >> 60)
+        return wsqrt_big(w);
+    return (fx_t)isqrt_round((uint64_t)w, false);
+}
+
+fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
+
+fx_t fx_sqrt(fx_t a) { return a <= 0 ? 0 : fx_wsqrt((fx_wide_t)a << FX_FRAC_BITS); }
+
+/* |v| as unsigned (v > INT64_MIN) */
+static inline uint64_t abs_u64(int64_t v) { return v < 0 ? 0u - (uint64_t)v : (uint64_t)v; }
+
+/* v >> n (arithmetic) for 0 < n < 64, where the result fits 32 bits. */
+static inline int32_t shr_to32(int64_t v, int n)
+{
+    if (n < 32)
+        return (int32_t)((uint32_t)v >> n | (uint32_t)(v >> 32) << (32 - n));
+    return (int32_t)(v >> 32) >> (n - 32);
 }
 
 void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
 {
-    int64_t v[3] = { x, y, z };
-    uint64_t m = 0;
-    for (int i = 0; i < 3; i++) {
-        uint64_t a = (uint64_t)(v[i] < 0 ? -v[i] : v[i]);
-        m |= a;
-    }
+    uint64_t m = abs_u64(x) | abs_u64(y) | abs_u64(z);
     if (m == 0) {
         out[0] = out[1] = out[2] = 0;
         return;
     }
     /* Bring the largest component to 28 bits (the OR of the magnitudes
-     * has the same bit length as the largest): the squared length stays
-     * below 2^58 and v * y below 2^59. */
-    int len_bits = 64 - clz64(m);
-    uint64_t len2 = 0;
-    for (int i = 0; i < 3; i++) {
-        v[i] = len_bits <= 28 ? v[i] * ((int64_t)1 << (28 - len_bits)) : v[i] >> (len_bits - 28);
-        len2 += (uint64_t)smul64(v[i], v[i]);
+     * has the same bit length as the largest): the squared length lies
+     * in [2^54, 2^58) and each v y fits 64 bits. */
+    int n = 64 - clz64(m) - 28;
+    int32_t vx, vy, vz;
+    if (n <= 0) {
+        vx = (int32_t)x * ((int32_t)1 << -n);
+        vy = (int32_t)y * ((int32_t)1 << -n);
+        vz = (int32_t)z * ((int32_t)1 << -n);
+    } else {
+        vx = shr_to32(x, n);
+        vy = shr_to32(y, n);
+        vz = shr_to32(z, n);
     }
-    /* 1 / |v| = (y / 2^31) 2^-((62 - s) / 2) */
-    int s;
-    int64_t r = rsqrt_q31(normalise_even(len2, &s));
-    unsigned shift = (unsigned)(62 - s / 2 - FX_FRAC_BITS);
-    for (int i = 0; i < 3; i++)
-        out[i] = (fx_t)fx_round_shift(smul64(v[i], r), shift);
+    uint64_t len2 = (uint64_t)(fx_mul64(vx, vx) + fx_mul64(vy, vy) + fx_mul64(vz, vz));
+    /* len2 = (xn / 2^30) 2^(62 - s), s even (6 or 8) */
+    uint32_t hi = (uint32_t)(len2 >> 32);
+    int s = clz32(hi) & ~1;
+    uint32_t xn = hi << s | (uint32_t)len2 >> (32 - s);
+    /* 1 / |v| = (r / 2^31) 2^-((62 - s) / 2), so out = v r 2^-(62 - s/2 - F)
+     * rounded; the shift exceeds 32, so the high word of v r suffices */
+    int32_t r = (int32_t)rsqrt_q31(xn);
+    int shift = 30 - s / 2 - FX_FRAC_BITS;
+    int32_t half = (int32_t)1 << (shift - 1);
+    out[0] = ((int32_t)(fx_mul64(vx, r) >> 32) + half) >> shift;
+    out[1] = ((int32_t)(fx_mul64(vy, r) >> 32) + half) >> shift;
+    out[2] = ((int32_t)(fx_mul64(vz, r) >> 32) + half) >> shift;
 }
 
 /* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1). */

@@ -303,8 +303,9 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
-/* 2^62 / x for x in [2^31, 2^32), relative error below 2^-29: the
- * reciprocal before rounding, for callers that scale it themselves. */
+/* 2^62 / x for x in [2^31, 2^32), never above it and less than 2^-27
+ * relative under: the reciprocal before rounding, for callers that scale
+ * it themselves. */
 uint32_t fx_recip_q31(uint32_t x);
 
 /* a - b, saturated to 32 bits. */

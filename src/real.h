@@ -164,7 +164,7 @@ static inline real_t r_recip(real_t b) { return fx_recip(b); }
  * large as keeps every |inv| below 2^30 (16 to 18 fraction bits for most
  * rays), and shift = 32 - F - k turns a Q.F distance into that format.
  * One SMULL and 32-bit compares per plane, where Q.2F needs 64-bit ones.
- * inv comes from fx_recip_q31 (2^-29) rounded once: within 2^-(F+1)
+ * inv comes from fx_recip_q31 (2^-27) rounded once: within 2^-(F+1)
  * relative, like a rounded fx_recip (the bound RT_BOX_SLACK assumes). */
 typedef int32_t real_slab_t;
 static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3])

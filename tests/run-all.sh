@@ -18,6 +18,7 @@ run() {
     total_fail=$((total_fail + f))
 }
 run "$B/test_fx"
+run "$B/test_fx_soft"
 run "$B/test_geometry"
 run "$B/test_bvh"
 run "$B/test_hal"

@@ -1,7 +1,10 @@
 /*
  * test_fx.c - every fixed-point operation against double over dense or
  * random input sweeps. Each check asserts the accuracy fx.h documents and
- * prints the measured worst case in ulps (1 ulp = 2^-FX_FRAC_BITS).
+ * prints the measured worst case in ulps (1 ulp = 2^-FX_FRAC_BITS). The
+ * exact operations (fx_div, fx_recip, fx_sqrt, fx_wsqrt) are also held to
+ * the exact answer, bit for bit, from plain integer arithmetic here, and
+ * fx_unit3 to the bits of its plain 64-bit formulation.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -83,6 +86,203 @@ static void test_sqrt(void)
           worst_w / ULP);
 }
 
+/* ---- exact answers by plain integer arithmetic (nothing shared with fx.c) */
+
+/* round(a 2^F / b), half away from zero, saturated to +-FX_MAX (b != 0) */
+static fx_t ref_div(fx_t a, fx_t b)
+{
+    uint64_t n = (uint64_t)(a < 0 ? -(int64_t)a : a) << FX_FRAC_BITS;
+    uint64_t d = (uint64_t)(b < 0 ? -(int64_t)b : b);
+    uint64_t q = n / d, r = n % d;
+    if (2 * r >= d)
+        q++;
+    if (q > (uint64_t)FX_MAX)
+        q = (uint64_t)FX_MAX;
+    return (a < 0) != (b < 0) ? -(fx_t)q : (fx_t)q;
+}
+
+/* round(sqrt(v)) digit by digit: r = floor(sqrt(v)), then up when v - r^2 > r */
+static uint64_t ref_isqrt_round(uint64_t v)
+{
+    uint64_t r = 0, rem = v, bit = (uint64_t)1 << 62;
+    while (bit > v)
+        bit >>= 2;
+    for (; bit; bit >>= 2) {
+        if (rem >= r + bit) {
+            rem -= r + bit;
+            r = (r >> 1) + bit;
+        } else {
+            r >>= 1;
+        }
+    }
+    return rem > r ? r + 1 : r;
+}
+
+static fx_t ref_wsqrt(fx_wide_t w)
+{
+    if (w <= 0)
+        return 0;
+    uint64_t r = ref_isqrt_round((uint64_t)w);
+    return r > (uint64_t)FX_MAX ? FX_MAX : (fx_t)r;
+}
+
+static fx_t ref_sqrt(fx_t a) { return a <= 0 ? 0 : (fx_t)ref_isqrt_round((uint64_t)a << FX_FRAC_BITS); }
+
+/* a random value of random bit length (0..bits), either sign when sgn */
+static int64_t rnd_bits(int bits, bool sgn)
+{
+    uint64_t r = tl_rand();
+    int64_t v = (int64_t)(tl_rand() >> (64 - bits) >> (r % (uint64_t)(bits + 1)));
+    return sgn && (r & 0x100) ? -v : v;
+}
+
+static const int32_t div_edges[] = {
+    1, 2, 3, 5, 7, 0xFF, 0x100, 0x101, 0x7FF, 0x800, 0x801, 0xFFF, 0x1000, 0x1001, 0xFFFF, 0x10000, 0x10001,
+    FX_ONE - 1, FX_ONE, FX_ONE + 1, FX_HALF, FX_HALF + 1, 3 * FX_HALF, 0x7FFF0000, 0x7FFF8000,
+    0x3FFFFFFF, 0x40000000, 0x40000001, 0x55555555, 0x7FFFFFFE, 0x7FFFFFFF, INT32_MIN, 0x12345678,
+};
+#define N_DIV_EDGES (int)(sizeof div_edges / sizeof div_edges[0])
+
+static void test_div_exact(void)
+{
+    long bad = 0, n = 0;
+    for (int i = 0; i < N_DIV_EDGES; i++)
+        for (int j = 0; j < N_DIV_EDGES; j++)
+            for (int k = 0; k < 4; k++) {
+                fx_t a = div_edges[i], b = div_edges[j];
+                a = (k & 1) && a != INT32_MIN ? -a : a;
+                b = (k & 2) && b != INT32_MIN ? -b : b;
+                bad += fx_div(a, b) != ref_div(a, b);
+                n++;
+            }
+    /* around the quotient's powers of two and the saturation threshold:
+     * a = 2^i +- e, b = 2^j +- f */
+    for (int i = 0; i < 31; i++)
+        for (int j = 0; j < 31; j++)
+            for (int e = -2; e <= 2; e++)
+                for (int f = -2; f <= 2; f++) {
+                    int64_t a = ((int64_t)1 << i) + e, b = ((int64_t)1 << j) + f;
+                    if (a <= 0 || b <= 0 || a > FX_MAX || b > FX_MAX)
+                        continue;
+                    bad += fx_div((fx_t)a, (fx_t)b) != ref_div((fx_t)a, (fx_t)b);
+                    bad += fx_div(-(fx_t)a, (fx_t)b) != ref_div(-(fx_t)a, (fx_t)b);
+                    n += 2;
+                }
+    for (long i = 0; i < 6000000; i++) {
+        fx_t a = (fx_t)rnd_bits(31, true), b = (fx_t)rnd_bits(31, true);
+        if (b == 0)
+            continue;
+        bad += fx_div(a, b) != ref_div(a, b);
+        n++;
+    }
+    CHECK(bad == 0, "fx_div: %ld of %ld edge, power-of-two and random pairs differ from the exact rounded quotient",
+          bad, n);
+
+    bad = n = 0;
+    for (int64_t b = -(1 << 22); b <= (1 << 22); b++) {
+        if (b == 0)
+            continue;
+        bad += fx_recip((fx_t)b) != ref_div(FX_ONE, (fx_t)b);
+        n++;
+    }
+    for (long i = 0; i < 2000000; i++) {
+        fx_t b = (fx_t)rnd_bits(31, true);
+        if (b == 0)
+            continue;
+        bad += fx_recip(b) != ref_div(FX_ONE, b);
+        n++;
+    }
+    bad += fx_recip(INT32_MIN) != ref_div(FX_ONE, INT32_MIN) || fx_recip(FX_MAX) != ref_div(FX_ONE, FX_MAX);
+    CHECK(bad == 0, "fx_recip: %ld of %ld (every |b| <= 2^22, random) differ from the exact rounded quotient", bad,
+          n + 2);
+}
+
+static void test_sqrt_exact(void)
+{
+    long bad = 0, n = 0;
+    for (int64_t a = -3; a < (1 << 22); a++, n++)
+        bad += fx_sqrt((fx_t)a) != ref_sqrt((fx_t)a);
+    for (int64_t a = (1 << 22); a <= FX_MAX; a += 499, n++)
+        bad += fx_sqrt((fx_t)a) != ref_sqrt((fx_t)a);
+    for (int i = 0; i < 1000000; i++, n++) {
+        fx_t a = (fx_t)(tl_rand() & 0x7FFFFFFF);
+        bad += fx_sqrt(a) != ref_sqrt(a);
+    }
+    bad += fx_sqrt(FX_MAX) != ref_sqrt(FX_MAX) || fx_sqrt(INT32_MIN) != 0;
+    CHECK(bad == 0, "fx_sqrt: %ld of %ld (all raw x < 2^22, every 499th above, random) differ from the exact "
+          "rounded root", bad, n + 2);
+
+    bad = n = 0;
+    for (long i = 0; i < 3000000; i++) {
+        fx_wide_t w = rnd_bits(63, false);
+        bad += fx_wsqrt(w) != ref_wsqrt(w);
+        /* next to squares k^2 and to the halfway points k^2 + k (+ 1/4) */
+        uint64_t k = (uint64_t)rnd_bits(32, false);
+        for (int t = 0; t < 2; t++) {
+            uint64_t c = k * k + (t ? k : 0);
+            for (int e = -1; e <= 1; e++) {
+                fx_wide_t v = (fx_wide_t)(c + (uint64_t)e);
+                bad += fx_wsqrt(v) != ref_wsqrt(v);
+            }
+        }
+        n += 7;
+    }
+    /* where the root reaches 2^31 - 1/2 (saturation), and the ends */
+    static const int64_t ends[] = { ((int64_t)1 << 62) - ((int64_t)1 << 32), ((int64_t)1 << 62) - ((int64_t)1 << 31),
+                                    (int64_t)1 << 62, INT64_MAX - 1000 };
+    for (int i = 0; i < 4; i++)
+        for (int64_t e = -1000; e <= 1000; e++, n++)
+            bad += fx_wsqrt(ends[i] + e) != ref_wsqrt(ends[i] + e);
+    bad += fx_wsqrt(0) != 0 || fx_wsqrt(-1) != 0 || fx_wsqrt(INT64_MIN) != 0;
+    CHECK(bad == 0, "fx_wsqrt: %ld of %ld random Q.2F values, values next to squares and half-squares and the "
+          "saturation edge differ from the exact rounded root", bad, n + 3);
+}
+
+/* fx_unit3 in plain 64-bit arithmetic: the bits the tracer's images are
+ * made with (tests/image-tests.sh), so a change to them shows here. */
+static uint32_t ref_rsqrt_q31(uint32_t x)
+{
+    static const uint32_t seed[24] = { /* 2^31 / sqrt((8 + i + 0.5) / 8) */
+        2083365155u, 1970666148u, 1874477404u, 1791125178u, 1717986918u, 1653133683u,
+        1595110809u, 1542797797u, 1495315679u, 1451963954u, 1412176548u, 1375490368u,
+        1341522400u, 1309952745u, 1280511845u, 1252970736u, 1227133513u, 1202831433u,
+        1179918260u, 1158266544u, 1137764631u, 1118314230u, 1099828424u, 1082230034u,
+    };
+    uint64_t y = seed[(x >> 27) - 8];
+    for (int i = 0; i < 3; i++) { /* y (3 - x y^2) / 2 */
+        uint64_t y2 = (y * y) >> 31;
+        uint64_t xy2 = ((uint64_t)x * y2) >> 30;
+        y = (y * (((uint64_t)3 << 31) - xy2)) >> 32;
+    }
+    return (uint32_t)y;
+}
+
+static void ref_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
+{
+    int64_t v[3] = { x, y, z };
+    uint64_t m = 0, len2 = 0;
+    for (int i = 0; i < 3; i++)
+        m |= (uint64_t)(v[i] < 0 ? -v[i] : v[i]);
+    if (m == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return;
+    }
+    int len_bits = 64;
+    while (!(m >> (len_bits - 1)))
+        len_bits--;
+    for (int i = 0; i < 3; i++) { /* the largest component to 28 bits */
+        v[i] = len_bits <= 28 ? v[i] * ((int64_t)1 << (28 - len_bits)) : v[i] >> (len_bits - 28);
+        len2 += (uint64_t)(v[i] * v[i]);
+    }
+    int s = 0; /* len2 = (x / 2^30) 2^(62 - s), s even */
+    while (!(len2 << s >> 62))
+        s += 2;
+    int64_t r = ref_rsqrt_q31((uint32_t)((len2 << s) >> 32));
+    int shift = 62 - s / 2 - FX_FRAC_BITS;
+    for (int i = 0; i < 3; i++)
+        out[i] = (fx_t)((v[i] * r + ((int64_t)1 << (shift - 1))) >> shift);
+}
+
 static void test_unit3(void)
 {
     double worst = 0;
@@ -102,6 +302,23 @@ static void test_unit3(void)
     }
     CHECK(worst <= 1.0 * ULP, "fx_unit3: max component error %.3f ulp over 1e6 vectors, scales 2^0..2^40 (bound 1)",
           worst / ULP);
+
+    long bad = 0, n = 0;
+    for (long i = 0; i < 2000000; i++) {
+        int64_t w[3];
+        int bits = 1 + (int)(tl_rand() % 62); /* a common scale, or any sizes */
+        for (int k = 0; k < 3; k++)
+            w[k] = (i & 1) ? rnd_bits(bits, true) : rnd_bits(62, true);
+        if (i % 5 == 0)
+            w[tl_rand() % 3] = 0;
+        fx_t u[3], r[3];
+        fx_unit3(w[0], w[1], w[2], u);
+        ref_unit3(w[0], w[1], w[2], r);
+        bad += u[0] != r[0] || u[1] != r[1] || u[2] != r[2];
+        n++;
+    }
+    CHECK(bad == 0, "fx_unit3: %ld of %ld random vectors (scales 2^0..2^62) differ from the plain 64-bit "
+          "formulation", bad, n);
 }
 
 static void test_pow(void)
@@ -287,7 +504,9 @@ int main(void)
 {
     printf("test_fx (Q%d.%d)\n", 31 - FX_FRAC_BITS, FX_FRAC_BITS);
     test_mul_div();
+    test_div_exact();
     test_sqrt();
+    test_sqrt_exact();
     test_unit3();
     test_pow();
     test_tan();
