@@ -63,6 +63,11 @@ for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
     fi
 done
 
+# Code budget of a firmware with the SPD features only (balls-2: spheres,
+# one polygon, shadows, reflection, specular), scene tables excluded.
+c=$(code_of "$(fwdir balls-2 64x64)/fixed.elf")
+[ "${c:-99999}" -le 16384 ] && ok "balls-2 firmware code $c bytes <= 16 KiB" || bad "balls-2 firmware code ${c:-?} bytes > 16 KiB"
+
 # The packed framebuffer formats on the board against the host's
 # (rgb565be: 16-bit byte-swapped; l4: two pixels per byte, and at an odd
 # width the last byte of every line keeps its low nibble 0).
