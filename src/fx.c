@@ -7,7 +7,7 @@ volatile uint32_t fx_saturations;
 
 /* FX_FAST_MATH trades exactness for instructions: one Newton step less
  * in fx_unit3's reciprocal square root (relative error 2^-18 instead of
- * 2^-29), no exact last-unit fix of square roots (within 1.01 ulp), and
+ * 2^-29), no exact last-unit fix of square roots (within 0.76 ulp), and
  * 16 instead of 24 log2 bits and a degree-6 exp2 in powers. Quotients
  * are exact either way: their fix costs next to nothing. */
 #if FX_FAST_MATH
@@ -145,15 +145,13 @@ static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
     return y + ((uint32_t)(fx_mul64((int32_t)y, e) >> 32) << 3) - 8;
 }
 
-/* round(sqrt(v)) for 0 <= v < 2^60, or with `big` for v < 2^62 - 2^32
- * (the root stays below 2^31 - 1/2). With v = u 2^-2k, u in [2^62, 2^64)
- * (k >= 2, or k >= 1 with big): g, under sqrt(u) by less than 2^-20.5
- * relative, then one Newton step g + (u - g^2) / (2 sqrt(u)) on the exact
- * residual, never above sqrt(u) and less than 1.01 under it. So g / 2^k,
- * floored for k >= 2 (then less than 0.26 under the root) or rounded, is
- * the answer or one under it, and the exact v - r (r + 1) tells which:
- * (r + 1/2)^2 = r (r + 1) + 1/4. */
-static RT_INLINE uint32_t isqrt_round(uint64_t v, bool big)
+/* round(sqrt(v)) for 0 <= v < 2^60. With v = u 2^-2k, u in [2^62, 2^64)
+ * and k >= 2: g, under sqrt(u) by less than 2^-20.5 relative, then one
+ * Newton step g + (u - g^2) / (2 sqrt(u)) on the exact residual, never
+ * above sqrt(u) and less than 1.01 under it. So r = floor(g / 2^k), less
+ * than 0.26 under sqrt(v), is the answer or one under it, and the exact
+ * v - r (r + 1) tells which: (r + 1/2)^2 = r (r + 1) + 1/4. */
+static inline uint32_t isqrt_round(uint64_t v)
 {
     uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, x, ulo;
     int s;
@@ -174,10 +172,9 @@ static RT_INLINE uint32_t isqrt_round(uint64_t v, bool big)
     uint64_t res = ((uint64_t)x << 32 | ulo) - fx_umul64(g, g); /* < 2^43 */
     g += (uint32_t)(fx_umul64((uint32_t)(res >> 16), y) >> 47);
 #if FX_FAST_MATH
-    (void)big;
-    return ((g >> (s / 2 - 1)) + 1) >> 1; /* within 1.01 */
+    return ((g >> (s / 2 - 1)) + 1) >> 1; /* rounded: within 0.76 */
 #else
-    uint32_t r = big ? ((g >> (s / 2 - 1)) + 1) >> 1 : g >> s / 2;
+    uint32_t r = g >> s / 2;
     if (fx_umul64(r, r + 1) < v)
         r++;
     return r;
@@ -194,10 +191,9 @@ static RT_INLINE uint32_t isqrt_round(uint64_t v, bool big)
 #endif
 #endif
 
-/* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.5
- * relative under it (both checked for every d): an estimate also never
- * above, within 2^-13.8, then one Newton step y' = y + y (1 - d y),
- * which stays under. The estimate is one 32-bit hardware divide (UDIV,
+/* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.4
+ * relative under it (both checked for every d): an estimate within
+ * 2^-13.8, never above, then one Newton step y' = y + y (1 - d y). The estimate is one 32-bit hardware divide (UDIV,
  * 2..12 cycles on the M3) or, without one, a line per 64th of [1, 2)
  * under the curve, packed as in rsqrt_q31_sqrt (drop per unit of d's
  * bits 24..9). */
@@ -222,8 +218,10 @@ static uint32_t recip_q63(uint32_t d)
 #else
     uint32_t y = (0xFFFFFFFFu / ((d >> 16) + 1)) << 15;
 #endif
-    uint64_t e = ((uint64_t)1 << 63) - fx_umul64(d, y); /* 2^63 (1 - d y) < 2^50 */
-    return y + (uint32_t)(fx_umul64(y, (uint32_t)(e >> 31)) >> 32);
+    /* 2^31 - d y / 2^32 = 2^31 (1 - d y / 2^63), at most 1 over; 2 units
+     * off the step keep it under */
+    uint32_t e = 0x80000000u - (uint32_t)(fx_umul64(d, y) >> 32);
+    return y + ((uint32_t)(fx_umul64(y, e) >> 32) << 1) - 2;
 }
 
 uint32_t fx_recip_q31(uint32_t x) { return recip_q63(x) >> 1; }
@@ -271,7 +269,7 @@ static RT_INLINE fx_t div_round(uint32_t n, uint32_t d, uint32_t sgn)
 {
     /* n 2^F / d = (n' / d') 2^(31 - sh), n' and d' being n and d
      * normalised to [2^31, 2^32); q, its floor from the reciprocal of d',
-     * is at most 2^-27.5 under it, so 12 under at most below 2^31. */
+     * is at most 2^-27.4 under it, so 12 under at most below 2^31. */
     int tn = clz32(n), td = clz32(d);
     int sh = 31 - FX_FRAC_BITS + tn - td;
     if (sh < 0) { /* n' / d' > 1/2, so the quotient is above 2^31 */
@@ -339,23 +337,31 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
     return (w / a) * FX_ONE;
 }
 
-/* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more) */
+/* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more, rare) */
 RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w)
 {
     if (w < 0)
         return 0;
-    if (w < ((int64_t)1 << 62) - ((int64_t)1 << 32))
-        return (fx_t)isqrt_round((uint64_t)w, true);
     /* sqrt(2^62 - 2^32) rounds to 2^31 - 1; from (2^31 - 1/2)^2 on, the
      * root rounds to 2^31 or more */
-    return w > ((int64_t)1 << 62) - ((int64_t)1 << 31) ? fx_sat64(FX_MAX + (int64_t)1) : FX_MAX;
+    if (w >= ((int64_t)1 << 62) - ((int64_t)1 << 32))
+        return w > ((int64_t)1 << 62) - ((int64_t)1 << 31) ? fx_sat64(FX_MAX + (int64_t)1) : FX_MAX;
+    /* twice the root of w / 4 is within 2 of the root: fixed with
+     * e = w - r^2 both ways ((r +- 1/2)^2 = r^2 +- r + 1/4) */
+    uint32_t r = 2 * (uint32_t)fx_wsqrt(w >> 2);
+    int64_t e = w - (int64_t)fx_umul64(r, r);
+    for (; e > (int64_t)r; r++)
+        e -= 2 * (int64_t)r + 1;
+    for (; e <= -(int64_t)r; r--)
+        e += 2 * (int64_t)r - 1;
+    return (fx_t)r;
 }
 
 fx_t fx_wsqrt(fx_wide_t w)
 {
     if ((uint64_t)w >> 60)
         return wsqrt_big(w);
-    return (fx_t)isqrt_round((uint64_t)w, false);
+    return (fx_t)isqrt_round((uint64_t)w);
 }
 
 fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
@@ -395,9 +401,14 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
         vz = shr_to32(z, n);
     }
     uint64_t len2 = (uint64_t)(fx_mul64(vx, vx) + fx_mul64(vy, vy) + fx_mul64(vz, vz));
-    /* len2 = (xn / 2^30) 2^(62 - s), s even (6 or 8) */
+    /* len2 = (xn / 2^30) 2^(62 - s), s even: 6 or 8 (its high word is in
+     * [2^22, 3 2^24)), which one compare tells on cores without CLZ */
     uint32_t hi = (uint32_t)(len2 >> 32);
+#if defined(__ARM_FEATURE_CLZ)
     int s = clz32(hi) & ~1;
+#else
+    int s = hi >> 24 ? 6 : 8;
+#endif
     uint32_t xn = hi << s | (uint32_t)len2 >> (32 - s);
     /* 1 / |v| = (r / 2^31) 2^-((62 - s) / 2), so out = v r 2^-(62 - s/2 - F)
      * rounded; the shift exceeds 32, so the high word of v r suffices */
