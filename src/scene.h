@@ -53,12 +53,15 @@ enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX };
  *   torus    around the z axis: major radius q[0], minor radius q[1]
  *   box      [lo, hi]
  * `bound` is the radius of a sphere about the object-space origin that
- * holds the solid (early rejection, root bracketing). */
+ * holds the solid (early rejection, root bracketing); `wbound` that of a
+ * world-space sphere about the transform's origin t that holds it (tested
+ * before the ray is mapped into object space; unused without a transform). */
 #define FIELDS_shape_t(X) \
     X(real_t, q, [10]) \
     X(vec3_t, lo, ) \
     X(vec3_t, hi, ) \
     X(real_t, bound, ) \
+    X(real_t, wbound, ) \
     X(uint16_t, xform, ) \
     X(uint16_t, material, ) \
     X(uint8_t, kind, ) /* enum shape_kind */

@@ -63,6 +63,38 @@ const char *shape_init_box(shape_t *s, vec3_t lo, vec3_t hi)
     return 0;
 }
 
+/* The world-space sphere about the transform's origin that holds the
+ * shape: the object bound times the largest stretch of M (Gershgorin on
+ * M^T M), or the farthest corner of the mapped box [lo, hi] if nearer;
+ * padded for rounding and for M and the M^-1 the tracer uses differing in
+ * their last places (relative 2^-9, absolute RT_BOUND_PAD). */
+void shape_set_world_bound(const scene_t *sc, shape_t *s)
+{
+    s->wbound = s->bound;
+    if (s->xform == XFORM_NONE)
+        return;
+    const xform_t *x = &sc->xforms[s->xform];
+    real_wide_t g = 0;
+    for (int i = 0; i < 3; i++) {
+        real_wide_t row = 0;
+        for (int j = 0; j < 3; j++) {
+            real_wide_t a = r_wmul(x->m[0][i], x->m[0][j]) + r_wmul(x->m[1][i], x->m[1][j]) +
+                            r_wmul(x->m[2][i], x->m[2][j]);
+            row += a < 0 ? -a : a;
+        }
+        g = row > g ? row : g;
+    }
+    real_t w = r_mul(s->bound, r_next_up(r_wsqrt(g))), corner = 0;
+    for (int i = 0; i < 8; i++) {
+        vec3_t c = xform_mat_vec(x->m, v3(i & 1 ? s->hi.x : s->lo.x, i & 2 ? s->hi.y : s->lo.y,
+                                          i & 4 ? s->hi.z : s->lo.z));
+        real_t l = r_next_up(r_wsqrt(v3_wdot(c, c)));
+        corner = r_max(corner, l);
+    }
+    w = r_min(w, corner);
+    s->wbound = r_add_sat(r_add_sat(w, w / 512), RT_BOUND_PAD);
+}
+
 void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *max)
 {
     const real_t pad = RT_BOX_SLACK;
@@ -103,7 +135,12 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
     o->k = R_ONE;
     if (s->xform != XFORM_NONE) {
         const xform_t *x = &sc->xforms[s->xform];
-        org = xform_to_object(x, org);
+        /* the world bounding sphere first: most rays that reach here miss */
+        org = v3(org.x - x->t[0], org.y - x->t[1], org.z - x->t[2]);
+        vec3_t pw = v3_madd(org, -v3_dot(org, r->dir), r->dir);
+        if (v3_wdot(pw, pw) > r_wmul(s->wbound, s->wbound))
+            return false;
+        org = xform_mat_vec(x->im, org);
         vec3_t d = xform_dir_to_object(x, r->dir);
         o->k = v3_length(d);
         o->u = v3_unit(d);

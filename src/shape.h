@@ -18,6 +18,9 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
 const char *shape_init_torus(shape_t *s, real_t major, real_t minor);
 const char *shape_init_box(shape_t *s, vec3_t lo, vec3_t hi);
 
+/* Sets s->wbound (scene.h) once the shape's transform is in the table. */
+void shape_set_world_bound(const scene_t *sc, shape_t *s);
+
 /* World-space box holding the shape (all of it, with rounding slack). */
 void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *max);
 
