@@ -293,14 +293,6 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
     }
 }
 
-/* Signed distance to the torus (exact: |(rho - R, z)| - r). */
-static real_t torus_sdf(const shape_t *s, vec3_t x)
-{
-    real_t rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
-    real_t qx = rho - s->q[0];
-    return r_wsqrt(r_wmul(qx, qx) + r_wmul(x.z, x.z)) - s->q[1];
-}
-
 static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
 {
     real_t rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
@@ -311,54 +303,134 @@ static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
     return v3_unit(v3(r_mul(x.x, f), r_mul(x.y, f), x.z));
 }
 
-/* Torus roots by sphere tracing the exact distance along the bounding
- * chord (it never steps over a surface), each root polished by up to three
- * Newton steps on the distance. At most RT_TORUS_STEPS distance evaluations per
- * ray; a boundary is where the distance falls below RT_TORUS_EPS. */
+/* Torus roots. Along the ray x(sigma) = p0 + sigma u the squared distance
+ * to the centre circle is D = (rho - R)^2 + z^2 = sigma^2 + |p0|^2 + R^2 -
+ * 2 R rho, where rho = |(x, y)| is convex in sigma (the length of an affine
+ * function). So F = D - r^2 (negative inside) has two quadratic bounds:
+ * above, with rho's tangent at s0 (rho >= rho0 + rho0' (sigma - s0)),
+ *   F <= F0 + d^2 + 2 d (s0 - R rho0'),                 d = sigma - s0;
+ * below on [s0, s1], with rho's chord (rho <= rho0 + m d, m its slope),
+ *   F >= F0 + d^2 + 2 d (s0 - R m).
+ * From a point outside, the lower bound's first root is a step that
+ * cannot pass a root, and the upper bound's first root a point at or past
+ * one; from inside, the other way round. Each iteration takes the safe
+ * step from the near end and brings in the far end of the bracket, and
+ * both converge on the nearest root (quadratically where the ray crosses
+ * the surface). The march goes forward from the near end of the bounding
+ * chord (clipped to the slab |z| <= r) to the first and second roots, and
+ * back from the far end to the last two: a torus has at most four. */
 
-static real_t polish(const shape_t *s, const oray_t *o, real_t sigma)
+typedef struct {
+    real_t s, rho, dr; /* sigma, rho and d rho / d sigma */
+    real_wide_t f;     /* (rho - R)^2 + z^2 - r^2 */
+} tpt_t;
+
+static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, real_t dir)
 {
-    for (int i = 0; i < 3; i++) {
-        vec3_t x = v3_madd(o->p0, sigma, o->u);
-        real_t slope = v3_dot(torus_normal_obj(s, x), o->u);
-        if (r_abs(slope) < R_RATIO(1, 64))
-            break; /* grazing: Newton would wander */
-        real_t d = torus_sdf(s, x);
-        if (r_abs(d) > 4 * RT_TORUS_EPS)
-            break; /* wandered off: keep the last point near the surface */
-        sigma -= r_div(d, slope);
+    vec3_t x = v3_madd(o->p0, r_mul(dir, sigma), o->u);
+    tpt_t p;
+    p.s = sigma;
+    p.rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
+    real_t q = p.rho - sh->q[0];
+    p.f = r_wmul(q, q) + r_wmul(x.z, x.z) - r_wmul(sh->q[1], sh->q[1]);
+    real_t xu = r_from_wide(r_wmul(x.x, o->u.x) + r_wmul(x.y, o->u.y));
+    p.dr = p.rho > 0 ? r_mul(dir, safe_div(xu, p.rho)) : 0;
+    return p;
+}
+
+/* The first d > 0 with d^2 + 2 beta d + g = 0, or -1 if there is none. */
+static real_t first_root(real_wide_t g, real_t beta)
+{
+    real_wide_t disc = r_wmul(beta, beta) - g;
+    if (disc < 0 || (g > 0 && beta >= 0))
+        return -R_ONE;
+    real_t h = r_wsqrt(disc);
+    return g > 0 ? r_wdiv(g, r_to_wide(h - beta)) : h - beta; /* no cancellation */
+}
+
+/* The nearest root past *p (towards far, which lies on the other side of
+ * it when `bracketed`, else is outside) along direction dir (+1 or -1; s
+ * counts along it). On success *p is the point at the root. */
+static bool torus_cross(const shape_t *sh, const oray_t *o, real_t dir, tpt_t *p, tpt_t far, bool inside,
+                        bool bracketed)
+{
+    const real_t r0 = sh->q[0];
+    tpt_t a = *p;
+    if (inside && a.f > 0)
+        a.f = 0; /* starting on the surface, going in */
+    for (int it = 0; it < RT_TORUS_STEPS; it++) {
+        real_t span = far.s - a.s;
+        if (span <= RT_TORUS_TOL)
+            return bracketed && (*p = a, true);
+        real_t m = r_max(-R_ONE, r_min(R_ONE, safe_div(far.rho - a.rho, span))); /* |rho'| <= 1 */
+        real_t chord = a.s - r_mul(r0, m), tangent = a.s - r_mul(r0, a.dr);
+        real_t step = first_root(a.f, inside ? tangent : chord);
+        real_t reach = first_root(a.f, inside ? chord : tangent);
+        if (step < 0 || step >= span) {
+            if (!bracketed)
+                return false; /* no root up to far */
+            step = span;
+        }
+        /* a root lies in [step, reach]: done if that is short, else the
+         * far end comes in to reach */
+        bool done = step <= RT_TORUS_TOL || (reach >= 0 && reach - step <= RT_TORUS_TOL);
+        if (!done && reach > step && reach < span) {
+            tpt_t b = torus_at(sh, o, a.s + reach, dir);
+            if (inside ? b.f >= 0 : b.f <= 0) {
+                far = b;
+                bracketed = true;
+            }
+        }
+        a = torus_at(sh, o, a.s + step, dir);
+        if (done || (inside ? a.f >= 0 : a.f <= 0))
+            break; /* at (or just past) the root */
     }
-    return sigma;
+    *p = a;
+    return true;
+}
+
+static tpt_t flip(tpt_t p)
+{
+    p.s = -p.s;
+    p.dr = -p.dr;
+    return p;
 }
 
 RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
-    real_t sigma = -o->half_chord, end = o->half_chord, entry = 0;
-    real_t last = sigma - 8 * RT_TORUS_EPS; /* the last boundary crossed */
-    bool inside = false;
-    for (int step = 0; step < RT_TORUS_STEPS && sigma <= end; step++) {
-        real_t d = torus_sdf(s, v3_madd(o->p0, sigma, o->u));
-        real_t dist = inside ? -d : d;
-        if (dist > RT_TORUS_EPS) {
-            sigma += dist;
-            continue;
-        }
-        if (sigma - last < 4 * RT_TORUS_EPS) { /* still at the surface just crossed */
-            sigma += RT_TORUS_EPS;
-            continue;
-        }
-        real_t at = polish(s, o, sigma);
-        if (!inside) {
-            entry = at;
-        } else if (at - entry > 4 * RT_TORUS_EPS) {
-            spans_push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, at), id, FACE_CURVED));
-        } /* else a tangent touch: no span (at most two spans remain) */
-        inside = !inside;
-        last = r_max(sigma, at);
-        sigma = last + 2 * RT_TORUS_EPS; /* step through the surface */
+    real_t lo = -o->half_chord, hi = o->half_chord;
+    real_t slab = s->q[1] + RT_TORUS_EPS; /* the torus lies in |z| <= r */
+    if (r_abs(o->u.z) < RT_OBJ_PARALLEL) {
+        if (r_abs(o->p0.z) > slab)
+            return;
+    } else {
+        real_t t0 = safe_div(-slab - o->p0.z, o->u.z), t1 = safe_div(slab - o->p0.z, o->u.z);
+        lo = r_max(lo, r_min(t0, t1));
+        hi = r_min(hi, r_max(t0, t1));
+        if (lo >= hi)
+            return;
     }
-    if (inside) /* ran out of steps inside: close the span where we are */
-        spans_push(out, bnd(to_world(o, entry), id, FACE_CURVED), bnd(to_world(o, sigma), id, FACE_CURVED));
+    tpt_t near = torus_at(s, o, lo, R_ONE), far = torus_at(s, o, hi, R_ONE);
+    tpt_t e1 = near, x1, x2, e2;
+    if (!torus_cross(s, o, R_ONE, &e1, far, false, false))
+        return;
+    x1 = e1;
+    if (!torus_cross(s, o, R_ONE, &x1, far, true, true))
+        x1 = far;
+    /* back from the far end: the last root, then the one before it */
+    x2 = flip(far);
+    real_t a = e1.s, b = x1.s;
+    if (torus_cross(s, o, -R_ONE, &x2, flip(x1), false, true) && -x2.s > b + 4 * RT_TORUS_EPS) {
+        e2 = x2;
+        if (torus_cross(s, o, -R_ONE, &e2, flip(x1), true, true) && -e2.s > b + 4 * RT_TORUS_EPS) {
+            if (b - a > 4 * RT_TORUS_EPS) /* else a tangent touch: no span */
+                spans_push(out, bnd(to_world(o, a), id, FACE_CURVED), bnd(to_world(o, b), id, FACE_CURVED));
+            a = -e2.s;
+        }
+        b = -x2.s;
+    }
+    if (b - a > 4 * RT_TORUS_EPS)
+        spans_push(out, bnd(to_world(o, a), id, FACE_CURVED), bnd(to_world(o, b), id, FACE_CURVED));
 }
 
 /* Not inlined: its locals stay out of csg.c's recursive solid_spans frame. */
