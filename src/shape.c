@@ -325,7 +325,9 @@ typedef struct {
     real_wide_t f;     /* (rho - R)^2 + z^2 - r^2 */
 } tpt_t;
 
-static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, real_t dir)
+/* The march's values at sigma (counted along dir); d rho / d sigma only
+ * with `slope` (the points steps start from). */
+static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, real_t dir, bool slope)
 {
     vec3_t x = v3_madd(o->p0, r_mul(dir, sigma), o->u);
     tpt_t p;
@@ -334,7 +336,7 @@ static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, real_t d
     real_t q = p.rho - sh->q[0];
     p.f = r_wmul(q, q) + r_wmul(x.z, x.z) - r_wmul(sh->q[1], sh->q[1]);
     real_t xu = r_from_wide(r_wmul(x.x, o->u.x) + r_wmul(x.y, o->u.y));
-    p.dr = p.rho > 0 ? r_mul(dir, safe_div(xu, p.rho)) : 0;
+    p.dr = slope && p.rho > 0 ? r_mul(dir, safe_div(xu, p.rho)) : 0;
     return p;
 }
 
@@ -375,13 +377,13 @@ static bool torus_cross(const shape_t *sh, const oray_t *o, real_t dir, tpt_t *p
          * far end comes in to reach */
         bool done = step <= RT_TORUS_TOL || (reach >= 0 && reach - step <= RT_TORUS_TOL);
         if (!done && reach > step && reach < span) {
-            tpt_t b = torus_at(sh, o, a.s + reach, dir);
+            tpt_t b = torus_at(sh, o, a.s + reach, dir, false);
             if (inside ? b.f >= 0 : b.f <= 0) {
                 far = b;
                 bracketed = true;
             }
         }
-        a = torus_at(sh, o, a.s + step, dir);
+        a = torus_at(sh, o, a.s + step, dir, true);
         if (done || (inside ? a.f >= 0 : a.f <= 0))
             break; /* at (or just past) the root */
     }
@@ -410,7 +412,7 @@ RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t 
         if (lo >= hi)
             return;
     }
-    tpt_t near = torus_at(s, o, lo, R_ONE), far = torus_at(s, o, hi, R_ONE);
+    tpt_t near = torus_at(s, o, lo, R_ONE, true), far = torus_at(s, o, hi, R_ONE, true);
     tpt_t e1 = near, x1, x2, e2;
     if (!torus_cross(s, o, R_ONE, &e1, far, false, false))
         return;
