@@ -36,6 +36,30 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
         R_RATIO(64, 1))
         return "quadric too long for the fixed range (its clip box reaches over 64 times its radii)";
     s->bound = corner_radius(lo, hi);
+    /* an ellipsoid sum A_i (x_i - c_i)^2 <= K inside the clip box needs no
+     * clipping, and its own box and bound are tighter */
+    if (q[0] > 0 && q[1] > 0 && q[2] > 0 && q[3] == 0 && q[4] == 0 && q[5] == 0) {
+        real_t c[3], rad[3], k = -q[9], far = 0;
+        for (int i = 0; i < 3; i++) {
+            c[i] = r_div(-q[6 + i] / 2, q[i]);
+            k -= r_mul(q[6 + i] / 2, c[i]);
+        }
+        bool inside = k > 0;
+        for (int i = 0; i < 3 && inside; i++) {
+            real_t a = r_sqrt(r_div(k, q[i]));
+            rad[i] = a + a / 512 + RT_BOUND_PAD; /* rounding of c, k, a */
+            /* touching the box (a unit sphere in [-1, 1]^3) is inside */
+            inside = c[i] - a >= v3_axis(&lo, (unsigned)i) - RT_BOUND_PAD &&
+                     c[i] + a <= v3_axis(&hi, (unsigned)i) + RT_BOUND_PAD;
+            far = r_max(far, rad[i]);
+        }
+        if (inside) {
+            s->kind = SHAPE_ELLIPSOID;
+            s->lo = v3(c[0] - rad[0], c[1] - rad[1], c[2] - rad[2]);
+            s->hi = v3(c[0] + rad[0], c[1] + rad[1], c[2] + rad[2]);
+            s->bound = r_min(s->bound, v3_length(v3(c[0], c[1], c[2])) + far + RT_BOUND_PAD);
+        }
+    }
     return 0;
 }
 
@@ -150,7 +174,7 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
     real_wide_t h2 = r_wmul(s->bound, s->bound) - v3_wdot(o->p0, o->p0);
     if (h2 < 0)
         return false; /* misses the bounding sphere */
-    o->half_chord = r_wsqrt(h2);
+    o->half_chord = s->kind == SHAPE_TORUS ? r_wsqrt(h2) : 0; /* the torus's march alone uses it */
     return true;
 }
 
@@ -236,9 +260,9 @@ static real_t safe_div(real_t num, real_t den)
 
 RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
-    real_t ca, cb;
-    uint8_t fa, fb;
-    if (!box_interval(o, &s->lo, &s->hi, &ca, &cb, &fa, &fb))
+    real_t ca = -R_BIG, cb = R_BIG;
+    uint8_t fa = FACE_CURVED, fb = FACE_CURVED;
+    if (s->kind != SHAPE_ELLIPSOID && !box_interval(o, &s->lo, &s->hi, &ca, &cb, &fa, &fb))
         return;
     /* q along the ray: alpha sigma^2 + 2 beta sigma + gamma */
     vec3_t w = quadric_grad_half(s->q, o->p0, true);
@@ -316,92 +340,103 @@ static vec3_t torus_normal_obj(const shape_t *s, vec3_t x)
  * one; from inside, the other way round. Each iteration takes the safe
  * step from the near end and brings in the far end of the bracket, and
  * both converge on the nearest root (quadratically where the ray crosses
- * the surface). The march goes forward from the near end of the bounding
- * chord (clipped to the slab |z| <= r) to the first and second roots, and
- * back from the far end to the last two: a torus has at most four. */
+ * the surface). The march goes from root to root (a torus has at most
+ * four) along the bounding chord, clipped to the slab |z| <= r. */
 
 typedef struct {
     real_t s, rho, dr; /* sigma, rho and d rho / d sigma */
     real_wide_t f;     /* (rho - R)^2 + z^2 - r^2 */
 } tpt_t;
 
-/* The march's values at sigma (counted along dir); d rho / d sigma only
+/* The march's values at sigma; d rho / d sigma only
  * with `slope` (the points steps start from). */
-static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, real_t dir, bool slope)
+static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, bool slope)
 {
-    vec3_t x = v3_madd(o->p0, r_mul(dir, sigma), o->u);
+    vec3_t x = v3_madd(o->p0, sigma, o->u);
     tpt_t p;
     p.s = sigma;
     p.rho = r_wsqrt(r_wmul(x.x, x.x) + r_wmul(x.y, x.y));
     real_t q = p.rho - sh->q[0];
     p.f = r_wmul(q, q) + r_wmul(x.z, x.z) - r_wmul(sh->q[1], sh->q[1]);
     real_t xu = r_from_wide(r_wmul(x.x, o->u.x) + r_wmul(x.y, o->u.y));
-    p.dr = slope && p.rho > 0 ? r_mul(dir, safe_div(xu, p.rho)) : 0;
+    p.dr = slope && p.rho > 0 ? r_div(xu, p.rho) : 0; /* |xu| <= rho */
     return p;
 }
 
-/* The first d > 0 with d^2 + 2 beta d + g = 0, or -1 if there is none. */
+/* The first d > 0 with d^2 + 2 beta d + g = 0, or -1 if there is none
+ * (g = 0: the roots 0 and -2 beta). */
 static real_t first_root(real_wide_t g, real_t beta)
 {
     real_wide_t disc = r_wmul(beta, beta) - g;
-    if (disc < 0 || (g > 0 && beta >= 0))
+    if (disc < 0 || (g >= 0 && beta >= 0))
         return -R_ONE;
     real_t h = r_wsqrt(disc);
     return g > 0 ? r_wdiv(g, r_to_wide(h - beta)) : h - beta; /* no cancellation */
 }
 
-/* The nearest root past *p (towards far, which lies on the other side of
- * it when `bracketed`, else is outside) along direction dir (+1 or -1; s
- * counts along it). On success *p is the point at the root. */
-static bool torus_cross(const shape_t *sh, const oray_t *o, real_t dir, tpt_t *p, tpt_t far, bool inside,
-                        bool bracketed)
+/* The nearest root past *p before `end` (false if there is none). The
+ * bounds' chord runs from a to b: `end`, or a nearer point when the chord
+ * to `end` is too loose to step by, or a point past the root (bracket). */
+static bool torus_cross(const shape_t *sh, const oray_t *o, tpt_t *p, tpt_t end, bool inside)
 {
     const real_t r0 = sh->q[0];
-    tpt_t a = *p;
-    if (inside && a.f > 0)
-        a.f = 0; /* starting on the surface, going in */
+    tpt_t a = *p, b = end;
+    if (inside ? a.f > 0 : a.f < 0)
+        a.f = 0; /* starting on the surface just crossed */
     for (int it = 0; it < RT_TORUS_STEPS; it++) {
-        real_t span = far.s - a.s;
-        if (span <= RT_TORUS_TOL)
-            return bracketed && (*p = a, true);
-        real_t m = r_max(-R_ONE, r_min(R_ONE, safe_div(far.rho - a.rho, span))); /* |rho'| <= 1 */
+        bool past = inside ? b.f >= 0 : b.f <= 0; /* a root lies in (a, b] */
+        real_t span = b.s - a.s;
+        real_t m = r_max(-R_ONE, r_min(R_ONE, safe_div(b.rho - a.rho, span))); /* |rho'| <= 1 */
         real_t chord = a.s - r_mul(r0, m), tangent = a.s - r_mul(r0, a.dr);
         real_t step = first_root(a.f, inside ? tangent : chord);
         real_t reach = first_root(a.f, inside ? chord : tangent);
-        if (step < 0 || step >= span) {
-            if (!bracketed)
-                return false; /* no root up to far */
-            step = span;
+        if (span <= RT_TORUS_TOL || step < 0 || step >= span) { /* no root before b */
+            if (!past && b.s >= end.s)
+                return false;
+            a = torus_at(sh, o, b.s, true);
+            b = end;
+            if (past)
+                break;
+            continue;
         }
-        /* a root lies in [step, reach]: done if that is short, else the
-         * far end comes in to reach */
-        bool done = step <= RT_TORUS_TOL || (reach >= 0 && reach - step <= RT_TORUS_TOL);
-        if (!done && reach > step && reach < span) {
-            tpt_t b = torus_at(sh, o, a.s + reach, dir, false);
-            if (inside ? b.f >= 0 : b.f <= 0) {
-                far = b;
-                bracketed = true;
-            }
+        if (reach >= 0 && reach - step <= RT_TORUS_TOL) { /* a root in [step, reach] */
+            a = torus_at(sh, o, a.s + step, true);
+            break;
         }
-        a = torus_at(sh, o, a.s + step, dir, true);
-        if (done || (inside ? a.f >= 0 : a.f <= 0))
+        if (!past && step < span / 4) {
+            /* slow: the chord is loose. Bring b in: outside, to where the
+             * upper bound comes nearest to the surface (the closest pass);
+             * inside, past where the step's bound puts the root; else
+             * halfway. */
+            real_t v = inside ? 2 * step : -tangent;
+            b = torus_at(sh, o, a.s + (v > step && v < span ? v : span / 2), false);
+            continue;
+        }
+        if (reach > step && reach < span) { /* the upper bound's root: past the root */
+            tpt_t q = torus_at(sh, o, a.s + reach, false);
+            if (inside ? q.f >= 0 : q.f <= 0)
+                b = q;
+        }
+        a = torus_at(sh, o, a.s + step, true);
+        if (inside ? a.f >= 0 : a.f <= 0)
             break; /* at (or just past) the root */
     }
     *p = a;
     return true;
 }
 
-static tpt_t flip(tpt_t p)
+RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, const real_t win[2],
+                                    spans_t *out)
 {
-    p.s = -p.s;
-    p.dr = -p.dr;
-    return p;
-}
-
-RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
-{
+    /* the bounding chord, clipped to the window (sigma = k t - s0, wide:
+     * the window's far end may be R_BIG) and to the slab |z| <= r */
     real_t lo = -o->half_chord, hi = o->half_chord;
-    real_t slab = s->q[1] + RT_TORUS_EPS; /* the torus lies in |z| <= r */
+    real_wide_t w0 = r_wmul(o->k, win[0]) - r_to_wide(o->s0), w1 = r_wmul(o->k, win[1]) - r_to_wide(o->s0);
+    if (w0 > r_to_wide(lo + RT_TORUS_EPS))
+        lo = r_from_wide(w0) - RT_TORUS_EPS;
+    if (w1 < r_to_wide(hi - RT_TORUS_EPS))
+        hi = r_from_wide(w1) + RT_TORUS_EPS;
+    real_t slab = s->q[1] + RT_TORUS_EPS;
     if (r_abs(o->u.z) < RT_OBJ_PARALLEL) {
         if (r_abs(o->p0.z) > slab)
             return;
@@ -409,34 +444,31 @@ RT_NOINLINE static void torus_spans(const shape_t *s, uint16_t id, const oray_t 
         real_t t0 = safe_div(-slab - o->p0.z, o->u.z), t1 = safe_div(slab - o->p0.z, o->u.z);
         lo = r_max(lo, r_min(t0, t1));
         hi = r_min(hi, r_max(t0, t1));
-        if (lo >= hi)
-            return;
     }
-    tpt_t near = torus_at(s, o, lo, R_ONE, true), far = torus_at(s, o, hi, R_ONE, true);
-    tpt_t e1 = near, x1, x2, e2;
-    if (!torus_cross(s, o, R_ONE, &e1, far, false, false))
+    if (lo >= hi)
         return;
-    x1 = e1;
-    if (!torus_cross(s, o, R_ONE, &x1, far, true, true))
-        x1 = far;
-    /* back from the far end: the last root, then the one before it */
-    x2 = flip(far);
-    real_t a = e1.s, b = x1.s;
-    if (torus_cross(s, o, -R_ONE, &x2, flip(x1), false, true) && -x2.s > b + 4 * RT_TORUS_EPS) {
-        e2 = x2;
-        if (torus_cross(s, o, -R_ONE, &e2, flip(x1), true, true) && -e2.s > b + 4 * RT_TORUS_EPS) {
-            if (b - a > 4 * RT_TORUS_EPS) /* else a tangent touch: no span */
-                spans_push(out, bnd(to_world(o, a), id, FACE_CURVED), bnd(to_world(o, b), id, FACE_CURVED));
-            a = -e2.s;
-        }
-        b = -x2.s;
+    /* forward from root to root; a window end inside the torus bounds its
+     * span by a boundary the caller never takes (t = -+R_BIG) */
+    tpt_t a = torus_at(s, o, lo, true), far = torus_at(s, o, hi, true);
+    bool inside = a.f <= 0;
+    bound_t in = bnd(-R_BIG, id, FACE_CURVED);
+    real_t entry = -R_BIG;
+    for (int n = 0; n < 4; n++) {
+        if (!torus_cross(s, o, &a, far, inside))
+            break;
+        bound_t b = bnd(to_world(o, a.s), id, FACE_CURVED);
+        if (!inside)
+            in = b, entry = a.s;
+        else if (a.s > entry + 4 * RT_TORUS_EPS) /* else a tangent touch: no span */
+            spans_push(out, in, b);
+        inside = !inside;
     }
-    if (b - a > 4 * RT_TORUS_EPS)
-        spans_push(out, bnd(to_world(o, a), id, FACE_CURVED), bnd(to_world(o, b), id, FACE_CURVED));
+    if (inside)
+        spans_push(out, in, bnd(R_BIG, id, FACE_CURVED));
 }
 
 /* Not inlined: its locals stay out of csg.c's recursive solid_spans frame. */
-RT_NOINLINE void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out)
+RT_NOINLINE void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, const real_t win[2], spans_t *out)
 {
     const shape_t *s = &sc->shapes[id];
     oray_t o;
@@ -445,7 +477,7 @@ RT_NOINLINE void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spa
         return;
     switch (s->kind) {
     case SHAPE_BOX: box_spans(s, id, &o, out); break;
-    case SHAPE_TORUS: torus_spans(s, id, &o, out); break;
+    case SHAPE_TORUS: torus_spans(s, id, &o, win, out); break;
     default: quadric_spans(s, id, &o, out); break;
     }
 }

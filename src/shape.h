@@ -57,7 +57,9 @@ static inline void spans_push(spans_t *out, bound_t in, bound_t out_b)
     }
 }
 
-/* The spans of the ray through shape `id`. */
-void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out);
+/* The spans of the ray through shape `id`: all of them, or (tori) those
+ * meeting the window of world t [win[0], win[1]], where a span cut by the
+ * window ends at t = -R_BIG or R_BIG. */
+void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, const real_t win[2], spans_t *out);
 
 #endif
