@@ -46,8 +46,11 @@ typedef struct { FIELDS_xform_t(RT_DECLARE_FIELD) } xform_t;
 #define XFORM_NONE 0xFFFFu
 
 /* SHAPE_ELLIPSOID: a quadric with no cross terms and positive squares
- * that its clip box does not cut (lo, hi: its own box). */
-enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX, SHAPE_ELLIPSOID };
+ * that its clip box does not cut (lo, hi: its own box); SHAPE_SPHERE: one
+ * that is a sphere about the object origin and that its transform keeps a
+ * sphere (a rotation and a uniform scale), met in world space: its centre
+ * is the transform's t and `wbound` its radius. */
+enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX, SHAPE_ELLIPSOID, SHAPE_SPHERE };
 
 /* A solid in its own (object) space, placed by an optional transform:
  *   quadric  a x^2 + b y^2 + c z^2 + d xy + e xz + f yz + g x + h y + i z + j <= 0

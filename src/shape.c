@@ -3,11 +3,14 @@
  * set-up, the spans of a ray through one shape, and surface normals.
  * Uses xform.h; csg.c calls shape_spans, nothing here calls csg.c.
  *
- * A world ray goes into a shape's object space by the inverse transform
- * (direction renormalised, with k = |M^-1 d| so that world t = s / k), and
- * is moved to its point of closest approach to the object's origin: the
- * shape's bounding sphere rejects it there, and every root is found close
- * to that point, where the numbers are small.
+ * A world ray is first tested against the shape's world bounding sphere
+ * (most rays that reach a shape miss it); a sphere that its transform keeps
+ * a sphere is met right there, in world space. Otherwise the ray goes into
+ * the shape's object space by the inverse transform (direction
+ * renormalised, with k = |M^-1 d| so that world t = s / k), and is moved to
+ * its point of closest approach to the object's origin: the shape's
+ * bounding sphere rejects it there, and every root is found close to that
+ * point, where the numbers are small.
  */
 #include "shape.h"
 
@@ -98,15 +101,30 @@ void shape_set_world_bound(const scene_t *sc, shape_t *s)
     if (s->xform == XFORM_NONE)
         return;
     const xform_t *x = &sc->xforms[s->xform];
-    real_wide_t g = 0;
+    real_wide_t g = 0, mtm[3][3];
     for (int i = 0; i < 3; i++) {
         real_wide_t row = 0;
         for (int j = 0; j < 3; j++) {
             real_wide_t a = r_wmul(x->m[0][i], x->m[0][j]) + r_wmul(x->m[1][i], x->m[1][j]) +
                             r_wmul(x->m[2][i], x->m[2][j]);
+            mtm[i][j] = a;
             row += a < 0 ? -a : a;
         }
         g = row > g ? row : g;
+    }
+    /* a sphere about the origin kept a sphere (M^T M = a^2 I to within
+     * RT_BOUND_PAD relative): its world radius, exactly */
+    bool sphere = s->kind == SHAPE_ELLIPSOID && s->q[0] == s->q[1] && s->q[1] == s->q[2] && s->q[6] == 0 &&
+                  s->q[7] == 0 && s->q[8] == 0;
+    for (int i = 0; i < 3 && sphere; i++)
+        for (int j = 0; j < 3; j++) {
+            real_wide_t e = mtm[i][j] - (i == j ? mtm[0][0] : 0);
+            sphere &= (e < 0 ? -e : e) <= r_wmul(r_from_wide(mtm[0][0]), RT_BOUND_PAD);
+        }
+    if (sphere) {
+        s->kind = SHAPE_SPHERE;
+        s->wbound = r_mul(r_wsqrt(mtm[0][0]), r_sqrt(r_div(-s->q[9], s->q[0])));
+        return;
     }
     real_t w = r_mul(s->bound, r_next_up(r_wsqrt(g))), corner = 0;
     for (int i = 0; i < 8; i++) {
@@ -161,9 +179,15 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
         const xform_t *x = &sc->xforms[s->xform];
         /* the world bounding sphere first: most rays that reach here miss */
         org = v3(org.x - x->t[0], org.y - x->t[1], org.z - x->t[2]);
-        vec3_t pw = v3_madd(org, -v3_dot(org, r->dir), r->dir);
-        if (v3_wdot(pw, pw) > r_wmul(s->wbound, s->wbound))
+        o->s0 = -v3_dot(org, r->dir);
+        vec3_t pw = v3_madd(org, o->s0, r->dir);
+        real_wide_t h2 = r_wmul(s->wbound, s->wbound) - v3_wdot(pw, pw);
+        if (h2 < 0)
             return false;
+        if (s->kind == SHAPE_SPHERE) { /* the world sphere is the shape: s0 is world t */
+            o->half_chord = r_wsqrt(h2);
+            return true;
+        }
         org = xform_mat_vec(x->im, org);
         vec3_t d = xform_dir_to_object(x, r->dir);
         o->k = v3_length(d);
@@ -476,6 +500,9 @@ RT_NOINLINE void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, con
     if (!object_ray(sc, s, r, &o))
         return;
     switch (s->kind) {
+    case SHAPE_SPHERE:
+        spans_push(out, bnd(o.s0 - o.half_chord, id, FACE_CURVED), bnd(o.s0 + o.half_chord, id, FACE_CURVED));
+        break;
     case SHAPE_BOX: box_spans(s, id, &o, out); break;
     case SHAPE_TORUS: torus_spans(s, id, &o, win, out); break;
     default: quadric_spans(s, id, &o, out); break;
@@ -489,16 +516,12 @@ vec3_t shape_normal(const scene_t *sc, uint16_t id, uint8_t face, vec3_t p)
     const xform_t *xf = s->xform == XFORM_NONE ? 0 : &sc->xforms[s->xform];
     if (xf)
         x = xform_to_object(xf, p);
-    switch (face) {
-    case FACE_XMIN: n = v3(-R_ONE, 0, 0); break;
-    case FACE_XMAX: n = v3(R_ONE, 0, 0); break;
-    case FACE_YMIN: n = v3(0, -R_ONE, 0); break;
-    case FACE_YMAX: n = v3(0, R_ONE, 0); break;
-    case FACE_ZMIN: n = v3(0, 0, -R_ONE); break;
-    case FACE_ZMAX: n = v3(0, 0, R_ONE); break;
-    default:
+    if (face == FACE_CURVED) {
         n = s->kind == SHAPE_TORUS ? torus_normal_obj(s, x) : v3_unit(quadric_grad_half(s->q, x, true));
-        break;
+    } else { /* a box face: FACE_XMIN = 1, FACE_XMAX, ... */
+        real_t c[3] = { 0, 0, 0 };
+        c[(face - 1) / 2] = face & 1 ? -R_ONE : R_ONE;
+        n = v3(c[0], c[1], c[2]);
     }
     return xf ? xform_normal(xf, n) : n;
 }
