@@ -163,6 +163,15 @@ void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *m
 
 /* ---- spans --------------------------------------------------------------- */
 
+void spans_push(spans_t *out, bound_t in, bound_t out_b)
+{
+    if (out->n < RT_CSG_MAX_SPANS) { /* the reader bounds n; never drops */
+        out->s[out->n].in = in;
+        out->s[out->n].out = out_b;
+        out->n++;
+    }
+}
+
 /* The ray in a shape's object space, at its point of closest approach to
  * the origin: object parameter s = s0 + sigma, world t = s / k. */
 typedef struct {
@@ -172,37 +181,37 @@ typedef struct {
 
 RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ray_t *r, oray_t *o)
 {
+    const xform_t *x = s->xform == XFORM_NONE ? 0 : &sc->xforms[s->xform];
     vec3_t org = r->origin;
+    real_t radius = s->bound;
     o->u = r->dir;
     o->k = R_ONE;
-    if (s->xform != XFORM_NONE) {
-        const xform_t *x = &sc->xforms[s->xform];
-        /* the world bounding sphere first: most rays that reach here miss */
+    if (x) { /* the world bounding sphere first: most rays that reach here miss */
         org = v3(org.x - x->t[0], org.y - x->t[1], org.z - x->t[2]);
-        o->s0 = -v3_dot(org, r->dir);
-        vec3_t pw = v3_madd(org, o->s0, r->dir);
-        real_wide_t h2 = r_wmul(s->wbound, s->wbound) - v3_wdot(pw, pw);
+        radius = s->wbound;
+    }
+    for (;;) { /* once in world space (with a transform), once in object space */
+        o->s0 = -v3_dot(org, o->u);
+        o->p0 = v3_madd(org, o->s0, o->u);
+        real_wide_t h2 = r_wmul(radius, radius) - v3_wdot(o->p0, o->p0);
         if (h2 < 0)
-            return false;
-        if (s->kind == SHAPE_SPHERE) { /* the world sphere is the shape: s0 is world t */
-            o->half_chord = r_wsqrt(h2);
+            return false; /* misses the bounding sphere */
+        if (!x || s->kind == SHAPE_SPHERE) {
+            /* the torus's march uses the half chord; a sphere kept a
+             * sphere is its world bounding sphere: its span is s0 -+ it */
+            o->half_chord = s->kind == SHAPE_TORUS || s->kind == SHAPE_SPHERE ? r_wsqrt(h2) : 0;
             return true;
         }
         org = xform_mat_vec(x->im, org);
         vec3_t d = xform_dir_to_object(x, r->dir);
         o->k = v3_length(d);
         o->u = v3_unit(d);
+        radius = s->bound;
+        x = 0;
     }
-    o->s0 = -v3_dot(org, o->u);
-    o->p0 = v3_madd(org, o->s0, o->u);
-    real_wide_t h2 = r_wmul(s->bound, s->bound) - v3_wdot(o->p0, o->p0);
-    if (h2 < 0)
-        return false; /* misses the bounding sphere */
-    o->half_chord = s->kind == SHAPE_TORUS ? r_wsqrt(h2) : 0; /* the torus's march alone uses it */
-    return true;
 }
 
-static real_t to_world(const oray_t *o, real_t sigma)
+RT_NOINLINE static real_t to_world(const oray_t *o, real_t sigma)
 {
     real_t s = o->s0 + sigma;
     return o->k == R_ONE ? s : r_div(s, o->k);
@@ -253,7 +262,7 @@ static bool box_interval(const oray_t *o, const vec3_t *lo, const vec3_t *hi, re
     return *a <= *b;
 }
 
-RT_NOINLINE static void box_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
+static void box_spans(const shape_t *s, uint16_t id, const oray_t *o, spans_t *out)
 {
     real_t a, b;
     uint8_t fa, fb;
@@ -265,17 +274,23 @@ RT_NOINLINE static void box_spans(const shape_t *s, uint16_t id, const oray_t *o
  * returns A x + b (affine) or A x. */
 static vec3_t quadric_grad_half(const real_t q[10], vec3_t x, bool affine)
 {
-    real_wide_t gx = r_wmul(q[0], x.x) + r_wmul(q[3], x.y) / 2 + r_wmul(q[4], x.z) / 2;
-    real_wide_t gy = r_wmul(q[3], x.x) / 2 + r_wmul(q[1], x.y) + r_wmul(q[5], x.z) / 2;
-    real_wide_t gz = r_wmul(q[4], x.x) / 2 + r_wmul(q[5], x.y) / 2 + r_wmul(q[2], x.z);
-    vec3_t g = v3(r_from_wide(gx), r_from_wide(gy), r_from_wide(gz));
-    if (affine)
-        g = c3_add(g, v3(q[6] / 2, q[7] / 2, q[8] / 2)); /* saturating */
-    return g;
+    real_t g[3];
+    for (unsigned i = 0; i < 3; i++) { /* row i of A (A_ij = q[2 + i + j] / 2 off the diagonal) */
+        real_wide_t w = 0;
+        for (unsigned j = 0; j < 3; j++) {
+            real_wide_t p = r_wmul(q[i == j ? i : 2 + i + j], v3_axis(&x, j));
+            w += i == j ? p : p / 2;
+        }
+        g[i] = r_from_wide(w);
+        if (affine)
+            g[i] = r_add_sat(g[i], q[6 + i] / 2); /* saturating */
+    }
+    return v3(g[0], g[1], g[2]);
 }
 
-/* num / den clamped to +-R_BIG (roots far away are as good as infinite). */
-static real_t safe_div(real_t num, real_t den)
+/* num / den clamped to +-R_BIG (roots far away are as good as infinite).
+ * Out of line: five callers, none in an inner loop. */
+RT_NOINLINE static real_t safe_div(real_t num, real_t den)
 {
     if (r_to_wide(r_abs(num)) >= r_wmul(r_abs(den), R_RATIO(64, 1)))
         return (num < 0) != (den < 0) ? -R_BIG : R_BIG;
@@ -296,24 +311,17 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
     real_t gamma = r_from_wide(v3_wdot(o->p0, w) + r_wmul(s->q[6] / 2, o->p0.x) + r_wmul(s->q[7] / 2, o->p0.y) +
                                r_wmul(s->q[8] / 2, o->p0.z) + r_to_wide(s->q[9]));
     /* the inside of q as at most two intervals of sigma */
-    real_t iv[2][2];
-    int n = 0;
+    real_t iv[2][2] = { { -R_BIG, R_BIG }, { -R_BIG, R_BIG } };
+    int n = 1;
     if (r_abs(alpha) < RT_QUADRIC_LINEAR) {
-        if (beta == 0) {
-            if (gamma <= 0)
-                iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
-        } else {
-            real_t root = safe_div(-gamma, r_add_sat(beta, beta));
-            if (beta > 0)
-                iv[n][0] = -R_BIG, iv[n][1] = root, n++;
-            else
-                iv[n][0] = root, iv[n][1] = R_BIG, n++;
-        }
+        if (beta == 0)
+            n = gamma <= 0; /* everywhere or nowhere */
+        else /* beta > 0: up to the root, else from it */
+            iv[0][beta > 0] = safe_div(-gamma, r_add_sat(beta, beta));
     } else {
         real_wide_t disc = r_wmul(beta, beta) - r_wmul(alpha, gamma);
         if (disc < 0) {
-            if (alpha < 0)
-                iv[n][0] = -R_BIG, iv[n][1] = R_BIG, n++;
+            n = alpha < 0; /* everywhere or nowhere */
         } else {
             real_t h = r_wsqrt(disc);
             real_t qv = beta > 0 ? -r_add_sat(beta, h) : r_add_sat(h, -beta);
@@ -323,11 +331,11 @@ RT_NOINLINE static void quadric_spans(const shape_t *s, uint16_t id, const oray_
                 r1 = r2;
                 r2 = tt;
             }
-            if (alpha > 0) {
-                iv[n][0] = r1, iv[n][1] = r2, n++;
+            if (alpha > 0) { /* between the roots, else outside them */
+                iv[0][0] = r1, iv[0][1] = r2;
             } else {
-                iv[n][0] = -R_BIG, iv[n][1] = r1, n++;
-                iv[n][0] = r2, iv[n][1] = R_BIG, n++;
+                iv[0][1] = r1, iv[1][0] = r2;
+                n = 2;
             }
         }
     }
@@ -395,7 +403,7 @@ static real_t first_root(real_wide_t g, real_t beta)
     if (disc < 0 || (g >= 0 && beta >= 0))
         return -R_ONE;
     real_t h = r_wsqrt(disc);
-    return g > 0 ? r_wdiv(g, r_to_wide(h - beta)) : h - beta; /* no cancellation */
+    return g > 0 ? r_div(r_from_wide(g), h - beta) : h - beta; /* no cancellation */
 }
 
 /* The nearest root past *p before `end` (false if there is none). The
@@ -410,24 +418,21 @@ static bool torus_cross(const shape_t *sh, const oray_t *o, tpt_t *p, tpt_t end,
     for (int it = 0; it < RT_TORUS_STEPS; it++) {
         bool past = inside ? b.f >= 0 : b.f <= 0; /* a root lies in (a, b] */
         real_t span = b.s - a.s;
-        real_t m = r_max(-R_ONE, r_min(R_ONE, safe_div(b.rho - a.rho, span))); /* |rho'| <= 1 */
+        real_t m = r_max(-R_ONE, r_min(R_ONE, r_div(b.rho - a.rho, span))); /* |rho'| <= 1 */
         real_t chord = a.s - r_mul(r0, m), tangent = a.s - r_mul(r0, a.dr);
         real_t step = first_root(a.f, inside ? tangent : chord);
         real_t reach = first_root(a.f, inside ? chord : tangent);
+        real_t next = a.s + step;
+        bool stop = false;
         if (span <= RT_TORUS_TOL || step < 0 || step >= span) { /* no root before b */
             if (!past && b.s >= end.s)
                 return false;
-            a = torus_at(sh, o, b.s, true);
+            next = b.s; /* at the root if past, else on from there */
+            stop = past;
             b = end;
-            if (past)
-                break;
-            continue;
-        }
-        if (reach >= 0 && reach - step <= RT_TORUS_TOL) { /* a root in [step, reach] */
-            a = torus_at(sh, o, a.s + step, true);
-            break;
-        }
-        if (!past && step < span / 4) {
+        } else if (reach >= 0 && reach - step <= RT_TORUS_TOL) { /* a root in [step, reach] */
+            stop = true;
+        } else if (!past && step < span / 4) {
             /* slow: the chord is loose. Bring b in: outside, to where the
              * upper bound comes nearest to the surface (the closest pass);
              * inside, past where the step's bound puts the root; else
@@ -435,14 +440,13 @@ static bool torus_cross(const shape_t *sh, const oray_t *o, tpt_t *p, tpt_t end,
             real_t v = inside ? 2 * step : -tangent;
             b = torus_at(sh, o, a.s + (v > step && v < span ? v : span / 2), false);
             continue;
-        }
-        if (reach > step && reach < span) { /* the upper bound's root: past the root */
+        } else if (reach > step && reach < span) { /* the upper bound's root: past the root */
             tpt_t q = torus_at(sh, o, a.s + reach, false);
             if (inside ? q.f >= 0 : q.f <= 0)
                 b = q;
         }
-        a = torus_at(sh, o, a.s + step, true);
-        if (inside ? a.f >= 0 : a.f <= 0)
+        a = torus_at(sh, o, next, true);
+        if (stop || (inside ? a.f >= 0 : a.f <= 0))
             break; /* at (or just past) the root */
     }
     *p = a;

@@ -48,14 +48,8 @@ typedef struct {
     span_t s[RT_CSG_MAX_SPANS];
 } spans_t;
 
-static inline void spans_push(spans_t *out, bound_t in, bound_t out_b)
-{
-    if (out->n < RT_CSG_MAX_SPANS) { /* the reader bounds n; never drops */
-        out->s[out->n].in = in;
-        out->s[out->n].out = out_b;
-        out->n++;
-    }
-}
+/* Appends a span (out of line: a dozen callers, none hot enough to care). */
+void spans_push(spans_t *out, bound_t in, bound_t out_b);
 
 /* The spans of the ray through shape `id`: all of them, or (tori) those
  * meeting the window of world t [win[0], win[1]], where a span cut by the
