@@ -92,23 +92,24 @@ static void csg_difference(const spans_t *a, const spans_t *b, spans_t *out)
  * costs no stack (the tracer is single-threaded and never re-enters). */
 static spans_t csg_scratch[RT_CSG_MAX_DEPTH + 1][2];
 
-static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, spans_t *out, uint32_t level)
+static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, const real_t win[2], spans_t *out,
+                        uint32_t level)
 {
     if (!(ref & CSG_NODE_BIT) || level >= RT_CSG_MAX_DEPTH) {
         if (!(ref & CSG_NODE_BIT))
-            shape_spans(sc, ref, r, out);
+            shape_spans(sc, ref, r, win, out);
         else
             out->n = 0; /* deeper than the reader allows: cannot happen */
         return;
     }
     const csg_node_t *n = &sc->csg_nodes[ref & ~CSG_NODE_BIT];
     spans_t *a = &csg_scratch[level][0], *b = &csg_scratch[level][1];
-    solid_spans(sc, n->a, r, a, level + 1);
+    solid_spans(sc, n->a, r, win, a, level + 1);
     if (a->n == 0 && n->op != CSG_UNION) {
         out->n = 0; /* nothing to intersect with or subtract from */
         return;
     }
-    solid_spans(sc, n->b, r, b, level + 1);
+    solid_spans(sc, n->b, r, win, b, level + 1);
     switch (n->op) {
     case CSG_UNION: csg_union(a, b, out); break;
     case CSG_INTERSECTION: csg_intersection(a, b, out); break;
@@ -120,7 +121,10 @@ bool ray_hit_object(const scene_t *sc, const object_t *obj, const ray_t *r, real
                     uint16_t *shape, uint8_t *face, bool *flip)
 {
     static spans_t spans;
-    solid_spans(sc, obj->root, r, &spans, 0);
+    /* only boundaries in (tmin, *t) count, and the boolean operations act
+     * point by point: shapes may leave out what lies outside */
+    const real_t win[2] = { tmin, *t };
+    solid_spans(sc, obj->root, r, win, &spans, 0);
     for (uint32_t i = 0; i < spans.n; i++) {
         const bound_t *b = spans.s[i].in.t > tmin ? &spans.s[i].in : &spans.s[i].out;
         if (b->t <= tmin)

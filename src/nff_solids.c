@@ -147,6 +147,7 @@ static bool add_shape(reader_t *r, shape_t *proto, const char *why, const vec3_t
         return false;
     }
     proto->material = r->material;
+    shape_set_world_bound(sc, proto);
     r->st->shapes[sc->n_shapes] = *proto;
     return place_solid(r, (uint16_t)sc->n_shapes++, line);
 }
@@ -437,6 +438,7 @@ bool rd_sphere_solid(reader_t *r)
         return lex_fail(&r->lx, line, why);
     sh.material = r->material;
     scene_t *sc = &r->st->scene;
+    shape_set_world_bound(sc, &sh);
     if (!CHECK_ROOM(r, sc->n_shapes, RT_MAX_SHAPES, "shapes"))
         return false;
     r->st->shapes[sc->n_shapes] = sh;

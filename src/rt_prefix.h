@@ -91,11 +91,13 @@
 #define shape_init_quadric       rt_shape_init_quadric
 #define shape_init_torus         rt_shape_init_torus
 #define shape_normal             rt_shape_normal
+#define shape_set_world_bound    rt_shape_set_world_bound
 #define shape_spans              rt_shape_spans
 #define shape_world_box          rt_shape_world_box
 #define shine_from_decimal       rt_shine_from_decimal
 #define solid_depth              rt_solid_depth
 #define solid_max_spans          rt_solid_max_spans
+#define spans_push               rt_spans_push
 #define sphere_init              rt_sphere_init
 #define sphere_normal            rt_sphere_normal
 #define trace_ray                rt_trace_ray

@@ -45,7 +45,12 @@ typedef struct { FIELDS_xform_t(RT_DECLARE_FIELD) } xform_t;
 
 #define XFORM_NONE 0xFFFFu
 
-enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX };
+/* SHAPE_ELLIPSOID: a quadric with no cross terms and positive squares
+ * that its clip box does not cut (lo, hi: its own box); SHAPE_SPHERE: one
+ * that is a sphere about the object origin and that its transform keeps a
+ * sphere (a rotation and a uniform scale), met in world space: its centre
+ * is the transform's t and `wbound` its radius. */
+enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX, SHAPE_ELLIPSOID, SHAPE_SPHERE };
 
 /* A solid in its own (object) space, placed by an optional transform:
  *   quadric  a x^2 + b y^2 + c z^2 + d xy + e xz + f yz + g x + h y + i z + j <= 0
@@ -53,12 +58,15 @@ enum shape_kind { SHAPE_QUADRIC, SHAPE_TORUS, SHAPE_BOX };
  *   torus    around the z axis: major radius q[0], minor radius q[1]
  *   box      [lo, hi]
  * `bound` is the radius of a sphere about the object-space origin that
- * holds the solid (early rejection, root bracketing). */
+ * holds the solid (early rejection, root bracketing); `wbound` that of a
+ * world-space sphere about the transform's origin t that holds it (tested
+ * before the ray is mapped into object space; unused without a transform). */
 #define FIELDS_shape_t(X) \
     X(real_t, q, [10]) \
     X(vec3_t, lo, ) \
     X(vec3_t, hi, ) \
     X(real_t, bound, ) \
+    X(real_t, wbound, ) \
     X(uint16_t, xform, ) \
     X(uint16_t, material, ) \
     X(uint8_t, kind, ) /* enum shape_kind */

@@ -18,6 +18,9 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
 const char *shape_init_torus(shape_t *s, real_t major, real_t minor);
 const char *shape_init_box(shape_t *s, vec3_t lo, vec3_t hi);
 
+/* Sets s->wbound (scene.h) once the shape's transform is in the table. */
+void shape_set_world_bound(const scene_t *sc, shape_t *s);
+
 /* World-space box holding the shape (all of it, with rounding slack). */
 void shape_world_box(const scene_t *sc, const shape_t *s, vec3_t *min, vec3_t *max);
 
@@ -45,16 +48,12 @@ typedef struct {
     span_t s[RT_CSG_MAX_SPANS];
 } spans_t;
 
-static inline void spans_push(spans_t *out, bound_t in, bound_t out_b)
-{
-    if (out->n < RT_CSG_MAX_SPANS) { /* the reader bounds n; never drops */
-        out->s[out->n].in = in;
-        out->s[out->n].out = out_b;
-        out->n++;
-    }
-}
+/* Appends a span (out of line: a dozen callers, none hot enough to care). */
+void spans_push(spans_t *out, bound_t in, bound_t out_b);
 
-/* The spans of the ray through shape `id`. */
-void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, spans_t *out);
+/* The spans of the ray through shape `id`: all of them, or (tori) those
+ * meeting the window of world t [win[0], win[1]], where a span cut by the
+ * window ends at t = -R_BIG or R_BIG. */
+void shape_spans(const scene_t *sc, uint16_t id, const ray_t *r, const real_t win[2], spans_t *out);
 
 #endif

@@ -53,14 +53,15 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 /* Solids, in object space (shape.c): a box axis whose direction is below
  * this is parallel (its reciprocal would leave the range); a quadric whose
  * sigma^2 coefficient is below this is solved as linear; bounding spheres
- * are padded by this; the torus marches to within RT_TORUS_EPS of its
- * surface in at most RT_TORUS_STEPS distance evaluations (128 missed
- * 0.06% of random rays, those running long and close along the tube;
- * 256 misses none of test_geometry's that the reference hits). */
+ * are padded by this; a torus root is bracketed (shape.c) until the
+ * bracket or the safe step is below RT_TORUS_TOL, in at most
+ * RT_TORUS_STEPS iterations, and spans shorter than 4 RT_TORUS_EPS are
+ * tangent touches (no span). */
 #define RT_OBJ_PARALLEL R_RATIO(1, 1 << 12)
 #define RT_QUADRIC_LINEAR R_RATIO(1, 1 << 14)
 #define RT_BOUND_PAD R_ULPS(16)
 #define RT_TORUS_EPS R_RATIO(1, 8192)
+#define RT_TORUS_TOL R_ULPS(1)
 #define RT_TORUS_STEPS 256
 /* Origin offset of secondary rays leaving a solid, along the geometric
  * normal (a CSG solid may be met again anywhere, so no skipping). A
@@ -91,6 +92,7 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_QUADRIC_LINEAR ((real_t)0x1p-40f)
 #define RT_BOUND_PAD (16 * RT_FLOAT_ULP)
 #define RT_TORUS_EPS ((real_t)0x1p-13f)
+#define RT_TORUS_TOL RT_FLOAT_ULP
 #define RT_TORUS_STEPS 256
 #define RT_SOLID_OFFSET (64 * RT_FLOAT_ULP)
 /* A float plane distance N . O - c rounds each of its three products and
@@ -110,17 +112,18 @@ _Static_assert(!RT_TOLERANCES_FIXED || RT_BACKEND_DOUBLE, "RT_TOLERANCES_FIXED i
 #define RT_OBJ_PARALLEL ((real_t)0x1p-60)
 #define RT_QUADRIC_LINEAR ((real_t)0x1p-40)
 #define RT_BOUND_PAD ((real_t)0x1p-30)
-/* marching stops 2^-24 from the surface (Newton then polishes to full
- * precision); the grazing rays that need more steps get them */
+/* roots bracketed to 2^-44; spans under 4 2^-24 are tangent touches */
 #define RT_TORUS_EPS ((real_t)0x1p-24)
+#define RT_TORUS_TOL ((real_t)0x1p-44)
 #define RT_TORUS_STEPS 4096
 #define RT_SOLID_OFFSET ((real_t)0x1p-30)
 #define RT_PLANE_OFFSET 0
 #endif
 
-/* A torus boundary is found to within RT_TORUS_EPS before Newton polishing,
- * whose steps are limited to 4 RT_TORUS_EPS (shape.c): rays leaving a torus
- * start beyond both. */
+/* A torus boundary is found to within RT_TORUS_TOL (shape.c); rays
+ * leaving a torus keep the wider offset of the sphere-tracing march it
+ * replaced (test_geometry measures the hit points' distance to the exact
+ * surface against half of it). */
 #define RT_TORUS_OFFSET (4 * RT_TORUS_EPS)
 
 /* Farthest hit distance (the end of the fixed range). */

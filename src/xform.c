@@ -5,15 +5,19 @@
  */
 #include "xform.h"
 
-static real_t row_dot(const real_t row[3], vec3_t v)
+/* m v, or m^T v with `transposed` */
+static vec3_t mat_vec(const real_t m[3][3], vec3_t v, bool transposed)
 {
-    return r_from_wide(r_wmul(row[0], v.x) + r_wmul(row[1], v.y) + r_wmul(row[2], v.z));
+    real_t out[3];
+    for (int i = 0; i < 3; i++) {
+        const real_t *e = transposed ? &m[0][i] : m[i];
+        int step = transposed ? 3 : 1;
+        out[i] = r_from_wide(r_wmul(e[0], v.x) + r_wmul(e[step], v.y) + r_wmul(e[2 * step], v.z));
+    }
+    return v3(out[0], out[1], out[2]);
 }
 
-vec3_t xform_mat_vec(const real_t m[3][3], vec3_t v)
-{
-    return v3(row_dot(m[0], v), row_dot(m[1], v), row_dot(m[2], v));
-}
+vec3_t xform_mat_vec(const real_t m[3][3], vec3_t v) { return mat_vec(m, v, false); }
 
 /* out = a * b (out may be a or b) */
 static void mat_mul(real_t out[3][3], const real_t a[3][3], const real_t b[3][3])
@@ -80,9 +84,5 @@ vec3_t xform_point(const xform_t *x, vec3_t p)
 
 vec3_t xform_normal(const xform_t *x, vec3_t n)
 {
-    /* (M^-1)^T n */
-    vec3_t w = v3(r_from_wide(r_wmul(x->im[0][0], n.x) + r_wmul(x->im[1][0], n.y) + r_wmul(x->im[2][0], n.z)),
-                  r_from_wide(r_wmul(x->im[0][1], n.x) + r_wmul(x->im[1][1], n.y) + r_wmul(x->im[2][1], n.z)),
-                  r_from_wide(r_wmul(x->im[0][2], n.x) + r_wmul(x->im[1][2], n.y) + r_wmul(x->im[2][2], n.z)));
-    return v3_unit(w);
+    return v3_unit(mat_vec(x->im, n, true)); /* (M^-1)^T n */
 }
