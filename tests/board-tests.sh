@@ -120,7 +120,7 @@ if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 RUN_OUT="$O
     band=$((0x$(arm-none-eabi-nm -S "$d/fixed.elf" | awk '$4 == "band" { print $2 }')))
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/default.report")
     guard=$(awk '$1 == "stack_guard_intact" { print $2 }' "$OUT/default.report")
-    [ "$code" -le 24576 ] && ok "code $code bytes <= 24 KiB (scene tables excluded)" || bad "code $code bytes > 24 KiB"
+    [ "$code" -le 20480 ] && ok "code $code bytes <= 20 KiB (scene tables excluded)" || bad "code $code bytes > 20 KiB"
     [ $((ram - band)) -le 4096 ] && ok "RAM $((ram - band)) bytes + band $band bytes (<= 4 KiB + band)" ||
         bad "RAM $((ram - band)) bytes (+ band $band) > 4 KiB"
     [ "${hw:-99999}" -le 2048 ] && ok "stack high-water $hw bytes <= 2 KiB" || bad "stack high-water ${hw:-?} bytes > 2 KiB"
