@@ -338,7 +338,10 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
 }
 
 /* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more, rare) */
-RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w)
+/* fx_wsqrt for w >= 2^60: w < 0 gives 0, roots that round to 2^31 or
+ * more saturate, else r (twice the root of w / 4, within 2 of the root)
+ * fixed with e = w - r^2 both ways ((r +- 1/2)^2 = r^2 +- r + 1/4). */
+RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w, uint32_t r)
 {
     if (w < 0)
         return 0;
@@ -346,9 +349,6 @@ RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w)
      * root rounds to 2^31 or more */
     if (w >= ((int64_t)1 << 62) - ((int64_t)1 << 32))
         return w > ((int64_t)1 << 62) - ((int64_t)1 << 31) ? fx_sat64(FX_MAX + (int64_t)1) : FX_MAX;
-    /* twice the root of w / 4 is within 2 of the root: fixed with
-     * e = w - r^2 both ways ((r +- 1/2)^2 = r^2 +- r + 1/4) */
-    uint32_t r = 2 * (uint32_t)fx_wsqrt(w >> 2);
     int64_t e = w - (int64_t)fx_umul64(r, r);
     for (; e > (int64_t)r; r++)
         e -= 2 * (int64_t)r + 1;
@@ -359,9 +359,10 @@ RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w)
 
 fx_t fx_wsqrt(fx_wide_t w)
 {
-    if ((uint64_t)w >> 60)
-        return wsqrt_big(w);
-    return (fx_t)isqrt_round((uint64_t)w);
+    /* one inline copy of isqrt_round serves both ranges */
+    bool big = ((uint64_t)w >> 60) != 0;
+    uint32_t r = isqrt_round((uint64_t)w >> (big ? 2 : 0));
+    return big ? wsqrt_big(w, 2 * r) : (fx_t)r;
 }
 
 fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
