@@ -148,9 +148,10 @@ static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
 /* round(sqrt(v)) for 0 <= v < 2^60. With v = u 2^-2k, u in [2^62, 2^64)
  * and k >= 2: g, under sqrt(u) by less than 2^-20.5 relative, then one
  * Newton step g + (u - g^2) / (2 sqrt(u)) on the exact residual, never
- * above sqrt(u) and less than 1.01 under it. So r = floor(g / 2^k), less
- * than 0.26 under sqrt(v), is the answer or one under it, and the exact
- * v - r (r + 1) tells which: (r + 1/2)^2 = r (r + 1) + 1/4. */
+ * above sqrt(u) and less than 1.01 under it (checked for every x). So
+ * g / 2^k is less than 0.26 under sqrt(v), its floor r is the answer or
+ * one under it, and the exact v - r (r + 1) tells which:
+ * (r + 1/2)^2 = r (r + 1) + 1/4. */
 static inline uint32_t isqrt_round(uint64_t v)
 {
     uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, x, ulo;
