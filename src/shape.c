@@ -399,7 +399,8 @@ static tpt_t torus_at(const shape_t *sh, const oray_t *o, real_t sigma, bool slo
  * (g = 0: the roots 0 and -2 beta). */
 static real_t first_root(real_wide_t g, real_t beta)
 {
-    real_wide_t disc = r_wmul(beta, beta) - g;
+    real_t b = r_abs(beta); /* the same square; cppcheck sees no negative shift in fx_mul64 */
+    real_wide_t disc = r_wmul(b, b) - g;
     if (disc < 0 || (g >= 0 && beta >= 0))
         return -R_ONE;
     real_t h = r_wsqrt(disc);
@@ -418,7 +419,7 @@ static bool torus_cross(const shape_t *sh, const oray_t *o, tpt_t *p, tpt_t end,
     for (int it = 0; it < RT_TORUS_STEPS; it++) {
         bool past = inside ? b.f >= 0 : b.f <= 0; /* a root lies in (a, b] */
         real_t span = b.s - a.s;
-        real_t m = r_max(-R_ONE, r_min(R_ONE, r_div(b.rho - a.rho, span))); /* |rho'| <= 1 */
+        real_t m = r_div(b.rho - a.rho, span); /* |rho'| <= 1: no overflow */
         real_t chord = a.s - r_mul(r0, m), tangent = a.s - r_mul(r0, a.dr);
         real_t step = first_root(a.f, inside ? tangent : chord);
         real_t reach = first_root(a.f, inside ? chord : tangent);
