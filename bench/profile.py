@@ -74,7 +74,7 @@ GROUPS = [
      ["ray_hit_object", "solid_spans", "csg_*", "object_ray", "box_*", "quadric_*", "torus_*", "safe_div",
       "polish", "bnd", "to_world", "shape_spans", "spans_*", "xform_*", "row_dot", "mat_mul"]),
     ("maths", "fixed-point and real operations, vectors, libgcc and soft-float helpers, libm",
-     ["fx_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "normalise_even", "log2_*", "exp2_*", "cos_q30",
+     ["fx_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
       "sin_q30", "v3_*", "r_*", "two_*", "split12", "from_bits", "to_bits", "__*", ".udivsi3*",
       "pow", "powf", "sqrt", "sqrtf", "fabs", "fabsf", "finite", "finitef", "nan", "nanf", "rint", "rintf",
       "scalbn", "scalbnf", "copysign*"]),
