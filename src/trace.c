@@ -51,7 +51,9 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 /* Colour arithmetic, out of line: a few calls per light and bounce, where
  * each inline copy of three rounded products costs ~100 bytes of flash. */
 RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale(c, k); }
+#if RT_USE_SPECULAR
 RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a, b); }
+#endif
 /* a + b k, the sum saturated */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
 
