@@ -16,7 +16,7 @@ instruction counts) and records
   - code (text + vectors + exidx) and static RAM (data + bss) of the ELF.
 It writes bench/boards.md and bench/boards.csv.
 
-  bench/boards_bench.py [--boards a,b] [--scenes a,b] [--cycles-scenes a,b] [--no-cycles]
+  bench/boards_bench.py [--boards a,b] [--scenes a,b] [--cycles-scenes a,b] [--no-cycles] [--update]
 """
 import argparse
 import csv
@@ -113,6 +113,8 @@ def main():
     ap.add_argument("--scenes", default="")
     ap.add_argument("--cycles-scenes", default=",".join(CYCLE_SCENES))
     ap.add_argument("--no-cycles", action="store_true")
+    ap.add_argument("--update", action="store_true",
+                    help="re-measure only the selected rows; keep the others of bench/boards.csv")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
     run(["make", "-s", "build/host/rt"])
@@ -139,6 +141,20 @@ def main():
                 rows.append(row)
                 print("%-12s %-7s %-10s %8d instr/px %8s cycles/px %8s dB  code %6d  ram %7d" % (
                     b, be, s, m["ipp"], row["cpp"], row["psnr"], code, ram), flush=True)
+    if a.update:
+        # the rows measured now replace theirs; the others are kept, in order
+        with open(os.path.join(ROOT, "bench", "boards.csv")) as f:
+            kept = list(csv.DictReader(f))
+        fresh = {(r["board"], r["backend"], r["scene"]): r for r in rows}
+        merged = []
+        for r in kept:
+            k = (r["board"], r["backend"], r["scene"])
+            if k in fresh:
+                merged.append(fresh.pop(k))
+            else:
+                r["ipp"] = int(r["ipp"]) if r.get("ipp") else ""
+                merged.append(r)
+        rows = merged + list(fresh.values())
     # the figures before issue 16's cuts (bench/boards-before.csv: this
     # script's output at commit ed5f6d7), beside each row
     before = {}
