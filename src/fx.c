@@ -34,25 +34,11 @@ static inline int64_t smul64(int64_t a, int64_t b) { return (int64_t)fx_umul64x(
 #define smul64(a, b) ((int64_t)(a) * (b))
 #endif
 
-/* Leading zero bits of a non-zero value (CLZ on the M3). */
-static int clz32(uint32_t v)
-{
-#if defined(__GNUC__)
-    return __builtin_clz(v);
-#else
-    int n = 0;
-    while (!(v & 0x80000000u)) {
-        v <<= 1;
-        n++;
-    }
-    return n;
-#endif
-}
-
+/* Leading zero bits of a non-zero value: fx_clz32 (fx.h), and for 64 bits */
 static int clz64(uint64_t v)
 {
     uint32_t hi = (uint32_t)(v >> 32);
-    return hi ? clz32(hi) : 32 + clz32((uint32_t)v);
+    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
 }
 
 /* n / d (d != 0), truncated like C's: binary long division from n's top
@@ -157,13 +143,13 @@ static inline uint32_t isqrt_round(uint64_t v)
     uint32_t hi = (uint32_t)(v >> 32), lo = (uint32_t)v, x, ulo;
     int s;
     if (hi) {
-        s = clz32(hi) & ~1; /* >= 2 */
+        s = fx_clz32(hi) & ~1; /* >= 2 */
         x = hi << s | lo >> (32 - s);
         ulo = lo << s;
     } else {
         if (lo == 0)
             return 0;
-        s = clz32(lo) & ~1;
+        s = fx_clz32(lo) & ~1;
         x = lo << s;
         ulo = 0;
         s += 32;
@@ -271,7 +257,7 @@ static RT_INLINE fx_t div_round(uint32_t n, uint32_t d, uint32_t sgn)
     /* n 2^F / d = (n' / d') 2^(31 - sh), n' and d' being n and d
      * normalised to [2^31, 2^32); q, its floor from the reciprocal of d',
      * is at most 2^-27.4 under it, so 12 under at most below 2^31. */
-    int tn = clz32(n), td = clz32(d);
+    int tn = fx_clz32(n), td = fx_clz32(d);
     int sh = 31 - FX_FRAC_BITS + tn - td;
     if (sh < 0) { /* n' / d' > 1/2, so the quotient is above 2^31 */
         FX_ON_SATURATE();
@@ -407,7 +393,7 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
      * [2^22, 3 2^24)), which one compare tells on cores without CLZ */
     uint32_t hi = (uint32_t)(len2 >> 32);
 #if defined(__ARM_FEATURE_CLZ)
-    int s = clz32(hi) & ~1;
+    int s = fx_clz32(hi) & ~1;
 #else
     int s = hi >> 24 ? 6 : 8;
 #endif
