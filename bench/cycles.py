@@ -1285,6 +1285,36 @@ def firmware_records(stream):
     return rec
 
 
+def run_firmware(args, parser, records, tool, extra):
+    """Feed the parser from the saved log (--log; the board's output from
+    --stream) or from a QEMU run; the board's report records (records(stream))
+    and QEMU's time go into extra. Returns QEMU's status, a failure already
+    reported on stderr."""
+    if args.log:
+        parse_log_file(args.log, parser)
+        if args.stream and os.path.exists(args.stream):
+            with open(args.stream, "rb") as f:
+                extra["firmware"] = records(f.read())
+        return 0
+    rc, stream, errtext, secs, cmd = run_qemu(args, parser)
+    extra["qemu_seconds"] = secs
+    extra["firmware"] = records(stream)
+    if rc != 0:
+        sys.stderr.write(errtext)
+        sys.stderr.write("%s: QEMU %s: %s\n" % (
+            tool, "killed after %g s (--timeout)" % args.timeout if rc == -9 else "exited with status %d" % rc,
+            " ".join(cmd)))
+    return rc
+
+
+def write_json(path, data, t0):
+    """The figures as JSON, with the tool's run time since t0."""
+    data["tool_seconds"] = time.time() - t0
+    with open(path, "w") as f:
+        json.dump(data, f, indent=1, sort_keys=True)
+        f.write("\n")
+
+
 def fmt_int(n):
     return "{:,}".format(n)
 
@@ -1430,31 +1460,15 @@ def main():
     model = Model(args.core)
     parser = Parser(model, entry, excludes)
     extra = {"t0": t0}
-    if args.log:
-        parse_log_file(args.log, parser)
-        if args.stream and os.path.exists(args.stream):
-            with open(args.stream, "rb") as f:
-                extra["firmware"] = firmware_records(f.read())
-    else:
-        rc, stream, errtext, secs, cmd = run_qemu(args, parser)
-        extra["qemu_seconds"] = secs
-        extra["firmware"] = firmware_records(stream)
-        if rc != 0:
-            sys.stderr.write(errtext)
-            sys.stderr.write("cycles: QEMU %s: %s\n" % (
-                "killed after %g s (--timeout)" % args.timeout if rc == -9 else "exited with status %d" % rc,
-                " ".join(cmd)))
-            if parser.lines == 0:
-                sys.exit(1)
+    rc = run_firmware(args, parser, firmware_records, "cycles", extra)
+    if rc != 0 and parser.lines == 0:
+        sys.exit(1)
     if args.from_symbol and parser.entries == 0:
         sys.stderr.write("cycles: %s was never entered by a call\n" % args.from_symbol)
     text, data = report(args, parser, model, syms, extra)
     print(text)
     if args.json:
-        data["tool_seconds"] = time.time() - t0
-        with open(args.json, "w") as f:
-            json.dump(data, f, indent=1, sort_keys=True)
-            f.write("\n")
+        write_json(args.json, data, t0)
     if not args.log and rc != 0:
         sys.exit(rc if rc > 0 else 1)
 

@@ -47,7 +47,6 @@ Estimated cycles are bench/cycles.py's model (typ), for comparison only.
 import argparse
 import collections
 import fnmatch
-import json
 import os
 import re
 import sys
@@ -403,31 +402,14 @@ def main():
     rk = RayKinds(root, trace, occluded, sinks, marks, names)
     parser = cycles.Parser(model, extents=rk)
     extra = {"t0": t0}
-    rc = 0
-    if args.log:
-        cycles.parse_log_file(args.log, parser)
-        if args.stream and os.path.exists(args.stream):
-            with open(args.stream, "rb") as f:
-                extra["firmware"] = report_records(f.read())
-    else:
-        rc, stream, errtext, secs, cmd = cycles.run_qemu(args, parser)
-        extra["qemu_seconds"] = secs
-        extra["firmware"] = report_records(stream)
-        if rc != 0:
-            sys.stderr.write(errtext)
-            sys.stderr.write("profile: QEMU %s: %s\n" % (
-                "killed after %g s (--timeout)" % args.timeout if rc == -9 else "exited with status %d" % rc,
-                " ".join(cmd)))
-            sys.exit(1)
+    if cycles.run_firmware(args, parser, report_records, "profile", extra) != 0:
+        sys.exit(1)
     if rk.entries[root] == 0:
         sys.exit("profile: rt_render was never entered by a call")
     text, data, failed = profile(args, parser, model, syms, rk, extra)
     print(text)
     if args.json:
-        data["tool_seconds"] = time.time() - t0
-        with open(args.json, "w") as f:
-            json.dump(data, f, indent=1, sort_keys=True)
-            f.write("\n")
+        cycles.write_json(args.json, data, t0)
     if failed and args.check:
         sys.exit(1)
 
