@@ -170,6 +170,7 @@ typedef int32_t real_slab_t;
 static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3])
 {
     uint32_t m[3], m_min = UINT32_MAX;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         m[a] = (skip >> a) & 1u ? 0 : (uint32_t)(d[a] < 0 ? -d[a] : d[a]);
         m_min = m[a] && m[a] < m_min ? m[a] : m_min;
@@ -180,6 +181,7 @@ static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3]
     int s_max = fx_clz32(m_min);
     int k = 61 - 2 * FX_FRAC_BITS - s_max;
     k = k > 32 - FX_FRAC_BITS ? 32 - FX_FRAC_BITS : k;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         int32_t v = 0;
         if (m[a]) {

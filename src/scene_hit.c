@@ -47,6 +47,7 @@ static void slab_init(slab_ray_t *s, const ray_t *r, real_t tmin, real_t tmax)
     s->o[0] = r->origin.x;
     s->o[1] = r->origin.y;
     s->o[2] = r->origin.z;
+#pragma GCC unroll 3
     for (unsigned a = 0; a < 3; a++) {
         s->dir_abs[a] = r_abs(d[a]);
         parallel |= (unsigned)(s->dir_abs[a] < RT_SLAB_PARALLEL) << a;
