@@ -94,6 +94,11 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
     n->min = box.min;
     n->max = box.max;
     n->axis = 0;
+    /* the box test subtracts origins from bounds unsaturated (real.h) */
+    const real_t far = r_from_int((int32_t)1 << RT_FAR_EXTENT_LOG2);
+    if (count && (r_min(box.min.x, r_min(box.min.y, box.min.z)) < -far ||
+                  r_max(box.max.x, r_max(box.max.y, box.max.z)) > far))
+        b->error = "scene geometry reaches beyond the far extent (RT_FAR_EXTENT_LOG2)";
 
     /* best binned split over the three axes */
     int best_axis = -1, best_split = 0;

@@ -192,9 +192,12 @@ static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3]
     }
     return 32 - FX_FRAC_BITS - k;
 }
+/* No saturation: bounds lie within the scene's extent (|bound| < 2^(4+F))
+ * and origins within the far extent (< 2^(9+F), rt_config.h), so the
+ * difference stays below 2^30. */
 static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv)
 {
-    return fx_mul_hi(fx_sub_sat(bound, o), inv);
+    return fx_mul_hi(bound - o, inv);
 }
 static inline real_slab_t r_slab_from_t_down(real_t t, int shift) { return t >> shift; }
 static inline real_slab_t r_slab_from_t_up(real_t t, int shift) { return -((-t) >> shift); }
