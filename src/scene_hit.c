@@ -71,9 +71,9 @@ static RT_INLINE real_t node_bound(const bvh_node_t *n, unsigned off)
 /* One axis: narrows [*lo, *hi] to where the ray is inside the slab;
  * false once the interval is empty. */
 static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsigned a, real_slab_t *lo,
-                                real_slab_t *hi)
+                                real_slab_t *hi, bool any_parallel)
 {
-    if (s->parallel & (1u << a)) {
+    if (any_parallel && (s->parallel & (1u << a))) {
         /* no reciprocal: the ray drifts at most |d| tmax across the slab */
         real_t drift = r_mul(s->dir_abs[a], s->tmax) + RT_SLAB_MARGIN, o = s->o[a];
         return o >= r_add_sat(v3_axis(&n->min, a), -drift) && o <= r_add_sat(v3_axis(&n->max, a), drift);
@@ -89,12 +89,29 @@ static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsign
  * r_slab_from_t_up), or a negative value when it does not (entries are at
  * least tmin > 0). One copy, called from every box test: the loops stay
  * small enough for a 16 KiB firmware. */
-RT_NOINLINE static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
+static RT_INLINE real_slab_t slab_entry_with(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi,
+                                             bool any_parallel)
 {
     real_slab_t lo = s->lo;
-    if (!slab_axis(s, n, 0, &lo, &hi) || !slab_axis(s, n, 1, &lo, &hi) || !slab_axis(s, n, 2, &lo, &hi))
+    if (!slab_axis(s, n, 0, &lo, &hi, any_parallel) || !slab_axis(s, n, 1, &lo, &hi, any_parallel) ||
+        !slab_axis(s, n, 2, &lo, &hi, any_parallel))
         return -1;
     return lo;
+}
+
+/* Rays with a near-parallel axis (rare) take their own copy, so the
+ * others test no axis for it. */
+RT_NOINLINE RT_COLD static real_slab_t slab_entry_parallel(const bvh_node_t *n, const slab_ray_t *s,
+                                                           real_slab_t hi)
+{
+    return slab_entry_with(n, s, hi, true);
+}
+
+RT_NOINLINE static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
+{
+    if (s->parallel)
+        return slab_entry_parallel(n, s, hi);
+    return slab_entry_with(n, s, hi, false);
 }
 
 /* A primitive against the ray; the primitive the ray leaves is skipped
