@@ -61,9 +61,13 @@ extern volatile uint32_t fx_saturations;
 
 static inline fx_t fx_sat64(int64_t v)
 {
-    if (v > FX_MAX) { FX_ON_SATURATE(); return FX_MAX; }
-    if (v < FX_MIN) { FX_ON_SATURATE(); return FX_MIN; }
-    return (fx_t)v;
+    /* in range when the high word is the low word's sign (one compare
+     * with a shifted operand on the M3) and it is not INT32_MIN */
+    int32_t lo = (int32_t)v;
+    if ((int32_t)((uint64_t)v >> 32) == lo >> 31 && lo != INT32_MIN)
+        return lo;
+    FX_ON_SATURATE();
+    return v > 0 ? FX_MAX : FX_MIN;
 }
 
 /* Leading zero bits of a non-zero 32-bit value (CLZ on the M3). */
