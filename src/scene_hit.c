@@ -107,7 +107,7 @@ RT_NOINLINE RT_COLD static real_slab_t slab_entry_parallel(const bvh_node_t *n, 
     return slab_entry_with(n, s, hi, true);
 }
 
-RT_NOINLINE static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
+RT_HOT static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
 {
     if (s->parallel)
         return slab_entry_parallel(n, s, hi);
@@ -116,7 +116,7 @@ RT_NOINLINE static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t 
 
 /* A primitive against the ray; the primitive the ray leaves is skipped
  * unless the ray goes into it (ray.h). */
-static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
+RT_HOT static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
                      rt_stats_t *st, hit_t *h)
 {
     bool self = ref == r->from;
