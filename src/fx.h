@@ -66,18 +66,28 @@ static inline fx_t fx_sat64(int64_t v)
     return (fx_t)v;
 }
 
-/* Leading zero bits of a non-zero 32-bit value (CLZ on the M3). */
+/* Leading zero bits of a non-zero 32-bit value: CLZ on the M3 (and
+ * hosts); on cores without one (ARMv6-M, RISC-V without Zbb), where
+ * __builtin_clz is a libgcc call, a binary search inline (as cheap, and
+ * the caller keeps its registers across it). */
+#ifndef FX_CLZ_BUILTIN
+#if defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__riscv_zbb) || !(defined(__arm__) || defined(__riscv)))
+#define FX_CLZ_BUILTIN 1
+#else
+#define FX_CLZ_BUILTIN 0
+#endif
+#endif
 static inline int fx_clz32(uint32_t v)
 {
-#if defined(__GNUC__)
+#if FX_CLZ_BUILTIN
     return __builtin_clz(v);
 #else
     int n = 0;
-    while (!(v & 0x80000000u)) {
-        v <<= 1;
-        n++;
-    }
-    return n;
+    if (!(v >> 16)) { n = 16; v <<= 16; }
+    if (!(v >> 24)) { n += 8; v <<= 8; }
+    if (!(v >> 28)) { n += 4; v <<= 4; }
+    if (!(v >> 30)) { n += 2; v <<= 2; }
+    return n + (int)(~v >> 31);
 #endif
 }
 
