@@ -169,20 +169,9 @@ static inline uint32_t isqrt_round(uint64_t v)
 #endif
 }
 
-/* Cores without a 32-bit divide instruction (ARMv6-M, where it is a
- * libgcc call of 40 to 130 instructions) seed reciprocals from a table. */
-#ifndef FX_RECIP_TABLE
-#if (defined(__arm__) && !defined(__ARM_FEATURE_IDIV)) || (defined(__riscv) && !defined(__riscv_div))
-#define FX_RECIP_TABLE 1
-#else
-#define FX_RECIP_TABLE 0
-#endif
-#endif
-
 /* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.4
- * relative under it (both checked for every d): an estimate within
- * 2^-13.8, never above, then one Newton step y' = y + y (1 - d y). The estimate is one 32-bit hardware divide (UDIV,
- * 2..12 cycles on the M3) or, without one, a line per 64th of [1, 2)
+ * relative under it (both checked for every d): fx_recip_q63_div (fx.h)
+ * or, without a divide, fx_recip_step from a line per 64th of [1, 2)
  * under the curve, packed as in rsqrt_q31_sqrt (drop per unit of d's
  * bits 24..9). */
 static uint32_t recip_q63(uint32_t d)
@@ -203,16 +192,15 @@ static uint32_t recip_q63(uint32_t d)
     };
     uint32_t c = line[(d >> 25) & 63];
     uint32_t y = c - (c & 0x7FFu) * ((d >> 9) & 0xFFFFu);
+    return fx_recip_step(d, y);
 #else
-    uint32_t y = (0xFFFFFFFFu / ((d >> 16) + 1)) << 15;
+    return fx_recip_q63_div(d);
 #endif
-    /* 2^31 - d y / 2^32 = 2^31 (1 - d y / 2^63), at most 1 over; 2 units
-     * off the step keep it under */
-    uint32_t e = 0x80000000u - (uint32_t)(fx_umul64(d, y) >> 32);
-    return y + ((uint32_t)(fx_umul64(y, e) >> 32) << 1) - 2;
 }
 
+#if FX_RECIP_TABLE
 uint32_t fx_recip_q31(uint32_t x) { return recip_q63(x) >> 1; }
+#endif
 
 /* All ones when v < 0, else 0 */
 static inline uint32_t sign_mask(int32_t v) { return 0u - (uint32_t)(v < 0); }
