@@ -305,7 +305,7 @@ static RT_INLINE uint32_t div_digit15(uint32_t *r, uint32_t x, uint32_t v)
 {
     uint32_t q = *r / (v >> 15);
     int32_t t = (int32_t)((*r << 15 | x) - q * v);
-    uint32_t over = (uint32_t)(t >> 31); /* all ones when one over */
+    uint32_t over = 0u - ((uint32_t)t >> 31); /* all ones when one over */
     *r = (uint32_t)t + (v & over);
     return q + over;
 }
