@@ -125,11 +125,12 @@ build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
 
-# The same with fx.c on the ARMv6-M path (no long multiply, no divide):
-# 16x16 partial products and the reciprocal's seed table.
+# The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
+# CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
+# binary search.
 build/asan/test_fx_soft: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -Isrc -Itests -o $@ \
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Isrc -Itests -o $@ \
 	    tests/test_fx.c src/fx.c -lm
 
 NAME := $(basename $(notdir $(SCENE)))

@@ -44,8 +44,8 @@ static int clz64(uint64_t v)
 /* n / d (d != 0), truncated like C's: binary long division from n's top
  * bit, up to 64 steps. A few dozen bytes where libgcc's 64-bit division
  * is 700 on the M3, for set-up code (camera, sines, tangents); the wide
- * quotients of intersection tests (fx_wdiv, fx_wdiv_fx) keep C's
- * division, which a firmware links only when its scene needs them. */
+ * quotients of intersection tests (fx_wdiv, fx_wdiv_fx) have their own
+ * digit division below. */
 static uint64_t udiv64(uint64_t n, uint64_t d)
 {
     uint64_t q = 0, r = 0;
@@ -63,7 +63,8 @@ static uint64_t udiv64(uint64_t n, uint64_t d)
 static int64_t sdiv64(int64_t n, int64_t d)
 {
     uint64_t q = udiv64(n < 0 ? 0 - (uint64_t)n : (uint64_t)n, d < 0 ? 0 - (uint64_t)d : (uint64_t)d);
-    return (n < 0) != (d < 0) ? -(int64_t)q : (int64_t)q;
+    uint64_t sgn = 0u - (uint64_t)((n < 0) != (d < 0));
+    return (int64_t)((q ^ sgn) - sgn); /* INT64_MIN / -1 wraps, as in C's on these targets */
 }
 
 /* One Newton step y' = y (3 - x y^2) / 2 towards 2^31 / sqrt(x / 2^30),
@@ -168,20 +169,9 @@ static inline uint32_t isqrt_round(uint64_t v)
 #endif
 }
 
-/* Cores without a 32-bit divide instruction (ARMv6-M, where it is a
- * libgcc call of 40 to 130 instructions) seed reciprocals from a table. */
-#ifndef FX_RECIP_TABLE
-#if (defined(__arm__) && !defined(__ARM_FEATURE_IDIV)) || (defined(__riscv) && !defined(__riscv_div))
-#define FX_RECIP_TABLE 1
-#else
-#define FX_RECIP_TABLE 0
-#endif
-#endif
-
 /* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.4
- * relative under it (both checked for every d): an estimate within
- * 2^-13.8, never above, then one Newton step y' = y + y (1 - d y). The estimate is one 32-bit hardware divide (UDIV,
- * 2..12 cycles on the M3) or, without one, a line per 64th of [1, 2)
+ * relative under it (both checked for every d): fx_recip_q63_div (fx.h)
+ * or, without a divide, fx_recip_step from a line per 64th of [1, 2)
  * under the curve, packed as in rsqrt_q31_sqrt (drop per unit of d's
  * bits 24..9). */
 static uint32_t recip_q63(uint32_t d)
@@ -202,16 +192,15 @@ static uint32_t recip_q63(uint32_t d)
     };
     uint32_t c = line[(d >> 25) & 63];
     uint32_t y = c - (c & 0x7FFu) * ((d >> 9) & 0xFFFFu);
+    return fx_recip_step(d, y);
 #else
-    uint32_t y = (0xFFFFFFFFu / ((d >> 16) + 1)) << 15;
+    return fx_recip_q63_div(d);
 #endif
-    /* 2^31 - d y / 2^32 = 2^31 (1 - d y / 2^63), at most 1 over; 2 units
-     * off the step keep it under */
-    uint32_t e = 0x80000000u - (uint32_t)(fx_umul64(d, y) >> 32);
-    return y + ((uint32_t)(fx_umul64(y, e) >> 32) << 1) - 2;
 }
 
+#if FX_RECIP_TABLE
 uint32_t fx_recip_q31(uint32_t x) { return recip_q63(x) >> 1; }
+#endif
 
 /* All ones when v < 0, else 0 */
 static inline uint32_t sign_mask(int32_t v) { return 0u - (uint32_t)(v < 0); }
@@ -222,6 +211,9 @@ static inline uint32_t abs_u32(int32_t a)
     uint32_t m = sign_mask(a);
     return ((uint32_t)a ^ m) - m;
 }
+
+/* |v| as unsigned, for any v (INT64_MIN gives 2^63) */
+static inline uint64_t abs_u64(int64_t v) { return v < 0 ? 0u - (uint64_t)v : (uint64_t)v; }
 
 /* fx_div where a or b is 0: b == 0 saturates by the sign of a */
 RT_COLD RT_NOINLINE static fx_t div_zero(fx_t a, fx_t b)
@@ -296,32 +288,118 @@ fx_t fx_recip(fx_t b)
     return div_round(FX_ONE, d, sign_mask(b));
 }
 
+/* Quotients of 64-bit numerators (fx_wdiv, fx_wdiv_fx), exact and with
+ * C's truncation, from 32-bit divisions: a normalised divisor's top 16
+ * bits give each 15-bit digit of the quotient, the digit or one over,
+ * and the remainder tells which. Where a 32-bit division is an
+ * instruction (UDIV on the M3, divu on RISC-V) a quotient costs a few
+ * dozen instructions, not libgcc's general 64-bit division (over 80 on
+ * the M3 with its call), which the firmware then does not link. */
+#define MASK30 0x3FFFFFFFu
+
+/* One digit of (r 2^15 + x) / v for v in [2^30, 2^31), r < v, x < 2^15,
+ * the remainder left in *r. With vh = v's top 16 bits (>= 2^15), r / vh
+ * is the digit or one over (v's dropped bits, below 2^15, add less than
+ * r / vh 2^15 / v < 1); the remainder is then in [-v, v), an int32. */
+static RT_INLINE uint32_t div_digit15(uint32_t *r, uint32_t x, uint32_t v)
+{
+    uint32_t q = *r / (v >> 15);
+    int32_t t = (int32_t)((*r << 15 | x) - q * v);
+    uint32_t over = 0u - ((uint32_t)t >> 31); /* all ones when one over */
+    *r = (uint32_t)t + (v & over);
+    return q + over;
+}
+
+/* (r 2^30 + x) / v for v in [2^30, 2^31), r < v, x < 2^30: two digits */
+static RT_INLINE uint32_t div_tail30(uint32_t r, uint32_t x, uint32_t v)
+{
+    uint32_t hi = div_digit15(&r, x >> 15, v);
+    return hi << 15 | div_digit15(&r, x & 0x7FFFu, v);
+}
+
+/* The high word of (hi 2^32 + lo) << s, for 0 <= s < 32 */
+static inline uint32_t shl_hi(uint32_t hi, uint32_t lo, int s) { return hi << s | (lo >> 1) >> (31 - s); }
+
+/* (nt 2^30 + x) / d for 0 < d < 2^31, x < 2^30 and a quotient below
+ * 2^62: nt / d by a 32-bit division, then the remainder and x by the
+ * digits, normalised by s (d << s in [2^30, 2^31); (r 2^30 + x) 2^s /
+ * 2^30 < (r + 1) 2^s, below the normalised divisor). */
+static RT_INLINE uint64_t div_62_31(uint32_t nt, uint32_t x, uint32_t d)
+{
+    uint32_t qh = nt / d, r = nt - qh * d;
+    int s = fx_clz32(d) - 1;
+    return (uint64_t)qh << 30 | div_tail30(r << s | x >> (30 - s), (x << s) & MASK30, d << s);
+}
+
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
 {
-    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
-    while (a >= lim || a <= -lim) {
-        a /= 2;
-        b /= 2;
+    /* a / b = (a 2^F + b/2) / b rounded half away from zero, on the
+     * magnitudes, with |a| first below 2^(62-F): halving a and b with C's
+     * truncation until it is, as this always did, is shifting the
+     * magnitudes right by the excess bits at once. */
+    const int lim_bits = 62 - FX_FRAC_BITS;
+    uint64_t n = abs_u64(a), d = abs_u64(b);
+    if (n >> lim_bits) {
+        int k = 64 - lim_bits - clz64(n);
+        n >>= k;
+        d >>= k;
     }
-    if (b == 0) {
+    if (d == 0) {
         FX_ON_SATURATE();
         return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
     }
-    int64_t n = a * FX_ONE;
-    int64_t h = (b < 0 ? -b : b) / 2;
-    return fx_sat64((n >= 0 ? n + h : n - h) / b);
+    n = (n << FX_FRAC_BITS) + (d >> 1); /* < 2^63 */
+    uint32_t q;
+    if (d >> 31) {
+        /* v = d >> t, d's top 31 bits: the quotient of n / 2 by v (below
+         * 2^32), shifted right by t - 1, is n / (v 2^t), the quotient or
+         * up to 3 over (v 2^t is under d by less than 2^t, which adds
+         * less than (n / d) / v < 2^32 / 2^30 units); the remainder,
+         * above -2^63, tells. */
+        uint32_t dhi = (uint32_t)(d >> 32), nt = (uint32_t)(n >> 31), v = (uint32_t)d >> 1;
+        int sh = 0; /* t - 1 */
+        if (dhi) {
+            int s = fx_clz32(dhi);
+            v = shl_hi(dhi, (uint32_t)d, s) >> 1;
+            sh = 32 - s;
+        }
+        uint32_t qh = nt / v; /* below 4 */
+        q = (uint32_t)((uint64_t)(qh << 30 | div_tail30(nt - qh * v, (uint32_t)n >> 1 & MASK30, v)) >> sh);
+        for (int64_t rem = (int64_t)(n - fx_umul64x(q, d)); rem < 0; rem += (int64_t)d)
+            q--;
+    } else {
+        q = (n >> 31) >= d ? 0x80000000u : (uint32_t)div_62_31((uint32_t)(n >> 30), (uint32_t)n & MASK30, (uint32_t)d);
+    }
+    if (q >> 31) { /* 2^31 or more */
+        FX_ON_SATURATE();
+        q = (uint32_t)FX_MAX;
+    }
+    uint32_t sgn = 0u - (uint32_t)((a < 0) != (b < 0));
+    return (fx_t)((q ^ sgn) - sgn);
 }
 
-fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
+/* fx_wdiv_fx where a is 0 or -2^31 or |w| >= 2^(62-F): C's division */
+RT_COLD RT_NOINLINE static fx_wide_t wdiv_fx_rare(fx_wide_t w, fx_t a)
 {
-    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
     if (a == 0) {
         FX_ON_SATURATE();
         return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
     }
-    if (w < lim && w > -lim)
-        return (w * FX_ONE) / a;
-    return (w / a) * FX_ONE;
+    if (abs_u64(w) >> (62 - FX_FRAC_BITS) == 0)
+        return sdiv64(w * FX_ONE, a);
+    return (fx_wide_t)((uint64_t)sdiv64(w, a) << FX_FRAC_BITS); /* wraps, as C's product here did */
+}
+
+/* w 2^F / a, truncated, while |w| < 2^(62-F) (else (w / a) 2^F) */
+fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
+{
+    uint64_t m = abs_u64(w);
+    uint32_t d = abs_u32(a);
+    if (m >> (62 - FX_FRAC_BITS) || d - 1 >= 0x7FFFFFFFu)
+        return wdiv_fx_rare(w, a);
+    uint64_t q = div_62_31((uint32_t)(m >> (30 - FX_FRAC_BITS)), (uint32_t)m << FX_FRAC_BITS & MASK30, d);
+    uint64_t sgn = 0u - (uint64_t)((w < 0) != (a < 0));
+    return (fx_wide_t)((q ^ sgn) - sgn);
 }
 
 /* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more, rare) */
@@ -355,9 +433,6 @@ fx_t fx_wsqrt(fx_wide_t w)
 fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
 
 fx_t fx_sqrt(fx_t a) { return a <= 0 ? 0 : fx_wsqrt((fx_wide_t)a << FX_FRAC_BITS); }
-
-/* |v| as unsigned (v > INT64_MIN) */
-static inline uint64_t abs_u64(int64_t v) { return v < 0 ? 0u - (uint64_t)v : (uint64_t)v; }
 
 /* v >> n (arithmetic) for 0 < n < 64, where the result fits 32 bits. */
 static inline int32_t shr_to32(int64_t v, int n)

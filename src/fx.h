@@ -70,18 +70,28 @@ static inline fx_t fx_sat64(int64_t v)
     return v > 0 ? FX_MAX : FX_MIN;
 }
 
-/* Leading zero bits of a non-zero 32-bit value (CLZ on the M3). */
+/* Leading zero bits of a non-zero 32-bit value: CLZ on the M3 (and
+ * hosts); on cores without one (ARMv6-M, RISC-V without Zbb), where
+ * __builtin_clz is a libgcc call, a binary search inline (as cheap, and
+ * the caller keeps its registers across it). */
+#ifndef FX_CLZ_BUILTIN
+#if defined(__GNUC__) && (defined(__ARM_FEATURE_CLZ) || defined(__riscv_zbb) || !(defined(__arm__) || defined(__riscv)))
+#define FX_CLZ_BUILTIN 1
+#else
+#define FX_CLZ_BUILTIN 0
+#endif
+#endif
 static inline int fx_clz32(uint32_t v)
 {
-#if defined(__GNUC__)
+#if FX_CLZ_BUILTIN
     return __builtin_clz(v);
 #else
     int n = 0;
-    while (!(v & 0x80000000u)) {
-        v <<= 1;
-        n++;
-    }
-    return n;
+    if (!(v >> 16)) { n = 16; v <<= 16; }
+    if (!(v >> 24)) { n += 8; v <<= 8; }
+    if (!(v >> 28)) { n += 4; v <<= 4; }
+    if (!(v >> 30)) { n += 2; v <<= 2; }
+    return n + (int)(~v >> 31);
 #endif
 }
 
@@ -307,10 +317,38 @@ static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
 fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
 fx_t fx_recip(fx_t b);                /* 1 / b */
+
+/* Cores without a 32-bit divide instruction (ARMv6-M, where it is a
+ * libgcc call of 40 to 130 instructions) seed reciprocals from a table. */
+#ifndef FX_RECIP_TABLE
+#if (defined(__arm__) && !defined(__ARM_FEATURE_IDIV)) || (defined(__riscv) && !defined(__riscv_div))
+#define FX_RECIP_TABLE 1
+#else
+#define FX_RECIP_TABLE 0
+#endif
+#endif
+
+/* Towards 2^63 / d for d in [2^31, 2^32) from y under it by less than
+ * 2^-13.8: one Newton step y + y (1 - d y), where 2^31 - d y / 2^32 =
+ * 2^31 (1 - d y / 2^63) is at most 1 over; 2 units off keep it under. */
+static inline uint32_t fx_recip_step(uint32_t d, uint32_t y)
+{
+    uint32_t e = 0x80000000u - (uint32_t)(fx_umul64(d, y) >> 32);
+    return y + ((uint32_t)(fx_umul64(y, e) >> 32) << 1) - 2;
+}
+
+/* 2^63 / d from a 32-bit divide (UDIV, 2..12 cycles on the M3) */
+static inline uint32_t fx_recip_q63_div(uint32_t d) { return fx_recip_step(d, (0xFFFFFFFFu / ((d >> 16) + 1)) << 15); }
+
 /* 2^62 / x for x in [2^31, 2^32), never above it and less than 2^-27
  * relative under: the reciprocal before rounding, for callers that scale
- * it themselves. */
+ * it themselves (the BVH's slabs, three a ray: inline where it is a
+ * divide). */
+#if FX_RECIP_TABLE
 uint32_t fx_recip_q31(uint32_t x);
+#else
+static inline uint32_t fx_recip_q31(uint32_t x) { return fx_recip_q63_div(x) >> 1; }
+#endif
 
 /* a - b, saturated to 32 bits. */
 static inline int32_t fx_sub_sat(fx_t a, fx_t b)

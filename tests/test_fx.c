@@ -197,6 +197,100 @@ static void test_div_exact(void)
           n + 2);
 }
 
+/* fx_wdiv and fx_wdiv_fx as they were first written, with C's 64-bit
+ * division (the tracer's images are made with these bits): a / b
+ * rounded half away from zero after halving both while |a| >= 2^(62-F);
+ * w 2^F / a truncated, (w / a) 2^F for larger |w|. */
+static fx_t ref_wdiv(fx_wide_t a, fx_wide_t b)
+{
+    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
+    while (a >= lim || a <= -lim) {
+        a /= 2;
+        b /= 2;
+    }
+    if (b == 0)
+        return a > 0 ? FX_MAX : a < 0 ? FX_MIN : 0;
+    int64_t n = a * FX_ONE, h = (int64_t)((b < 0 ? 0 - (uint64_t)b : (uint64_t)b) / 2);
+    int64_t q = (n >= 0 ? n + h : n - h) / b;
+    return q > FX_MAX ? FX_MAX : q < FX_MIN ? FX_MIN : (fx_t)q;
+}
+
+static fx_wide_t ref_wdiv_fx(fx_wide_t w, fx_t a) /* not INT64_MIN / -1 */
+{
+    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
+    if (a == 0)
+        return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
+    if (w < lim && w > -lim)
+        return w * FX_ONE / a;
+    return (fx_wide_t)((uint64_t)(w / a) << FX_FRAC_BITS);
+}
+
+static void test_wdiv_exact(void)
+{
+    /* +-(2^k - 1, 2^k, 2^k + 1), 0, the ends and fx_wdiv's 2^(62-F) */
+    int64_t e[3 * 2 * 63 + 7];
+    int ne = 0;
+    for (int k = 0; k < 63; k++)
+        for (int64_t f = -1; f <= 1; f++) {
+            e[ne++] = ((int64_t)1 << k) + f;
+            e[ne++] = -(((int64_t)1 << k) + f);
+        }
+    const int64_t lim = (int64_t)1 << (62 - FX_FRAC_BITS);
+    int64_t ends[] = { 0, INT64_MAX, INT64_MIN, INT64_MIN + 1, lim - 1, lim, -lim };
+    for (int i = 0; i < 7; i++)
+        e[ne++] = ends[i];
+    long bad = 0, bad_fx = 0, n = 0, n_fx = 0;
+    for (int i = 0; i < ne; i++) {
+        for (int j = 0; j < ne; j++, n++)
+            bad += fx_wdiv(e[i], e[j]) != ref_wdiv(e[i], e[j]);
+        for (int j = 0; j < N_DIV_EDGES; j++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                fx_t a = div_edges[j] == INT32_MIN ? (sgn < 0 ? 0 : INT32_MIN) : sgn * div_edges[j];
+                if (e[i] == INT64_MIN && a == -1)
+                    continue;
+                bad_fx += fx_wdiv_fx(e[i], a) != ref_wdiv_fx(e[i], a);
+                n_fx++;
+            }
+    }
+    /* random operands of random lengths, and quotients of random lengths
+     * up to past 2^31 (saturation) around whole values: a ~ q b 2^-F */
+    for (long i = 0; i < 3000000; i++) {
+        int64_t a = rnd_bits(63, true), b = rnd_bits(63, true), w = rnd_bits(63, true);
+        fx_t f = (fx_t)rnd_bits(31, true);
+        bad += fx_wdiv(a, b) != ref_wdiv(a, b);
+        bad_fx += fx_wdiv_fx(w, f) != ref_wdiv_fx(w, f);
+        uint64_t q = (uint64_t)rnd_bits(32, false), bm = (uint64_t)(b < 0 ? -b : b) >> (tl_rand() & 31);
+        if (bm != 0 && q <= UINT64_MAX / bm) {
+            a = (int64_t)((q * bm >> FX_FRAC_BITS) & ((uint64_t)INT64_MAX >> 2)) + (int64_t)(tl_rand() % 5) - 2;
+            bad += fx_wdiv(a, b) != ref_wdiv(a, b);
+            n++;
+        }
+        /* w ~ q a 2^-F with |w| < 2^(62-F) */
+        uint64_t am = (uint64_t)(f < 0 ? -(int64_t)f : f);
+        w = (int64_t)((q * am >> FX_FRAC_BITS) & (uint64_t)(lim - 1)) * (w < 0 ? -1 : 1);
+        bad_fx += fx_wdiv_fx(w, f) != ref_wdiv_fx(w, f);
+        n++;
+        n_fx += 2;
+    }
+    CHECK(bad == 0, "fx_wdiv: %ld of %ld edge, random and near-whole-quotient pairs differ from C's 64-bit division",
+          bad, n);
+    CHECK(bad_fx == 0, "fx_wdiv_fx: %ld of %ld edge, random and near-whole-quotient pairs differ from C's 64-bit "
+          "division", bad_fx, n_fx);
+}
+
+/* fx_clz32 (the binary search where the core has no CLZ) against a loop */
+static void test_clz(void)
+{
+    long bad = 0, n = 0;
+    for (int k = 0; k < 32; k++)
+        for (int i = 0; i < 1000; i++, n++) {
+            uint32_t v = (uint32_t)1 << k | (uint32_t)(tl_rand() >> 32 >> (32 - k));
+            bad += fx_clz32(v) != 31 - k;
+        }
+    CHECK(bad == 0, "fx_clz32 (%s): %ld of %ld values of every length differ", FX_CLZ_BUILTIN ? "builtin" : "search",
+          bad, n);
+}
+
 static void test_sqrt_exact(void)
 {
     long bad = 0, n = 0;
@@ -505,6 +599,8 @@ int main(void)
     printf("test_fx (Q%d.%d)\n", 31 - FX_FRAC_BITS, FX_FRAC_BITS);
     test_mul_div();
     test_div_exact();
+    test_wdiv_exact();
+    test_clz();
     test_sqrt();
     test_sqrt_exact();
     test_unit3();
