@@ -54,6 +54,22 @@ static bool quotient_below(real_t num, real_t den, real_t limit, real_t *q)
     return true;
 }
 
+static real_wide_t ulps(real_t x) { return r_wmul(r_abs(x), R_ULPS(1)); }
+
+/* For a > 0, how far below 0 the discriminant b^2 - a cc of the rounded
+ * a, b, cc must lie for the vertex route to find h2 < 0 too, so a miss
+ * is known without its two divisions. With exact A, B, C, for any t
+ * f(t) >= -(B^2 - A C) / A; the rounding of a, b, cc moves the
+ * discriminant by at most (|b| + |a|/2 + |cc|/2) ulps, that of q and rad
+ * moves f(tv) by at most sqrt(3) |q| + |rad| ulps, where |tv| <= 64,
+ * |dp| <= 1, and |kdv| < |dp| as a > 0. In ulps of the wide products;
+ * summed wide, as |op| reaches 1000 from a far camera. */
+static real_wide_t vertex_slack(vec3_t op, real_t rr, real_t b, real_t cc)
+{
+    return ulps(b) + ulps(cc) + 2 * (ulps(op.x) + ulps(op.y) + ulps(op.z) + ulps(rr)) +
+           ulps(R_RATIO(256, 1));
+}
+
 /* With the ray in cone coordinates (height h along the axis, radial part
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
@@ -74,11 +90,18 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     real_t dv = v3_dot(r->dir, c->axis);
     vec3_t op = v3_madd(ob, -ov, c->axis);
     vec3_t dp = v3_madd(r->dir, -dv, c->axis);
-    real_t rr = r_add_sat(c->r0, r_mul(c->slope, ov)); /* radius at the origin's height */
-    real_t kdv = r_mul(c->slope, dv);
+    real_t rr = c->r0, kdv = 0; /* radius at the origin's height, its change along the ray */
+    if (c->slope != 0) { /* a cylinder skips two products that give r0 and 0 */
+        rr = r_add_sat(c->r0, r_mul(c->slope, ov));
+        kdv = r_mul(c->slope, dv);
+    }
 
     real_t a = r_from_wide(v3_wdot(dp, dp) - r_wmul(kdv, kdv));
     real_t b = r_from_wide(v3_wdot(op, dp) - r_wmul(rr, kdv));
+    real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
+    real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
+    if (a > 0 && disc < 0 && disc < -vertex_slack(op, rr, b, cc))
+        return false; /* misses, as either route below would find */
     real_t roots[2];
     int n = 0;
     real_t tv = 0;
@@ -111,8 +134,6 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     } else {
         /* Nearly parallel to a surface line: the cancellation-safe pair
          * q / a and c / q of a t^2 + 2 b t + c. */
-        real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
-        real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
         if (disc < 0)
             return false;
         real_t h = r_wsqrt(disc);
