@@ -24,6 +24,9 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
     /* slack so rounding cannot cut the cone */
     c->bound_radius = r_wsqrt(r_wmul(half, half) + r_wmul(rmax, rmax)) + RT_BOX_SLACK;
     c->bound_radius2 = r_wmul(c->bound_radius, c->bound_radius);
+    /* a cylinder's (r0 + (1 + r0) / 1024)^2, rounded up; 0: no such test */
+    real_t miss = c->r0 + r_mul(c->r0 + R_ONE, R_RATIO(1, 1024));
+    c->miss_radius2 = c->slope == 0 && miss < R_RATIO(32, 1) ? r_mul(miss, miss) + R_ULPS(1) : 0;
     return 0;
 }
 
@@ -70,6 +73,27 @@ static real_wide_t vertex_slack(vec3_t op, real_t rr, real_t b, real_t cc)
            ulps(R_RATIO(256, 1));
 }
 
+/* Whether a ray that passed the bounding sphere (l from its origin to the
+ * centre, v along it) misses a cylinder (slope 0) by more than (1 + r0) /
+ * 1024 (miss_radius2), as ray_hit_cone would find: from the distance
+ * between the ray line and the axis line, |l . m| / |m| with m = dir x axis, before the
+ * projections the quadratic needs. When |m|^2 >= 1/8 and |v| <= 60 - 3
+ * bound_radius, ray_hit_cone takes the vertex route (a >= 1/8, |tv| <=
+ * 64), whose q lies within 58 ulps of the ray's true offset from the
+ * axis, so h2 >= 0 needs that distance below r0 + 58 ulps; here the
+ * rounding of m and of l . m (|l| <= 61) costs at most 2.83 (55 + 0.87
+ * r0) ulps more: the margin covers both. */
+RT_NOINLINE static bool cylinder_missed(const cone_t *c, const ray_t *r, vec3_t l, real_t v)
+{
+    vec3_t m = v3_cross(r->dir, c->axis);
+    real_wide_t mm = v3_wdot(m, m);
+    if (mm < r_to_wide(R_RATIO(1, 8)) || r_abs(v) > R_RATIO(60, 1) - 3 * c->bound_radius)
+        return false;
+    real_t s = v3_dot(l, m);
+    /* both factors rounded up */
+    return r_wmul(s, s) > r_wmul(c->miss_radius2, r_from_wide(mm) + R_ULPS(1));
+}
+
 /* With the ray in cone coordinates (height h along the axis, radial part
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
@@ -82,7 +106,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     if (v - c->bound_radius >= *t || v + c->bound_radius <= tmin)
         return false;
     vec3_t perp = v3_madd(l, -v, r->dir);
-    if (v3_wdot(perp, perp) > c->bound_radius2)
+    if (v3_wdot(perp, perp) > c->bound_radius2 || (c->miss_radius2 > 0 && cylinder_missed(c, r, l, v)))
         return false;
 
     vec3_t ob = v3_sub(r->origin, c->base);
