@@ -76,20 +76,23 @@ static real_wide_t vertex_slack(vec3_t op, real_t rr, real_t b, real_t cc)
 /* Whether a ray that passed the bounding sphere (l from its origin to the
  * centre, v along it) misses a cylinder (slope 0) by more than (1 + r0) /
  * 1024 (miss_radius2), as ray_hit_cone would find: from the distance
- * between the ray line and the axis line, |l . m| / |m| with m = dir x axis, before the
- * projections the quadratic needs. When |m|^2 >= 1/8 and |v| <= 60 - 3
- * bound_radius, ray_hit_cone takes the vertex route (a >= 1/8, |tv| <=
- * 64), whose q lies within 58 ulps of the ray's true offset from the
- * axis, so h2 >= 0 needs that distance below r0 + 58 ulps; here the
- * rounding of m and of l . m (|l| <= 61) costs at most 2.83 (55 + 0.87
- * r0) ulps more: the margin covers both. */
-RT_NOINLINE static bool cylinder_missed(const cone_t *c, const ray_t *r, vec3_t l, real_t v)
+ * between the ray line and the axis line, |l . m| / |m| with m = dir x
+ * axis, before the projections the quadratic needs. When |m|^2 >= 1/8
+ * and |v| <= 60 - 3 bound_radius, ray_hit_cone takes the vertex route
+ * (a >= 1/8, |tv| <= 64), whose q lies within 58 ulps of the ray's true
+ * offset from the axis, so h2 >= 0 needs that distance below r0 + 58
+ * ulps; here the rounding of m and of l . m (|l| <= 61) costs at most
+ * 2.83 (55 + 0.87 r0) ulps more: the margin covers both. Out of line:
+ * inlined, GCC turns the products after it into 64x64 multiplies. */
+RT_NOINLINE static bool cylinder_missed(const cone_t *c, const ray_t *r, const vec3_t *l, real_t v)
 {
+    if (r_abs(v) > R_RATIO(60, 1) - 3 * c->bound_radius)
+        return false;
     vec3_t m = v3_cross(r->dir, c->axis);
     real_wide_t mm = v3_wdot(m, m);
-    if (mm < r_to_wide(R_RATIO(1, 8)) || r_abs(v) > R_RATIO(60, 1) - 3 * c->bound_radius)
+    if (mm < r_to_wide(R_RATIO(1, 8)))
         return false;
-    real_t s = v3_dot(l, m);
+    real_t s = v3_dot(*l, m);
     /* both factors rounded up */
     return r_wmul(s, s) > r_wmul(c->miss_radius2, r_from_wide(mm) + R_ULPS(1));
 }
@@ -106,7 +109,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     if (v - c->bound_radius >= *t || v + c->bound_radius <= tmin)
         return false;
     vec3_t perp = v3_madd(l, -v, r->dir);
-    if (v3_wdot(perp, perp) > c->bound_radius2 || (c->miss_radius2 > 0 && cylinder_missed(c, r, l, v)))
+    if (v3_wdot(perp, perp) > c->bound_radius2 || (c->miss_radius2 > 0 && cylinder_missed(c, r, &l, v)))
         return false;
 
     vec3_t ob = v3_sub(r->origin, c->base);
