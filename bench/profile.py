@@ -64,7 +64,7 @@ GROUPS = [
     ("polygon", "ray-polygon and patch intersection, inside tests",
      ["ray_hit_polygon", "even_odd_axis", "inside_*", "edge_fn", "edge_side", "fan_triangle", "project_axis",
       "vertex_before", "is_zero"]),
-    ("cone", "ray-cone/cylinder intersection", ["ray_hit_cone", "quotient_below", "refine_root"]),
+    ("cone", "ray-cone/cylinder intersection", ["ray_hit_cone", "cylinder_missed", "quotient_below", "refine_root"]),
     ("shading", "the tracer, hit surface and normals, lights, secondary rays",
      ["trace_ray", "colour_*", "find_surface", "surface_at", "direct_light", "reflected", "refracted", "leave", "snell",
       "worth_tracing", "prim_surface", "object_prim_surface", "sphere_normal", "cone_normal",

@@ -24,6 +24,9 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
     /* slack so rounding cannot cut the cone */
     c->bound_radius = r_wsqrt(r_wmul(half, half) + r_wmul(rmax, rmax)) + RT_BOX_SLACK;
     c->bound_radius2 = r_wmul(c->bound_radius, c->bound_radius);
+    /* a cylinder's (r0 + (1 + r0) / 1024)^2, rounded up; 0: no such test */
+    real_t miss = c->r0 + r_mul(c->r0 + R_ONE, R_RATIO(1, 1024));
+    c->miss_radius2 = c->slope == 0 && miss < R_RATIO(32, 1) ? r_mul(miss, miss) + R_ULPS(1) : 0;
     return 0;
 }
 
@@ -54,6 +57,46 @@ static bool quotient_below(real_t num, real_t den, real_t limit, real_t *q)
     return true;
 }
 
+static real_wide_t ulps(real_t x) { return r_wmul(r_abs(x), R_ULPS(1)); }
+
+/* For a > 0, how far below 0 the discriminant b^2 - a cc of the rounded
+ * a, b, cc must lie for the vertex route to find h2 < 0 too, so a miss
+ * is known without its two divisions. With exact A, B, C, for any t
+ * f(t) >= -(B^2 - A C) / A; the rounding of a, b, cc moves the
+ * discriminant by at most (|b| + |a|/2 + |cc|/2) ulps, that of q and rad
+ * moves f(tv) by at most sqrt(3) |q| + |rad| ulps, where |tv| <= 64,
+ * |dp| <= 1, and |kdv| < |dp| as a > 0. In ulps of the wide products;
+ * summed wide, as |op| reaches 1000 from a far camera. */
+static real_wide_t vertex_slack(vec3_t op, real_t rr, real_t b, real_t cc)
+{
+    return ulps(b) + ulps(cc) + 2 * (ulps(op.x) + ulps(op.y) + ulps(op.z) + ulps(rr)) +
+           ulps(R_RATIO(256, 1));
+}
+
+/* Whether a ray that passed the bounding sphere (l from its origin to the
+ * centre, v along it) misses a cylinder (slope 0) by more than (1 + r0) /
+ * 1024 (miss_radius2), as ray_hit_cone would find: from the distance
+ * between the ray line and the axis line, |l . m| / |m| with m = dir x
+ * axis, before the projections the quadratic needs. When |m|^2 >= 1/8
+ * and |v| <= 60 - 3 bound_radius, ray_hit_cone takes the vertex route
+ * (a >= 1/8, |tv| <= 64), whose q lies within 58 ulps of the ray's true
+ * offset from the axis, so h2 >= 0 needs that distance below r0 + 58
+ * ulps; here the rounding of m and of l . m (|l| <= 61) costs at most
+ * 2.83 (55 + 0.87 r0) ulps more: the margin covers both. Out of line:
+ * inlined, GCC turns the products after it into 64x64 multiplies. */
+RT_NOINLINE static bool cylinder_missed(const cone_t *c, const ray_t *r, const vec3_t *l, real_t v)
+{
+    if (r_abs(v) > R_RATIO(60, 1) - 3 * c->bound_radius)
+        return false;
+    vec3_t m = v3_cross(r->dir, c->axis);
+    real_wide_t mm = v3_wdot(m, m);
+    if (mm < r_to_wide(R_RATIO(1, 8)))
+        return false;
+    real_t s = v3_dot(*l, m);
+    /* both factors rounded up */
+    return r_wmul(s, s) > r_wmul(c->miss_radius2, r_from_wide(mm) + R_ULPS(1));
+}
+
 /* With the ray in cone coordinates (height h along the axis, radial part
  * perpendicular to it), a point is on the surface when
  *   |radial|^2 = (r0 + slope * h)^2,
@@ -66,7 +109,7 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     if (v - c->bound_radius >= *t || v + c->bound_radius <= tmin)
         return false;
     vec3_t perp = v3_madd(l, -v, r->dir);
-    if (v3_wdot(perp, perp) > c->bound_radius2)
+    if (v3_wdot(perp, perp) > c->bound_radius2 || (c->miss_radius2 > 0 && cylinder_missed(c, r, &l, v)))
         return false;
 
     vec3_t ob = v3_sub(r->origin, c->base);
@@ -74,11 +117,18 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     real_t dv = v3_dot(r->dir, c->axis);
     vec3_t op = v3_madd(ob, -ov, c->axis);
     vec3_t dp = v3_madd(r->dir, -dv, c->axis);
-    real_t rr = r_add_sat(c->r0, r_mul(c->slope, ov)); /* radius at the origin's height */
-    real_t kdv = r_mul(c->slope, dv);
+    real_t rr = c->r0, kdv = 0; /* radius at the origin's height, its change along the ray */
+    if (c->slope != 0) { /* a cylinder skips two products that give r0 and 0 */
+        rr = r_add_sat(c->r0, r_mul(c->slope, ov));
+        kdv = r_mul(c->slope, dv);
+    }
 
     real_t a = r_from_wide(v3_wdot(dp, dp) - r_wmul(kdv, kdv));
     real_t b = r_from_wide(v3_wdot(op, dp) - r_wmul(rr, kdv));
+    real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
+    real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
+    if (a > 0 && disc < 0 && disc < -vertex_slack(op, rr, b, cc))
+        return false; /* misses, as either route below would find */
     real_t roots[2];
     int n = 0;
     real_t tv = 0;
@@ -111,8 +161,6 @@ bool ray_hit_cone(const cone_t *c, const ray_t *r, real_t tmin, real_t *t, bool 
     } else {
         /* Nearly parallel to a surface line: the cancellation-safe pair
          * q / a and c / q of a t^2 + 2 b t + c. */
-        real_t cc = r_from_wide(v3_wdot(op, op) - r_wmul(rr, rr));
-        real_wide_t disc = r_wmul(b, b) - r_wmul(a, cc);
         if (disc < 0)
             return false;
         real_t h = r_wsqrt(disc);

@@ -15,6 +15,7 @@
     X(vec3_t, bound_centre, ) /* bounding sphere, for early rejection */ \
     X(real_t, bound_radius, ) \
     X(real_wide_t, bound_radius2, ) \
+    X(real_t, miss_radius2, ) /* cylinder_missed (cone.c) */ \
     X(uint16_t, material, )
 typedef struct { FIELDS_cone_t(RT_DECLARE_FIELD) } cone_t;
 
