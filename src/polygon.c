@@ -251,18 +251,29 @@ static uint32_t fan_triangle(const scene_t *sc, const polygon_t *p, pt2_t q)
 
 #endif
 
+/* N . D, and c - N . O for the plane N . x = c, rounded as v3_dot does.
+ * The fixed build leaves out the saturation that |N . D| <= 6 never
+ * reaches, tests N . O's (a camera some 1000 units away) once instead of
+ * twice, and keeps both 32-bit (narrow). */
+static inline void plane_dist(const polygon_t *p, const ray_t *r, real_t *denom, real_t *num)
+{
+#if RT_BACKEND_FIXED
+    *denom = narrow((real_t)fx_round_shift(v3_wdot(p->normal, r->dir), FX_FRAC_BITS));
+    int64_t w = fx_round_shift(v3_wdot(p->normal, r->origin), FX_FRAC_BITS);
+    *num = narrow(p->offset - (w == (int32_t)w ? (int32_t)w : fx_sat64(w)));
+#else
+    *denom = v3_dot(p->normal, r->dir);
+    *num = p->offset - v3_dot(p->normal, r->origin);
+#endif
+}
+
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
                      real_t *t)
 {
-#if RT_BACKEND_FIXED
-    /* rounded as v3_dot, without its saturation: |N . D| <= 6 */
-    real_t denom = narrow((real_t)fx_round_shift(v3_wdot(p->normal, r->dir), FX_FRAC_BITS));
-#else
-    real_t denom = v3_dot(p->normal, r->dir);
-#endif
+    real_t denom, num;
+    plane_dist(p, r, &denom, &num);
     if (denom == 0)
         return false;
-    real_t num = narrow(p->offset - v3_dot(p->normal, r->origin));
     /* tmin < num / denom < *t, tested without dividing */
     real_wide_t wn = r_to_wide(num), lo = r_wmul(tmin, denom), hi = r_wmul(*t, denom);
     if (denom > 0 ? (wn <= lo || wn >= hi) : (wn >= lo || wn <= hi))
