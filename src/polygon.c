@@ -267,6 +267,13 @@ static inline void plane_dist(const polygon_t *p, const ray_t *r, real_t *denom,
 #endif
 }
 
+/* lo <= o + (num / denom) d <= hi along one axis, times denom. */
+static inline bool in_box_axis(real_t lo, real_t hi, real_t o, real_t d, real_t num, real_t denom)
+{
+    real_wide_t w = r_wmul(num, d), wlo = r_wmul(lo - o, denom), whi = r_wmul(hi - o, denom);
+    return denom > 0 ? w >= wlo && w <= whi : w <= wlo && w >= whi;
+}
+
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
                      real_t *t)
 {
@@ -283,11 +290,7 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     pt2_t o = project(p, r->origin), d = project(p, r->dir);
     d.u = narrow(d.u), d.v = narrow(d.v);
     pt2_t lo2 = project(p, p->box_min), hi2 = project(p, p->box_max);
-    real_wide_t wu = r_wmul(num, d.u), wv = r_wmul(num, d.v);
-    real_wide_t ulo = r_wmul(lo2.u - o.u, denom), uhi = r_wmul(hi2.u - o.u, denom);
-    real_wide_t vlo = r_wmul(lo2.v - o.v, denom), vhi = r_wmul(hi2.v - o.v, denom);
-    if (denom > 0 ? (wu < ulo || wu > uhi || wv < vlo || wv > vhi)
-                  : (wu > ulo || wu < uhi || wv > vlo || wv < vhi))
+    if (!in_box_axis(lo2.u, hi2.u, o.u, d.u, num, denom) || !in_box_axis(lo2.v, hi2.v, o.v, d.v, num, denom))
         return false;
     /* the inside test before the division: it needs no t (but the
      * even-odd rule's point), and rejects more often than the rounded t */
