@@ -173,7 +173,10 @@ static inline int edge_side_sure(const ray_t *r, vec3_t a, vec3_t b, int64_t bia
     return top < 0 ? -1 : 1;
 }
 
-static inline int64_t edge_bias(const ray_t *r) { return (int64_t)(r->dir.x + r->dir.y + r->dir.z) << 31; }
+static inline int64_t edge_bias(const ray_t *r)
+{
+    return (int64_t)((uint64_t)(int64_t)(r->dir.x + r->dir.y + r->dir.z) << 31); /* 2^31 sum d_k */
+}
 #else
 static inline int64_t edge_bias(const ray_t *r) { return (void)r, 0; }
 #endif
@@ -282,8 +285,11 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     if (denom == 0)
         return false;
     /* tmin < num / denom < *t, tested without dividing */
-    real_wide_t wn = r_to_wide(num), lo = r_wmul(tmin, denom), hi = r_wmul(*t, denom);
-    if (denom > 0 ? (wn <= lo || wn >= hi) : (wn >= lo || wn <= hi))
+    real_wide_t wn = r_to_wide(num), lo = r_wmul(tmin, denom);
+    if (denom > 0 ? wn <= lo : wn >= lo)
+        return false;
+    real_wide_t hi = r_wmul(*t, denom);
+    if (denom > 0 ? wn >= hi : wn <= hi)
         return false;
     /* Bounding-box test of the hit point in the plane's two axes, still
      * without dividing: lo <= o + (num / denom) d <= hi, times denom. */
