@@ -45,6 +45,39 @@ static real_wide_t edge_fn(pt2_t a, pt2_t b, pt2_t c)
     return r_wmul(b.u - a.u, c.v - a.v) - r_wmul(b.v - a.v, c.u - a.u);
 }
 
+/* A 'p' rectangle whose sides run along the axes of its plane, which is
+ * an axis plane (Ng exactly a unit axis), each side at least 1/16 long:
+ * the SPD floors. For it, N . D, N . O and so the box test's products are
+ * exact, and the box test (unpadded) gives the inside test's answer where
+ * the hit is inside by a margin (ray_hit_polygon). The fixed build's. */
+static bool axis_rect(const polygon_t *p, const vec3_t *v, uint16_t count, uint32_t normals)
+{
+#if RT_BACKEND_FIXED
+    const real_t n[3] = { p->normal.x, p->normal.y, p->normal.z };
+    if (count != 4 || normals != POLY_NO_NORMALS || !p->convex || r_abs(n[p->drop_axis]) != R_ONE ||
+        n[(p->drop_axis + 1) % 3] != 0 || n[(p->drop_axis + 2) % 3] != 0)
+        return false;
+    unsigned prev_axis = 3;
+    for (uint32_t i = 0; i < count; i++) {
+        vec3_t e = v3_sub(v[(i + 1) % count], v[i]);
+        const real_t c[3] = { e.x, e.y, e.z };
+        unsigned along = 3, moved = 0;
+        for (unsigned k = 0; k < 3; k++) {
+            if (c[k] != 0)
+                along = k, moved++;
+        }
+        /* one axis in the plane, alternating with the neighbours' */
+        if (moved != 1 || along == p->drop_axis || along == prev_axis || r_abs(c[along]) < R_RATIO(1, 16))
+            return false;
+        prev_axis = along;
+    }
+    return true;
+#else
+    (void)p, (void)v, (void)count, (void)normals;
+    return false;
+#endif
+}
+
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
                          uint32_t normals, uint16_t material)
 {
@@ -75,6 +108,7 @@ const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint1
         right |= e < 0;
     }
     p->convex = !(left && right);
+    p->rect = axis_rect(p, v, count, normals);
     /* Slack so the exact box test never rejects a hit that the rounded
      * inside test (or a neighbour sharing the edge) would accept. */
     const real_t slack = RT_BOX_SLACK;
@@ -270,11 +304,15 @@ static inline void plane_dist(const polygon_t *p, const ray_t *r, real_t *denom,
 #endif
 }
 
-/* lo <= o + (num / denom) d <= hi along one axis, times denom. */
-static inline bool in_box_axis(real_t lo, real_t hi, real_t o, real_t d, real_t num, real_t denom)
+/* How far inside the sides lo and hi along one axis the hit o + (num /
+ * denom) d is, times |denom|, computed without dividing: the nearer
+ * side's (negative outside). */
+static inline real_wide_t box_gap(real_t lo, real_t hi, real_t o, real_t d, real_t num, real_t denom)
 {
-    real_wide_t w = r_wmul(num, d), wlo = r_wmul(lo - o, denom), whi = r_wmul(hi - o, denom);
-    return denom > 0 ? w >= wlo && w <= whi : w <= wlo && w >= whi;
+    real_wide_t w = r_wmul(num, d), a = w - r_wmul(lo - o, denom), b = r_wmul(hi - o, denom) - w;
+    if (denom < 0)
+        a = -a, b = -b;
+    return a < b ? a : b;
 }
 
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
@@ -296,24 +334,38 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     pt2_t o = project(p, r->origin), d = project(p, r->dir);
     d.u = narrow(d.u), d.v = narrow(d.v);
     pt2_t lo2 = project(p, p->box_min), hi2 = project(p, p->box_max);
-    if (!in_box_axis(lo2.u, hi2.u, o.u, d.u, num, denom) || !in_box_axis(lo2.v, hi2.v, o.v, d.v, num, denom))
+    real_wide_t gap = box_gap(lo2.u, hi2.u, o.u, d.u, num, denom), gap_v;
+    if (gap < 0 || (gap_v = box_gap(lo2.v, hi2.v, o.v, d.v, num, denom)) < 0)
         return false;
+    gap = gap < gap_v ? gap : gap_v;
+    bool inside = false;
+#if RT_BACKEND_FIXED
+    /* An axis rectangle (axis_rect) is its box less the slack. With N . D
+     * and N . O exact, the gap to its side at u = lo (less the slack's
+     * |denom| s) is +-(d_u (c - o_w) - d_w (lo - o_u)) exactly: the edge
+     * test's D . n over the side's length e (n = (p - O) x e for p on the
+     * side). Where every such gap is 2^30 or more, every D . n is 2^46 or
+     * more (e >= 2^16 ulps) and of one sign, which edge_side gives too:
+     * inside, without the edges. */
+    inside = p->rect && gap >= ((real_wide_t)1 << 30) + r_wmul(RT_BOX_SLACK, r_abs(denom));
+#endif
     /* the inside test before the division: it needs no t (but the
      * even-odd rule's point), and rejects more often than the rounded t */
-    bool inside;
+    if (!inside) {
 #if RT_USE_PATCHES
-    if (p->normals != POLY_NO_NORMALS)
-        inside = inside_fan(sc, p, r);
-    else
+        if (p->normals != POLY_NO_NORMALS)
+            inside = inside_fan(sc, p, r);
+        else
 #endif
 #if RT_USE_CONCAVE
-    if (!p->convex)
-        inside = inside_even_odd(sc, p, project(p, ray_at(r, r_div(num, denom))));
-    else
+        if (!p->convex)
+            inside = inside_even_odd(sc, p, project(p, ray_at(r, r_div(num, denom))));
+        else
 #endif
-        inside = inside_convex(sc, p, r);
-    if (!inside)
-        return false;
+            inside = inside_convex(sc, p, r);
+        if (!inside)
+            return false;
+    }
     real_t th = r_div(num, denom);
     if (th <= tmin || th >= *t)
         return false;
