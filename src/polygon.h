@@ -19,7 +19,8 @@
     X(uint16_t, count, ) \
     X(uint16_t, material, ) \
     X(uint8_t, drop_axis, ) \
-    X(uint8_t, convex, )   /* inside test by edge sides (watertight) */
+    X(uint8_t, convex, )   /* inside test by edge sides (watertight) */ \
+    X(uint8_t, rect, )     /* fixed build: an axis rectangle, see axis_rect */
 typedef struct { FIELDS_polygon_t(RT_DECLARE_FIELD) } polygon_t;
 
 /* True when all the polygon's vertices lie on one line (it has no area and
