@@ -30,7 +30,11 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
     s.offset = ps.offset;
     s.entering = v3_dot(ray->dir, ps.ng) < 0;
     s.n_out = s.entering ? ps.ng : v3_neg(ps.ng);
-    s.n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+    s.n = s.n_out; /* n = Ng but on a patch */
+#if RT_USE_PATCHES
+    if (ps.smooth)
+        s.n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+#endif
     s.m = &sc->materials[ps.material];
     return s;
 }
@@ -42,7 +46,9 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
  * (s->offset; 0 for the others except polygons in the float build). */
 static void leave(const surface_t *s, bool through, ray_t *out)
 {
-    out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
+    out->origin = s->point;
+    if (s->offset != 0)
+        out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
     out->from_far = s->far_root && through == s->entering;
     out->leaf = s->leaf;
