@@ -17,26 +17,24 @@ typedef struct {
     const material_t *m;
 } surface_t;
 
-RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
+RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
-    surface_t s;
     prim_surface_t ps;
-    s.point = ray_at(ray, h->t);
-    prim_surface(sc, h, s.point, &ps);
-    s.ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
-    s.far_root = ps.leave == LEAVE_FAR_ROOT;
-    s.leaf = h->leaf;
-    s.smooth = ps.smooth;
-    s.offset = ps.offset;
-    s.entering = v3_dot(ray->dir, ps.ng) < 0;
-    s.n_out = s.entering ? ps.ng : v3_neg(ps.ng);
-    s.n = s.n_out; /* n = Ng but on a patch */
+    s->point = ray_at(ray, h->t);
+    prim_surface(sc, h, s->point, &ps);
+    s->ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
+    s->far_root = ps.leave == LEAVE_FAR_ROOT;
+    s->leaf = h->leaf;
+    s->smooth = ps.smooth;
+    s->offset = ps.offset;
+    s->entering = v3_dot(ray->dir, ps.ng) < 0;
+    s->n_out = s->entering ? ps.ng : v3_neg(ps.ng);
+    s->n = s->n_out; /* n = Ng but on a patch */
 #if RT_USE_PATCHES
     if (ps.smooth)
-        s.n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+        s->n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
 #endif
-    s.m = &sc->materials[ps.material];
-    return s;
+    s->m = &sc->materials[ps.material];
 }
 
 /* The start of a ray leaving surface s: to the side the incoming ray came
@@ -121,7 +119,7 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
     hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
         return false;
-    *s = surface_at(tr->scene, &h, ray);
+    surface_at(tr->scene, &h, ray, s);
     return true;
 }
 
