@@ -20,19 +20,19 @@ typedef struct {
 RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
     prim_surface_t ps;
-    s->point = ray_at(ray, h->t);
+    s->point = v3_madd_in_range(ray->origin, h->t, ray->dir); /* a point of the scene */
     prim_surface(sc, h, s->point, &ps);
     s->ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
     s->far_root = ps.leave == LEAVE_FAR_ROOT;
     s->leaf = h->leaf;
     s->smooth = ps.smooth;
     s->offset = ps.offset;
-    s->entering = v3_dot(ray->dir, ps.ng) < 0;
+    s->entering = v3_dot_in_range(ray->dir, ps.ng) < 0;
     s->n_out = s->entering ? ps.ng : v3_neg(ps.ng);
     s->n = s->n_out; /* n = Ng but on a patch */
 #if RT_USE_PATCHES
     if (ps.smooth)
-        s->n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+        s->n = v3_dot_in_range(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
 #endif
     s->m = &sc->materials[ps.material];
 }
@@ -46,7 +46,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 {
     out->origin = s->point;
     if (s->offset != 0)
-        out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
+        out->origin = v3_madd_in_range(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
     out->from_far = s->far_root && through == s->entering;
     out->leaf = s->leaf;
@@ -61,12 +61,38 @@ RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a
 /* a + b k, the sum saturated */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
 
+#if RT_USE_SHADOWS
+/* c + I (Kd C (N.L) + spec) Lc: the share of light l, whose shadow ray
+ * along ldir is clear, rounded in the model's order. Out of line: its
+ * temporaries are not on the stack under scene_occluded. */
+RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surface_t *s, const ray_t *ray,
+                                  const light_t *l, const vec3_t *ldir, real_t ndl, real_t I)
+{
+    colour_t lit = colour_scale(*kdc, ndl);
+    (void)s, (void)ray, (void)ldir; /* only the specular term looks at them */
+#if RT_USE_SPECULAR
+    const material_t *m = s->m;
+    if (m->ks > 0) {
+        /* Phong: R = 2 (N.L) N - L against V = -D */
+        vec3_t refl = v3_sub(v3_scale_in_range(s->n, 2 * ndl), *ldir);
+        real_t rv = -v3_dot_in_range(refl, ray->dir);
+        real_t spec = r_mul_in_range(m->ks, r_pow_unit(rv, m->shine)); /* the power is <= 1 */
+        if (spec != 0) /* else it adds nothing */
+            lit = colour_add(lit, v3(spec, spec, spec));
+    }
+#endif
+    if (l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE) /* white: lit as it is */
+        lit = v3_mul(lit, l->colour);
+    *c = colour_add_scaled(*c, lit, I);
+}
+#endif
+
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
 {
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
-    (void)ray; /* only the specular term looks at it */
+    (void)ray; /* only the lights' shares look at it */
     colour_t kdc = colour_scale(m->colour, m->kd);
     colour_t c = colour_scale(kdc, I); /* ambient */
 #if RT_USE_SHADOWS
@@ -76,31 +102,20 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         const light_t *l = &sc->lights[i];
         vec3_t to_light = v3_sub(l->pos, s->point);
         vec3_t ldir = v3_unit(to_light);
-        real_t ndl = v3_dot(s->n, ldir);
+        real_t ndl = v3_dot_in_range(s->n, ldir);
         if (ndl <= 0)
             continue;
         tr->stats->shadow_rays++;
 #if RT_USE_PATCHES
         /* the patch policy of docs/shading-model.md: a light below the
          * geometric surface is blocked by the patch itself (at t = 0) */
-        if (s->smooth && v3_dot(s->n_out, ldir) <= 0)
+        if (s->smooth && v3_dot_in_range(s->n_out, ldir) <= 0)
             continue;
 #endif
         shadow.dir = ldir;
-        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
-                           tr->stats))
-            continue;
-        colour_t lit = colour_scale(kdc, ndl);
-#if RT_USE_SPECULAR
-        if (m->ks > 0) {
-            /* Phong: R = 2 (N.L) N - L against V = -D */
-            vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
-            real_t rv = -v3_dot(refl, ray->dir);
-            real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
-            lit = colour_add(lit, v3(spec, spec, spec));
-        }
-#endif
-        c = colour_add_scaled(c, v3_mul(lit, l->colour), I);
+        if (!scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
+                            tr->stats))
+            add_light(&c, &kdc, s, ray, l, &shadow.dir, ndl, I);
     }
 #endif
     return c;
@@ -130,10 +145,10 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
 {
     leave(s, false, out);
-    out->dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s->n));
+    out->dir = v3_unit(v3_madd_in_range(ray->dir, 2 * cos_i, s->n));
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot(out->dir, s->n_out) <= 0)
-        out->dir = v3_unit(v3_madd(ray->dir, -2 * v3_dot(ray->dir, s->n_out), s->n_out));
+    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) <= 0)
+        out->dir = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s->n_out), s->n_out));
 #endif
 }
 #endif
@@ -160,8 +175,8 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
     if (!snell(ray->dir, s->n, cos_i, eta, &out->dir))
         return false;
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot(out->dir, s->n_out) >= 0 &&
-        !snell(ray->dir, s->n_out, -v3_dot(ray->dir, s->n_out), eta, &out->dir))
+    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) >= 0 &&
+        !snell(ray->dir, s->n_out, -v3_dot_in_range(ray->dir, s->n_out), eta, &out->dir))
         return false;
 #endif
     leave(s, true, out);
@@ -184,7 +199,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
         return c;
 
     const material_t *m = s.m;
-    real_t cos_i = -v3_dot(ray->dir, s.n); /* > 0 */
+    real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
     ray_t next;
     (void)weight, (void)cos_i, (void)m, (void)next;
 #if RT_USE_REFLECTION
