@@ -217,7 +217,22 @@ static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
-static inline real_t r_add_sat(real_t a, real_t b) { return fx_sat64((int64_t)a + b); }
+/* fx_sat64 of the 64-bit sum, from the 32-bit sum and its overflow flag
+ * (the M3's ADDS and BVS: 4 instructions instead of 10 when in range) */
+static inline real_t r_add_sat(real_t a, real_t b)
+{
+#if defined(__GNUC__)
+    int32_t s;
+    bool over = __builtin_add_overflow(a, b, &s);
+    if (over || s == INT32_MIN) {
+        FX_ON_SATURATE();
+        return (over ? a : s) < 0 ? FX_MIN : FX_MAX; /* the true sum's sign */
+    }
+    return s;
+#else
+    return fx_sat64((int64_t)a + b);
+#endif
+}
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }

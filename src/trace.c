@@ -83,7 +83,7 @@ RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surfac
 #endif
     if (l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE) /* white: lit as it is */
         lit = v3_mul(lit, l->colour);
-    *c = colour_add_scaled(*c, lit, I);
+    *c = c3_add(*c, v3_scale_in_range(lit, I)); /* I <= 1/2 */
 }
 #endif
 
