@@ -87,14 +87,19 @@ RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surfac
 }
 #endif
 
-RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
+RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray, int depth)
 {
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
     (void)ray; /* only the lights' shares look at it */
-    colour_t kdc = colour_scale(m->colour, m->kd);
-    colour_t c = colour_scale(kdc, I); /* ambient */
+    material_terms_t *t = &tr->terms[depth - 1];
+    if (t->material != m) {
+        t->material = m;
+        t->kdc = colour_scale(m->colour, m->kd);
+        t->ambient = colour_scale(t->kdc, I);
+    }
+    colour_t c = t->ambient;
 #if RT_USE_SHADOWS
     ray_t shadow;
     leave(s, false, &shadow);
@@ -115,7 +120,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         shadow.dir = ldir;
         if (!scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
                             tr->stats))
-            add_light(&c, &kdc, s, ray, l, &shadow.dir, ndl, I);
+            add_light(&c, &t->kdc, s, ray, l, &shadow.dir, ndl, I);
     }
 #endif
     return c;
@@ -194,7 +199,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     if (depth == 1)
         tr->stats->eye_hits++;
 
-    colour_t c = direct_light(tr, &s, ray);
+    colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
         return c;
 
