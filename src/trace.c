@@ -68,7 +68,7 @@ RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) 
 RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surface_t *s, const ray_t *ray,
                                   const light_t *l, const vec3_t *ldir, real_t ndl, real_t I)
 {
-    colour_t lit = colour_scale(*kdc, ndl);
+    colour_t lit = v3_scale(*kdc, ndl);
     (void)s, (void)ray, (void)ldir; /* only the specular term looks at them */
 #if RT_USE_SPECULAR
     const material_t *m = s->m;
