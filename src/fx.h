@@ -61,9 +61,9 @@ extern volatile uint32_t fx_saturations;
 
 static inline fx_t fx_sat64(int64_t v)
 {
-    if (v > FX_MAX) { FX_ON_SATURATE(); return FX_MAX; }
-    if (v < FX_MIN) { FX_ON_SATURATE(); return FX_MIN; }
-    return (fx_t)v;
+    int32_t lo = (int32_t)v, hi = (int32_t)(v >> 32);
+    if (hi != lo >> 31 || lo == INT32_MIN) { FX_ON_SATURATE(); return hi < 0 ? FX_MIN : FX_MAX; }
+    return lo;
 }
 
 /* Leading zero bits of a non-zero 32-bit value (CLZ on the M3). */
