@@ -58,8 +58,10 @@ RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale
 #if RT_USE_SPECULAR
 RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a, b); }
 #endif
+#if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
+#endif
 
 #if RT_USE_SHADOWS
 /* c + I (Kd C (N.L) + spec) Lc: the share of light l, whose shadow ray
