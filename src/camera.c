@@ -48,18 +48,22 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
 {
     /* T = at + a u - b v: the model's w + a' u - b' v scaled by |at - eye|,
      * so eye -> T is the exact ray; offsets in units of s/2 are integers
-     * and each product is rounded once. */
-    real_t a = r_from_wide(c->half_span * (2 * i - (c->nx - 1)));
-    real_t b = r_from_wide(c->half_span * (2 * j - (c->ny - 1)));
-    vec3_t t = v3(r_from_wide(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
-                  r_from_wide(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
-                  r_from_wide(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));
+     * and each product is rounded once. |a|, |b| <= max(256, tan_half)
+     * and |at| < 513 (camera_init), so up to a lens of 179.8 degrees none
+     * needs a saturation test (a wider one would only saturate its edges). */
+    real_t a = r_from_wide_in_range(c->half_span * (2 * i - (c->nx - 1)));
+    real_t b = r_from_wide_in_range(c->half_span * (2 * j - (c->ny - 1)));
+    vec3_t t = v3(r_from_wide_in_range(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
+                  r_from_wide_in_range(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
+                  r_from_wide_in_range(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));
     vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
     r.dir = v3_unit(to_t);
     /* back from T along the rounded direction to `start` from the eye
-     * (|to_t| as to_t . dir: an error along the ray moves nothing) */
-    r.origin = v3_madd(t, c->start - v3_dot(to_t, r.dir), r.dir);
+     * (|to_t| as to_t . dir: an error along the ray moves nothing). The
+     * step is inside the range: |to_t| near 2048 needs the eye far out,
+     * and then `start` is almost as long. */
+    r.origin = v3_madd_in_range(t, c->start - v3_dot(to_t, r.dir), r.dir);
     r.from = PRIM_NONE;
     r.from_far = false;
     r.leaf = RT_NO_LEAF;

@@ -483,41 +483,38 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
     out[2] = ((int32_t)(fx_mul64(vz, r) >> 32) + half) >> shift;
 }
 
-/* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1). */
+/* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1), bit
+ * by bit: squaring the mantissa m in [1, 2) (Q.30, truncated) doubles its
+ * log, and a square of 2 or more gives the next bit. m fits 31 bits, so
+ * each square is one 32x32 product: m is kept doubled (a = 2m, Q.31),
+ * where the high word of a^2 is the Q.30 square. */
 static int32_t log2_q24(fx_t x)
 {
-    uint32_t m = (uint32_t)x;
-    int s = 0;
-    while (m < ((uint32_t)1 << 30)) {
-        m <<= 1;
-        s++;
+    int s = fx_clz32((uint32_t)x);
+    uint32_t a = (uint32_t)x << s; /* x = (a / 2^31) 2^(31 - s - F) */
+    uint32_t bits = 0;
+    for (int i = 0; i < POW_LOG_BITS; i++) {
+        uint32_t sq = (uint32_t)(fx_umul64(a, a) >> 32); /* m^2, Q.30 */
+        bits = bits << 1 | sq >> 31;
+        a = sq >> 31 ? sq & ~1u : sq << 1; /* m^2 >= 2: halved, its low bit dropped */
     }
-    /* x = (m / 2^30) * 2^(30 - s - F), with m/2^30 in [1, 2). */
-    int32_t result = (30 - s - FX_FRAC_BITS) * ((int32_t)1 << 24);
-    uint64_t mm = m;
-    for (int bit = 23; bit >= 24 - POW_LOG_BITS; bit--) {
-        mm = fx_umul64x(mm, mm) >> 30;
-        if (mm >= ((uint64_t)2 << 30)) {
-            mm >>= 1;
-            result += (int32_t)1 << bit;
-        }
-    }
-    return result;
+    return (31 - s - FX_FRAC_BITS) * ((int32_t)1 << 24) + (int32_t)(bits << (24 - POW_LOG_BITS));
 }
 
 /* 2^f for f in [0, 1) given in Q.24, result in Q.30. Taylor series of
  * e^(f ln 2) to degree 9; the coefficients are (ln 2)^k / k! in Q.30,
- * truncation error below 1e-8. */
-static uint64_t exp2_frac_q30(int32_t f_q24)
+ * truncation error below 1e-8. Every partial sum is below 2 (Q.30 fits
+ * 31 bits), so each step is one 32x32 product. */
+static uint32_t exp2_frac_q30(int32_t f_q24)
 {
     static const uint32_t coef[10] = {
         1073741824u, 744261118u, 257941248u, 59597083u, 10327387u,
         1431680u, 165394u, 16377u, 1419u, 109u,
     };
-    uint64_t z = (uint64_t)f_q24 << 6; /* Q.30 */
-    uint64_t p = coef[EXP2_DEGREE];
+    uint32_t z = (uint32_t)f_q24 << 6; /* Q.30 */
+    uint32_t p = coef[EXP2_DEGREE];
     for (int k = EXP2_DEGREE - 1; k >= 0; k--)
-        p = coef[k] + (fx_umul64x(p, z) >> 30);
+        p = coef[k] + (uint32_t)(fx_umul64(p, z) >> 30);
     return p;
 }
 

@@ -59,6 +59,8 @@ extern volatile uint32_t fx_saturations;
 #define FX_ON_SATURATE() ((void)0)
 #endif
 
+/* In range when the high word is the low word's sign and the low word is
+ * not INT32_MIN (below FX_MIN): a compare and two branches on the M3. */
 static inline fx_t fx_sat64(int64_t v)
 {
     /* in range when the high word is the low word's sign (one compare

@@ -87,6 +87,7 @@ static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
 static camera_t cam; /* static: one render at a time; keeps the stack small */
 static tracer_t tr;  /* likewise */
 static prim_ref_t last_blocker[RT_MAX_LIGHTS];
+static material_terms_t terms[RT_MAX_DEPTH];
 
 #if RT_USE_SPD
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
@@ -209,9 +210,11 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     if (stats == 0)
         stats = &no_stats;
     tr = (tracer_t){ sc, depth, stats, opts->spd, r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)),
-                     last_blocker };
+                     last_blocker, terms };
     for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
         last_blocker[i] = PRIM_NONE;
+    for (uint32_t i = 0; i < RT_MAX_DEPTH; i++)
+        terms[i].material = 0;
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;

@@ -17,22 +17,24 @@ typedef struct {
     const material_t *m;
 } surface_t;
 
-RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray)
+RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
-    surface_t s;
     prim_surface_t ps;
-    s.point = ray_at(ray, h->t);
-    prim_surface(sc, h, s.point, &ps);
-    s.ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
-    s.far_root = ps.leave == LEAVE_FAR_ROOT;
-    s.leaf = h->leaf;
-    s.smooth = ps.smooth;
-    s.offset = ps.offset;
-    s.entering = v3_dot(ray->dir, ps.ng) < 0;
-    s.n_out = s.entering ? ps.ng : v3_neg(ps.ng);
-    s.n = v3_dot(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
-    s.m = &sc->materials[ps.material];
-    return s;
+    s->point = v3_madd_in_range(ray->origin, h->t, ray->dir); /* a point of the scene */
+    prim_surface(sc, h, s->point, &ps);
+    s->ref = ps.leave == LEAVE_OFFSET ? PRIM_NONE : PRIM_REF(h->kind, h->index);
+    s->far_root = ps.leave == LEAVE_FAR_ROOT;
+    s->leaf = h->leaf;
+    s->smooth = ps.smooth;
+    s->offset = ps.offset;
+    s->entering = v3_dot_in_range(ray->dir, ps.ng) < 0;
+    s->n_out = s->entering ? ps.ng : v3_neg(ps.ng);
+    s->n = s->n_out; /* n = Ng but on a patch */
+#if RT_USE_PATCHES
+    if (ps.smooth)
+        s->n = v3_dot_in_range(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
+#endif
+    s->m = &sc->materials[ps.material];
 }
 
 /* The start of a ray leaving surface s: to the side the incoming ray came
@@ -42,7 +44,9 @@ RT_NOINLINE static surface_t surface_at(const scene_t *sc, const hit_t *h, const
  * (s->offset; 0 for the others except polygons in the float build). */
 static void leave(const surface_t *s, bool through, ray_t *out)
 {
-    out->origin = v3_madd(s->point, through ? -s->offset : s->offset, s->n_out);
+    out->origin = s->point;
+    if (s->offset != 0)
+        out->origin = v3_madd_in_range(s->point, through ? -s->offset : s->offset, s->n_out);
     out->from = s->ref;
     out->from_far = s->far_root && through == s->entering;
     out->leaf = s->leaf;
@@ -54,17 +58,50 @@ RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale
 #if RT_USE_SPECULAR
 RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a, b); }
 #endif
+#if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
+#endif
 
-RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray)
+#if RT_USE_SHADOWS
+/* c + I (Kd C (N.L) + spec) Lc: the share of light l, whose shadow ray
+ * along ldir is clear, rounded in the model's order. Out of line: its
+ * temporaries are not on the stack under scene_occluded. */
+RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surface_t *s, const ray_t *ray,
+                                  const light_t *l, const vec3_t *ldir, real_t ndl, real_t I)
+{
+    colour_t lit = v3_scale(*kdc, ndl);
+    (void)s, (void)ray, (void)ldir; /* only the specular term looks at them */
+#if RT_USE_SPECULAR
+    const material_t *m = s->m;
+    if (m->ks > 0) {
+        /* Phong: R = 2 (N.L) N - L against V = -D */
+        vec3_t refl = v3_sub(v3_scale_in_range(s->n, 2 * ndl), *ldir);
+        real_t rv = -v3_dot_in_range(refl, ray->dir);
+        real_t spec = r_mul_in_range(m->ks, r_pow_unit(rv, m->shine)); /* the power is <= 1 */
+        if (spec != 0) /* else it adds nothing */
+            lit = colour_add(lit, v3(spec, spec, spec));
+    }
+#endif
+    if (l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE) /* white: lit as it is */
+        lit = v3_mul(lit, l->colour);
+    *c = c3_add(*c, v3_scale_in_range(lit, I)); /* I <= 1/2 */
+}
+#endif
+
+RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray, int depth)
 {
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
-    (void)ray; /* only the specular term looks at it */
-    colour_t kdc = colour_scale(m->colour, m->kd);
-    colour_t c = colour_scale(kdc, I); /* ambient */
+    (void)ray; /* only the lights' shares look at it */
+    material_terms_t *t = &tr->terms[depth - 1];
+    if (t->material != m) {
+        t->material = m;
+        t->kdc = colour_scale(m->colour, m->kd);
+        t->ambient = colour_scale(t->kdc, I);
+    }
+    colour_t c = t->ambient;
 #if RT_USE_SHADOWS
     ray_t shadow;
     leave(s, false, &shadow);
@@ -72,31 +109,22 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         const light_t *l = &sc->lights[i];
         vec3_t to_light = v3_sub(l->pos, s->point);
         vec3_t ldir = v3_unit(to_light);
-        real_t ndl = v3_dot(s->n, ldir);
+        real_t ndl = v3_dot_in_range(s->n, ldir);
         if (ndl <= 0)
             continue;
         tr->stats->shadow_rays++;
 #if RT_USE_PATCHES
         /* the patch policy of docs/shading-model.md: a light below the
          * geometric surface is blocked by the patch itself (at t = 0) */
-        if (s->smooth && v3_dot(s->n_out, ldir) <= 0)
+        if (s->smooth && v3_dot_in_range(s->n_out, ldir) <= 0)
             continue;
 #endif
         shadow.dir = ldir;
-        if (scene_occluded(sc, &shadow, RT_T_MIN, v3_length(v3_sub(l->pos, shadow.origin)), &tr->last_blocker[i],
-                           tr->stats))
-            continue;
-        colour_t lit = colour_scale(kdc, ndl);
-#if RT_USE_SPECULAR
-        if (m->ks > 0) {
-            /* Phong: R = 2 (N.L) N - L against V = -D */
-            vec3_t refl = v3_sub(v3_scale(s->n, 2 * ndl), ldir);
-            real_t rv = -v3_dot(refl, ray->dir);
-            real_t spec = r_mul(m->ks, r_pow_unit(rv, m->shine));
-            lit = colour_add(lit, v3(spec, spec, spec));
-        }
-#endif
-        c = colour_add_scaled(c, v3_mul(lit, l->colour), I);
+        /* the light's distance along the ray as (L - O) . ldir: within a
+         * few ulps of |L - O| (ldir's error), without a square root */
+        real_t dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
+        if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->stats))
+            add_light(&c, &t->kdc, s, ray, l, &shadow.dir, ndl, I);
     }
 #endif
     return c;
@@ -115,7 +143,7 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
     hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
         return false;
-    *s = surface_at(tr->scene, &h, ray);
+    surface_at(tr->scene, &h, ray, s);
     return true;
 }
 
@@ -126,10 +154,10 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
 {
     leave(s, false, out);
-    out->dir = v3_unit(v3_madd(ray->dir, 2 * cos_i, s->n));
+    out->dir = v3_unit(v3_madd_in_range(ray->dir, 2 * cos_i, s->n));
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot(out->dir, s->n_out) <= 0)
-        out->dir = v3_unit(v3_madd(ray->dir, -2 * v3_dot(ray->dir, s->n_out), s->n_out));
+    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) <= 0)
+        out->dir = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s->n_out), s->n_out));
 #endif
 }
 #endif
@@ -156,8 +184,8 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
     if (!snell(ray->dir, s->n, cos_i, eta, &out->dir))
         return false;
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot(out->dir, s->n_out) >= 0 &&
-        !snell(ray->dir, s->n_out, -v3_dot(ray->dir, s->n_out), eta, &out->dir))
+    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) >= 0 &&
+        !snell(ray->dir, s->n_out, -v3_dot_in_range(ray->dir, s->n_out), eta, &out->dir))
         return false;
 #endif
     leave(s, true, out);
@@ -175,12 +203,12 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     if (depth == 1)
         tr->stats->eye_hits++;
 
-    colour_t c = direct_light(tr, &s, ray);
+    colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
         return c;
 
     const material_t *m = s.m;
-    real_t cos_i = -v3_dot(ray->dir, s.n); /* > 0 */
+    real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
     ray_t next;
     (void)weight, (void)cos_i, (void)m, (void)next;
 #if RT_USE_REFLECTION

@@ -5,6 +5,13 @@
 #include "geometry.h"
 #include "rt_stats.h"
 
+/* A material's Kd C and ambient term I Kd C, kept per ray depth: a hit
+ * is mostly on the material the same depth of the previous pixel met. */
+typedef struct {
+    const material_t *material; /* whose terms these are; 0: none yet */
+    colour_t kdc, ambient;
+} material_terms_t;
+
 typedef struct {
     const scene_t *scene;
     int max_depth;      /* 1..RT_MAX_DEPTH; the eye ray has depth 1 */
@@ -14,6 +21,7 @@ typedef struct {
                          * the pixel falls below this; 0 = off */
     prim_ref_t *last_blocker; /* per light: what blocked its last shadow
                                * ray, tried first (PRIM_NONE at the start) */
+    material_terms_t *terms;  /* per depth (material 0 at the start) */
 } tracer_t;
 
 /* Colour seen along `ray`; `weight` is its share of the pixel (1 for an

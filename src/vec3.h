@@ -43,6 +43,19 @@ static inline real_wide_t v3_wdot(vec3_t a, vec3_t b)
     return r_wmul(a.x, b.x) + r_wmul(a.y, b.y) + r_wmul(a.z, b.z);
 }
 static inline real_t v3_dot(vec3_t a, vec3_t b) { return r_from_wide(v3_wdot(a, b)); }
+/* The same for directions (unit vectors, or a few units long) times
+ * cosines, and a distance along a ray to a point of the scene: the caller
+ * knows each product and sum stays inside the range, so they are rounded
+ * as above without the saturation test (r_mul_in_range). */
+static inline real_t v3_dot_in_range(vec3_t a, vec3_t b) { return r_from_wide_in_range(v3_wdot(a, b)); }
+static inline vec3_t v3_scale_in_range(vec3_t a, real_t s)
+{
+    return v3(r_mul_in_range(a.x, s), r_mul_in_range(a.y, s), r_mul_in_range(a.z, s));
+}
+static inline vec3_t v3_madd_in_range(vec3_t a, real_t s, vec3_t b)
+{
+    return v3(a.x + r_mul_in_range(s, b.x), a.y + r_mul_in_range(s, b.y), a.z + r_mul_in_range(s, b.z));
+}
 static inline real_t v3_length(vec3_t a) { return r_wsqrt(v3_wdot(a, a)); }
 static inline vec3_t v3_unit(vec3_t a)
 {
