@@ -63,8 +63,6 @@ extern volatile uint32_t fx_saturations;
  * not INT32_MIN (below FX_MIN): a compare and two branches on the M3. */
 static inline fx_t fx_sat64(int64_t v)
 {
-    /* in range when the high word is the low word's sign (one compare
-     * with a shifted operand on the M3) and it is not INT32_MIN */
     int32_t lo = (int32_t)v;
     if ((int32_t)((uint64_t)v >> 32) == lo >> 31 && lo != INT32_MIN)
         return lo;
