@@ -63,9 +63,9 @@ extern volatile uint32_t fx_saturations;
  * not INT32_MIN (below FX_MIN): a compare and two branches on the M3. */
 static inline fx_t fx_sat64(int64_t v)
 {
-    int32_t lo = (int32_t)v;
-    if ((int32_t)((uint64_t)v >> 32) == lo >> 31 && lo != INT32_MIN)
-        return lo;
+    uint32_t lo = (uint32_t)v, hi = (uint32_t)((uint64_t)v >> 32);
+    if (hi == 0u - (lo >> 31) && lo != 0x80000000u)
+        return (fx_t)lo;
     FX_ON_SATURATE();
     return v > 0 ? FX_MAX : FX_MIN;
 }

@@ -334,12 +334,15 @@ bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real
     pt2_t o = project(p, r->origin), d = project(p, r->dir);
     d.u = narrow(d.u), d.v = narrow(d.v);
     pt2_t lo2 = project(p, p->box_min), hi2 = project(p, p->box_max);
-    real_wide_t gap = box_gap(lo2.u, hi2.u, o.u, d.u, num, denom), gap_v;
-    if (gap < 0 || (gap_v = box_gap(lo2.v, hi2.v, o.v, d.v, num, denom)) < 0)
+    real_wide_t gap = box_gap(lo2.u, hi2.u, o.u, d.u, num, denom);
+    if (gap < 0)
         return false;
-    gap = gap < gap_v ? gap : gap_v;
+    real_wide_t gap_v = box_gap(lo2.v, hi2.v, o.v, d.v, num, denom);
+    if (gap_v < 0)
+        return false;
     bool inside = false;
 #if RT_BACKEND_FIXED
+    gap = gap < gap_v ? gap : gap_v;
     /* An axis rectangle (axis_rect) is its box less the slack. With N . D
      * and N . O exact, the gap to its side at u = lo (less the slack's
      * |denom| s) is +-(d_u (c - o_w) - d_w (lo - o_u)) exactly: the edge
