@@ -117,7 +117,7 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
     out[2] = z / l;
 }
 /* round(255 c) of c clamped to [0, 1] */
-static inline uint8_t r_to_u8(real_t c)
+static RT_INLINE uint8_t r_to_u8(real_t c)
 {
     if (!(c > 0))
         return 0;
