@@ -94,11 +94,6 @@ static uint32_t build(builder_t *b, uint32_t first, uint32_t count, uint32_t dep
     n->min = box.min;
     n->max = box.max;
     n->axis = 0;
-    /* the box test subtracts origins from bounds unsaturated (real.h) */
-    const real_t far = r_from_int((int32_t)1 << RT_FAR_EXTENT_LOG2);
-    if (count && (r_min(box.min.x, r_min(box.min.y, box.min.z)) < -far ||
-                  r_max(box.max.x, r_max(box.max.y, box.max.z)) > far))
-        b->error = "scene geometry reaches beyond the far extent (RT_FAR_EXTENT_LOG2)";
 
     /* best binned split over the three axes */
     int best_axis = -1, best_split = 0;
@@ -197,8 +192,16 @@ const char *bvh_build(scene_store_t *st)
     RT_PRIM_KINDS(RT_LIST_KIND)
 #undef RT_LIST_KIND
     builder_t b = { st, 0, 0 };
-    if (n > 0)
+    if (n > 0) {
         build(&b, 0, n, 0);
+        /* the box test subtracts origins from bounds unsaturated (real.h):
+         * the root's box, around all others, within the far extent */
+        const real_t far = r_from_int((int32_t)1 << RT_FAR_EXTENT_LOG2);
+        const bvh_node_t *root = &st->bvh_nodes[0];
+        if (r_min(root->min.x, r_min(root->min.y, root->min.z)) < -far ||
+            r_max(root->max.x, r_max(root->max.y, root->max.z)) > far)
+            b.error = "scene geometry reaches beyond the far extent (RT_FAR_EXTENT_LOG2)";
+    }
     sc->bvh_nodes = st->bvh_nodes;
     sc->bvh_prims = st->bvh_prims;
     sc->n_bvh_nodes = b.n_nodes;

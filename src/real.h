@@ -161,7 +161,8 @@ static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
 /* r_mul and r_from_wide where the caller knows the result is inside the
  * range (vec3.h's _in_range helpers): the same rounding, no saturation
  * test, so the same bits in 4 to 6 fewer instructions. */
-static inline real_t r_mul_in_range(real_t a, real_t b) { return (fx_t)fx_round_shift(fx_mul64(a, b), FX_FRAC_BITS); }
+static inline real_t r_from_wide_in_range(real_wide_t w) { return (fx_t)fx_round_shift(w, FX_FRAC_BITS); }
+static inline real_t r_mul_in_range(real_t a, real_t b) { return r_from_wide_in_range(fx_mul64(a, b)); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the
@@ -215,29 +216,13 @@ static inline real_t r_sqrt(real_t a) { return fx_sqrt(a); }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return fx_wmul(a, b); }
 static inline real_wide_t r_to_wide(real_t a) { return fx_to_wide(a); }
 static inline real_t r_from_wide(real_wide_t w) { return fx_from_wide(w); }
-static inline real_t r_from_wide_in_range(real_wide_t w) { return (fx_t)fx_round_shift(w, FX_FRAC_BITS); }
 static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
-/* fx_sat64 of the 64-bit sum, from the 32-bit sum and its overflow flag
- * (the M3's ADDS and BVS: 4 instructions instead of 10 when in range) */
-static inline real_t r_add_sat(real_t a, real_t b)
-{
-#if defined(__GNUC__)
-    int32_t s;
-    bool over = __builtin_add_overflow(a, b, &s);
-    if (over || s == INT32_MIN) {
-        FX_ON_SATURATE();
-        return (over ? a : s) < 0 ? FX_MIN : FX_MAX; /* the true sum's sign */
-    }
-    return s;
-#else
-    return fx_sat64((int64_t)a + b);
-#endif
-}
+static inline real_t r_add_sat(real_t a, real_t b) { return fx_add_sat(a, b); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }

@@ -226,9 +226,8 @@
 /* Hot functions called from several places in the traversal (the box
  * test, the primitive dispatch): a copy inline at each call saves the
  * calls (balls-2 -2.5%, rings-1 and teapot-1 -1.4% on the M3, for 1.2 KiB
- * more code), where there is
- * room for the copies: not with solids, whose code fills the 20 KiB
- * budget of the showpiece firmware. */
+ * more code), where there is room for the copies: not with solids, whose
+ * code fills the 20 KiB budget of the showpiece firmware. */
 #ifndef RT_INLINE_HOT
 #define RT_INLINE_HOT (!RT_USE_OBJECTS)
 #endif

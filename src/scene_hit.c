@@ -87,8 +87,7 @@ static RT_INLINE bool slab_axis(const slab_ray_t *s, const bvh_node_t *n, unsign
 
 /* Where the ray enters the node's box within [s->lo, hi] (hi from
  * r_slab_from_t_up), or a negative value when it does not (entries are at
- * least tmin > 0). One copy, called from every box test: the loops stay
- * small enough for a 16 KiB firmware. */
+ * least tmin > 0). */
 static RT_INLINE real_slab_t slab_entry_with(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi,
                                              bool any_parallel)
 {
@@ -107,6 +106,7 @@ RT_NOINLINE RT_COLD static real_slab_t slab_entry_parallel(const bvh_node_t *n, 
     return slab_entry_with(n, s, hi, true);
 }
 
+/* The box test: inline at each call or one shared copy (RT_HOT). */
 RT_HOT static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, real_slab_t hi)
 {
     if (s->parallel)
@@ -183,7 +183,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                 prim_ref_t ref = sc->bvh_prims[k];
                 bool lower = !found || ref < PRIM_REF(h->kind, h->index);
                 real_t t = lower ? r_next_up(h->t) : h->t;
-                if (hit_prim(sc, ref, r, tmin, &t, st, h) && (t < h->t || lower)) {
+                if (hit_prim(sc, ref, r, tmin, &t, st, h)) { /* t < h->t, or lower at h->t */
                     h->t = s.tmax = t;
                     h->kind = (uint8_t)PRIM_KIND(ref);
                     h->index = PRIM_INDEX(ref);
