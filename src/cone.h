@@ -32,9 +32,9 @@ vec3_t cone_normal(const cone_t *c, vec3_t p);
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
 static inline bool cone_prim_hit(const scene_t *sc, const cone_t *c, const ray_t *r, real_t tmin,
-                                 real_t *t, bool self, hit_t *h)
+                                 real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
-    (void)sc, (void)h;
+    (void)sc, (void)w, (void)h;
     return ray_hit_cone(c, r, tmin, t, self);
 }
 

@@ -5,6 +5,7 @@
  */
 #include "csg.h"
 
+#include "scratch.h"
 #include "shape.h"
 
 uint32_t solid_max_spans(const scene_t *sc, uint16_t root)
@@ -23,6 +24,8 @@ uint32_t solid_depth(const scene_t *sc, uint16_t root)
     uint32_t a = solid_depth(sc, n->a), b = solid_depth(sc, n->b);
     return 1 + (a > b ? a : b);
 }
+
+#if RT_USE_OBJECTS /* the tracer's half: the worker scratch has span lists only then */
 
 /* ---- CSG: boolean operations on sorted span lists ----------------------- */
 
@@ -88,12 +91,10 @@ static void csg_difference(const spans_t *a, const spans_t *b, spans_t *out)
     }
 }
 
-/* Scratch for the two children at each level of the tree: static, so CSG
- * costs no stack (the tracer is single-threaded and never re-enters). */
-static spans_t csg_scratch[RT_CSG_MAX_DEPTH + 1][2];
-
+/* The children's spans at each level of the tree go in the worker's
+ * scratch (scratch.h), so CSG costs no stack. */
 static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, const real_t win[2], spans_t *out,
-                        uint32_t level)
+                        ray_scratch_t *w, uint32_t level)
 {
     if (!(ref & CSG_NODE_BIT) || level >= RT_CSG_MAX_DEPTH) {
         if (!(ref & CSG_NODE_BIT))
@@ -103,13 +104,13 @@ static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, const r
         return;
     }
     const csg_node_t *n = &sc->csg_nodes[ref & ~CSG_NODE_BIT];
-    spans_t *a = &csg_scratch[level][0], *b = &csg_scratch[level][1];
-    solid_spans(sc, n->a, r, win, a, level + 1);
+    spans_t *a = &w->csg_spans[level][0], *b = &w->csg_spans[level][1];
+    solid_spans(sc, n->a, r, win, a, w, level + 1);
     if (a->n == 0 && n->op != CSG_UNION) {
         out->n = 0; /* nothing to intersect with or subtract from */
         return;
     }
-    solid_spans(sc, n->b, r, win, b, level + 1);
+    solid_spans(sc, n->b, r, win, b, w, level + 1);
     switch (n->op) {
     case CSG_UNION: csg_union(a, b, out); break;
     case CSG_INTERSECTION: csg_intersection(a, b, out); break;
@@ -118,15 +119,15 @@ static void solid_spans(const scene_t *sc, uint16_t ref, const ray_t *r, const r
 }
 
 bool ray_hit_object(const scene_t *sc, const object_t *obj, const ray_t *r, real_t tmin, real_t *t,
-                    uint16_t *shape, uint8_t *face, bool *flip)
+                    ray_scratch_t *w, uint16_t *shape, uint8_t *face, bool *flip)
 {
-    static spans_t spans;
+    spans_t *spans = &w->object_spans;
     /* only boundaries in (tmin, *t) count, and the boolean operations act
      * point by point: shapes may leave out what lies outside */
     const real_t win[2] = { tmin, *t };
-    solid_spans(sc, obj->root, r, win, &spans, 0);
-    for (uint32_t i = 0; i < spans.n; i++) {
-        const bound_t *b = spans.s[i].in.t > tmin ? &spans.s[i].in : &spans.s[i].out;
+    solid_spans(sc, obj->root, r, win, spans, w, 0);
+    for (uint32_t i = 0; i < spans->n; i++) {
+        const bound_t *b = spans->s[i].in.t > tmin ? &spans->s[i].in : &spans->s[i].out;
         if (b->t <= tmin)
             continue;
         if (b->t >= *t)
@@ -139,4 +140,4 @@ bool ray_hit_object(const scene_t *sc, const object_t *obj, const ray_t *r, real
     }
     return false;
 }
-
+#endif

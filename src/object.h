@@ -14,20 +14,20 @@
 typedef struct { FIELDS_object_t(RT_DECLARE_FIELD) } object_t;
 
 /* Nearest boundary of the object in (tmin, *t): sets *t, the shape, face
- * and flip of that boundary. */
+ * and flip of that boundary. w: the worker's span lists (scratch.h). */
 bool ray_hit_object(const scene_t *sc, const object_t *o, const ray_t *r, real_t tmin, real_t *t,
-                    uint16_t *shape, uint8_t *face, bool *flip);
+                    struct ray_scratch *w, uint16_t *shape, uint8_t *face, bool *flip);
 
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
 static inline bool object_prim_hit(const scene_t *sc, const object_t *o, const ray_t *r, real_t tmin,
-                                   real_t *t, bool self, hit_t *h)
+                                   real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
     uint16_t shape;
     uint8_t face;
     bool flip;
     (void)self; /* rays leave solids by an offset, never marked as from one */
-    if (!ray_hit_object(sc, o, r, tmin, t, &shape, &face, &flip))
+    if (!ray_hit_object(sc, o, r, tmin, t, w, &shape, &face, &flip))
         return false;
     if (h) {
         h->shape = shape;

@@ -40,9 +40,9 @@ vec3_t polygon_shading_normal(const scene_t *sc, const polygon_t *p, vec3_t poin
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
 static inline bool polygon_prim_hit(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,
-                                    real_t *t, bool self, hit_t *h)
+                                    real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
-    (void)self, (void)h;
+    (void)self, (void)w, (void)h;
     return ray_hit_polygon(sc, p, r, tmin, t);
 }
 

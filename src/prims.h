@@ -7,13 +7,14 @@
 #define PRIMS_H
 
 #include "geometry.h"
-#include "rt_stats.h"
+#include "scratch.h"
 
 /* Whether ray r meets primitive ref in (tmin, *t); sets *t and, for
  * objects, h's shape fields (h may be NULL for any-hit). `self`: the ray
- * starts on this primitive going in (only its far side counts). */
+ * starts on this primitive going in (only its far side counts). Counts
+ * the test in w->stats; w is the worker's scratch (CSG span lists). */
 static RT_INLINE bool prim_hit(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
-                               bool self, rt_stats_t *st, hit_t *h)
+                               bool self, ray_scratch_t *w, hit_t *h)
 {
     uint32_t i = PRIM_INDEX(ref);
     switch (PRIM_KIND(ref)) {
@@ -21,8 +22,8 @@ static RT_INLINE bool prim_hit(const scene_t *sc, prim_ref_t ref, const ray_t *r
     case PRIM_##KIND: \
         if (!(use)) \
             return false; \
-        st->prim_tests[PRIM_##KIND]++; \
-        return name##_prim_hit(sc, &sc->table[i], r, tmin, t, self, h);
+        w->stats.prim_tests[PRIM_##KIND]++; \
+        return name##_prim_hit(sc, &sc->table[i], r, tmin, t, self, w, h);
         RT_PRIM_KINDS(RT_PRIM_HIT_CASE)
 #undef RT_PRIM_HIT_CASE
     default:

@@ -16,6 +16,8 @@
 /* The scene (scene.h). Kind headers only pass it on, so an incomplete
  * type is enough for them. */
 typedef struct scene scene_t;
+/* A worker's scratch (scratch.h), passed through the kinds to CSG. */
+struct ray_scratch;
 
 /* A primitive of any kind: kind in the top 8 bits, table index below. */
 typedef uint32_t prim_ref_t;

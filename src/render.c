@@ -84,19 +84,26 @@ static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
     return 0;
 }
 
-static camera_t cam; /* static: one render at a time; keeps the stack small */
-static tracer_t tr;  /* likewise */
-static prim_ref_t last_blocker[RT_MAX_LIGHTS];
-static material_terms_t terms[RT_MAX_DEPTH];
+/* Everything a render writes, one per worker: static, so the stack stays
+ * small, and one each, so renders on other cores or threads share none. */
+struct rt_worker {
+    rt_render_ctx_t ctx; /* rt_render's */
+    camera_t cam;
+    tracer_t tr;
+    prim_ref_t last_blocker[RT_MAX_LIGHTS];
+    material_terms_t terms[RT_MAX_DEPTH];
+    ray_scratch_t scratch;
+};
+static struct rt_worker workers[RT_MAX_WORKERS];
 
 #if RT_USE_SPD
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
-static void corner_row(int32_t j, uint16_t x0, uint16_t w, colour_t *row)
+static void corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, colour_t *row)
 {
     for (int32_t i = 0; i <= w; i++) {
-        ray_t ray = camera_ray(&cam, x0 + i, j);
-        tr.stats->eye_rays++;
-        row[i] = trace_ray(&tr, &ray, 1, R_ONE);
+        ray_t ray = camera_ray(&wk->cam, x0 + i, j);
+        wk->scratch.stats.eye_rays++;
+        row[i] = trace_ray(&wk->tr, &ray, 1, R_ONE);
     }
 }
 
@@ -106,7 +113,7 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
     const colour_t *above = ctx->rows[0];
     colour_t *below = ctx->rows[1];
-    corner_row(y + 1, ctx->x0, ctx->w, below);
+    corner_row(ctx->worker, y + 1, ctx->x0, ctx->w, below);
     for (uint16_t x = 0; x < ctx->w; x++) {
         colour_t sum = c3_add(c3_add(above[x], above[x + 1]), c3_add(below[x], below[x + 1]));
         put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)));
@@ -119,10 +126,11 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 /* Line y of a normal frame: one eye ray per pixel. */
 static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
+    struct rt_worker *wk = ctx->worker;
     for (uint16_t x = 0; x < ctx->w; x++) {
-        ray_t ray = camera_ray(&cam, ctx->x0 + x, y);
-        tr.stats->eye_rays++;
-        put_pixel(line, x, ctx->sink->format, trace_ray(&tr, &ray, 1, R_ONE));
+        ray_t ray = camera_ray(&wk->cam, ctx->x0 + x, y);
+        wk->scratch.stats.eye_rays++;
+        put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE));
     }
 }
 
@@ -149,6 +157,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_append_int(err, RT_MAX_DEPTH);
         return -1;
     }
+    if (opts->worker >= RT_MAX_WORKERS) {
+        rt_error_set(err, 0, "worker exceeds RT_MAX_WORKERS - 1 = ");
+        rt_error_append_int(err, RT_MAX_WORKERS - 1);
+        return -1;
+    }
+    struct rt_worker *wk = &workers[opts->worker];
     rt_viewport_t vp = opts->viewport;
     if (vp.w == 0 && vp.h == 0)
         vp = (rt_viewport_t){ 0, 0, w, h };
@@ -199,22 +213,22 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 #endif
     /* another viewpoint: rt_camera_from_view made it a view_t */
     const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
-    const char *why = camera_init(&cam, view, nx, ny);
+    const char *why = camera_init(&wk->cam, view, nx, ny);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;
     }
     if (sc->n_bvh_nodes > 0)
-        camera_start_at_bounds(&cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
-    static rt_stats_t no_stats; /* stats == NULL: counted here, unread */
-    if (stats == 0)
-        stats = &no_stats;
-    tr = (tracer_t){ sc, depth, stats, opts->spd, r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)),
-                     last_blocker, terms };
+        camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
+    wk->tr = (tracer_t){ sc, depth, &wk->scratch, opts->spd,
+                         r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)), wk->last_blocker, wk->terms };
     for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
-        last_blocker[i] = PRIM_NONE;
+        wk->last_blocker[i] = PRIM_NONE;
     for (uint32_t i = 0; i < RT_MAX_DEPTH; i++)
-        terms[i].material = 0;
+        wk->terms[i].material = 0;
+    wk->scratch.stats = (rt_stats_t){ 0 };
+    ctx->worker = wk;
+    ctx->stats = stats;
 
     sink->flushing = false;
     int status = sink->begin ? sink->begin(sink, w, h) : 0;
@@ -227,14 +241,24 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->cur = 0;
 #if RT_USE_SPD
     if (opts->spd)
-        corner_row(vp.y, vp.x, vp.w, ctx->rows[0]);
+        corner_row(wk, vp.y, vp.x, vp.w, ctx->rows[0]);
 #endif
     return 0;
+}
+
+/* The worker's counts so far into the caller's stats. */
+static void add_stats(rt_render_ctx_t *ctx)
+{
+    rt_stats_t *part = &ctx->worker->scratch.stats;
+    if (ctx->stats)
+        rt_stats_add(ctx->stats, part);
+    *part = (rt_stats_t){ 0 };
 }
 
 static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 {
     rt_fb_sink_t *sink = ctx->sink;
+    int status = 0;
     for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
         uint16_t y = ctx->y++;
         uint8_t *line = sink->band[ctx->cur] + (size_t)(y - ctx->band_y) * ctx->pitch;
@@ -245,14 +269,15 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 #endif
             plain_line(ctx, y, line);
         if ((size_t)(y - ctx->band_y + 1) == ctx->band_lines || ctx->y == ctx->y_end) {
-            int status = flush_band(ctx, y);
+            status = flush_band(ctx, y);
             if (status != 0) {
                 ctx->y_end = ctx->y; /* done: nothing more to render */
-                return status;
+                break;
             }
         }
     }
-    return 0;
+    add_stats(ctx);
+    return status;
 }
 
 static RT_INLINE int render_end(rt_render_ctx_t *ctx)
@@ -264,12 +289,13 @@ static RT_INLINE int render_end(rt_render_ctx_t *ctx)
 RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
                       rt_error_t *err)
 {
-    rt_render_ctx_t ctx;
-    int status = render_begin(&ctx, sc, opts, sink, stats, err);
+    /* the worker's own context: off the stack, under the whole render */
+    rt_render_ctx_t *ctx = &workers[opts->worker < RT_MAX_WORKERS ? opts->worker : 0].ctx;
+    int status = render_begin(ctx, sc, opts, sink, stats, err);
     if (status != 0)
         return status;
-    status = render_step(&ctx, 0xFFFF);
-    return status != 0 ? status : render_end(&ctx);
+    status = render_step(ctx, 0xFFFF);
+    return status != 0 ? status : render_end(ctx);
 }
 
 RT_COLD int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,

@@ -125,6 +125,14 @@
 #define RT_USE_OBJECTS 1
 #endif
 
+/* Renders that may run at once, one per core or thread, each naming its
+ * own worker (rt_render_opts_t.worker): a worker is the camera, tracer
+ * caches, traversal stacks and counters one render writes, in static
+ * storage (render.c; about 0.7 KiB with solids compiled out). */
+#ifndef RT_MAX_WORKERS
+#define RT_MAX_WORKERS 1
+#endif
+
 /* Bounding volume hierarchy: nodes (at most 2 per primitive; the sum of
  * the kinds' capacities, RT_MAX_PRIMITIVES, is in prim_kinds.h) and the
  * depth of the tree, which bounds the traversal stack. */
@@ -237,6 +245,9 @@
 #define RT_HOT RT_NOINLINE
 #endif
 
+#if !(RT_MAX_WORKERS >= 1 && RT_MAX_WORKERS <= 255)
+#error "RT_MAX_WORKERS out of 1..255"
+#endif
 #if !(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16)
 #error "RT_MAX_DEPTH out of 1..16"
 #endif

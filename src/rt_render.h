@@ -53,20 +53,26 @@ typedef struct {
     bool spd;
     void *scratch;
     size_t scratch_bytes;
+    /* Which of the RT_MAX_WORKERS workers (rt_config.h) renders: renders
+     * running at the same time, on other cores or threads, each need
+     * their own (and their own sink and stats). 0 by default. */
+    uint8_t worker;
 } rt_render_opts_t;
 
 #define RT_RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * 3 * RT_REAL_BYTES)
 
-/* The whole frame (or opts->viewport) in one call: 0 on success; a sink's
- * non-zero status (begin or flush; end() is then not called), or -1 with
- * *err set. stats may be NULL. One render at a time (the camera and
- * tracer state are static). */
+
 /* Another viewpoint for scene sc: 0, or -1 with *err set when a position
  * lies beyond the range the reader allows the camera (RT_FAR_EXTENT_LOG2
  * times the scene's extent) or the view is degenerate (up along the line
  * of sight, from == at, angle out of (0, 180)). Linked only when called. */
 int rt_camera_from_view(rt_camera_t *cam, const rt_scene_t *sc, const rt_view_t *view, rt_error_t *err);
 
+/* The whole frame (or opts->viewport) in one call: 0 on success; a sink's
+ * non-zero status (begin or flush; end() is then not called), or -1 with
+ * *err set. stats may be NULL; the render's counts are added to it. One
+ * render at a time per worker (opts->worker): its camera and tracer state
+ * are static. */
 int rt_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
               rt_error_t *err);
 
@@ -85,7 +91,12 @@ int rt_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *
  * each band as it fills: 0, or a flush's non-zero status (the frame is
  * then over: rt_render_done, and end() is not to be called). end waits for
  * the flushes in flight and returns the sink's end() status. The pixels
- * are the same however the frame is stepped. */
+ * are the same however the frame is stepped; the counts are added to
+ * *stats at the end of each step.
+ *
+ * Two cores or threads render one frame as bands: each its own viewport
+ * of whole lines, its own worker, sink and stats (README, "Two cores").
+ * Every pixel is the same as in the whole frame. */
 typedef struct {
     rt_fb_sink_t *sink;
     size_t pitch, band_lines;
@@ -94,6 +105,8 @@ typedef struct {
     unsigned cur;              /* the band buffer being filled */
     bool spd;
     void *rows[2];             /* SPD corner rows (in the scratch) */
+    struct rt_worker *worker;  /* the core's state for this render (render.c) */
+    rt_stats_t *stats;         /* the caller's, or NULL */
 } rt_render_ctx_t;
 
 int rt_render_begin(rt_render_ctx_t *ctx, const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,

@@ -34,6 +34,9 @@ typedef struct {
 typedef void rt_stats_visit_fn(void *ctx, const char *key, uint64_t value);
 void rt_stats_each(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
 
+/* sum += part, counter by counter (workers' counts into one). */
+void rt_stats_add(rt_stats_t *sum, const rt_stats_t *part);
+
 /* Intersection tests of every kind together. */
 uint64_t rt_stats_tests(const rt_stats_t *st);
 

@@ -16,22 +16,10 @@
 #include "prims.h"
 
 /* Parallel axes and margins: RT_SLAB_PARALLEL, RT_SLAB_MARGIN (tolerance.h).
- * Distances along the ray are real_slab_t (real.h): in the fixed build a
- * 32-bit format chosen per ray, rounded down; a box is entered when the
- * largest near distance is not above the smallest far one, which stays
- * conservative: rounding down moves both by less than a unit. */
+ * A box is entered when the largest near distance (slab_ray_t, scratch.h)
+ * is not above the smallest far one, which stays conservative: rounding
+ * down moves both by less than a unit. */
 
-typedef struct {
-    real_t o[3];
-    real_t inv[3];         /* 1/d in r_slab_dist's scale; 0 on parallel axes */
-    real_t dir_abs[3];
-    uint8_t near[3], far[3]; /* byte offsets in bvh_node_t of the bound the
-                              * ray enters slab a by, and leaves it by */
-    uint8_t parallel;      /* bit a: |d_a| < RT_SLAB_PARALLEL */
-    int shift;             /* for r_slab_from_t_* */
-    real_slab_t lo;        /* tmin */
-    real_t tmax;           /* the current far end (parallel axes' drift) */
-} slab_ray_t;
 
 #define NODE_MIN(a) (offsetof(bvh_node_t, min) + (a) * sizeof(real_t))
 #define NODE_MAX(a) (offsetof(bvh_node_t, max) + (a) * sizeof(real_t))
@@ -117,24 +105,13 @@ RT_HOT static real_slab_t slab_entry(const bvh_node_t *n, const slab_ray_t *s, r
 /* A primitive against the ray; the primitive the ray leaves is skipped
  * unless the ray goes into it (ray.h). */
 RT_HOT static bool hit_prim(const scene_t *sc, prim_ref_t ref, const ray_t *r, real_t tmin, real_t *t,
-                     rt_stats_t *st, hit_t *h)
+                            ray_scratch_t *w, hit_t *h)
 {
     bool self = ref == r->from;
     if (self && !r->from_far)
         return false; /* leaving its outside, or a plane: cannot meet it again */
-    return prim_hit(sc, ref, r, tmin, t, self, st, h);
+    return prim_hit(sc, ref, r, tmin, t, self, w, h);
 }
-
-typedef struct {
-    uint32_t node;
-    real_slab_t entry;
-} bvh_stack_t;
-
-/* Traversal stacks in static storage, not on the call stack: neither
- * function re-enters itself, and the tracer runs one ray at a time (one
- * render at a time per program), so this keeps the stack budget. */
-static bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH];
-static uint32_t any_stack[RT_BVH_MAX_DEPTH];
 
 /* Whether traversal can start: the tree is not empty and the ray meets
  * the root's box (a ray from a surface in it does). A one-leaf tree needs
@@ -162,13 +139,13 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
     *second = right_first ? node + 1 : n->index;
 }
 
-bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
+bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
     if (!enter_root(sc, &s, r, tmin, h->t))
         return false;
-    bvh_stack_t *stack = nearest_stack;
+    bvh_stack_t *stack = w->nearest_stack; /* neither traversal re-enters itself */
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
     uint32_t path = r->leaf;          /* while on the way down to it */
@@ -183,7 +160,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
                 prim_ref_t ref = sc->bvh_prims[k];
                 bool lower = !found || ref < PRIM_REF(h->kind, h->index);
                 real_t t = lower ? r_next_up(h->t) : h->t;
-                if (hit_prim(sc, ref, r, tmin, &t, st, h)) { /* t < h->t, or lower at h->t */
+                if (hit_prim(sc, ref, r, tmin, &t, w, h)) { /* t < h->t, or lower at h->t */
                     h->t = s.tmax = t;
                     h->kind = (uint8_t)PRIM_KIND(ref);
                     h->index = PRIM_INDEX(ref);
@@ -218,7 +195,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
         real_slab_t best = r_slab_from_t_up(h->t, s.shift);
         do {
             if (sp == 0) {
-                st->bvh_nodes_visited += visited;
+                w->stats.bvh_nodes_visited += visited;
                 return found;
             }
             sp--;
@@ -228,17 +205,17 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_
 }
 
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
-                    rt_stats_t *st)
+                    ray_scratch_t *w)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
-    static slab_ray_t s; /* static like the stacks above */
+    slab_ray_t *s = &w->any_slab;
     real_t t = tmax;
-    if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, st, 0))
+    if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;
-    if (!enter_root(sc, &s, r, tmin, tmax))
+    if (!enter_root(sc, s, r, tmin, tmax))
         return false;
-    const real_slab_t hi = r_slab_from_t_up(tmax, s.shift);
-    uint32_t *stack = any_stack;
+    const real_slab_t hi = r_slab_from_t_up(tmax, s->shift);
+    uint32_t *stack = w->any_stack;
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
     uint32_t path = r->leaf;          /* as in scene_nearest */
@@ -249,7 +226,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         if (n->count) {
             for (uint32_t k = n->index; k < n->index + n->count && !blocked; k++) {
                 t = tmax;
-                blocked = hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, st, 0); /* any blocker will do */
+                blocked = hit_prim(sc, sc->bvh_prims[k], r, tmin, &t, w, 0); /* any blocker will do */
                 if (blocked)
                     *last_blocker = sc->bvh_prims[k];
             }
@@ -258,8 +235,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         } else {
             uint32_t a, b;
             children(n, node, path, &a, &b);
-            bool ha = path != RT_NO_LEAF || slab_entry(&nodes[a], &s, hi) >= 0;
-            bool hb = slab_entry(&nodes[b], &s, hi) >= 0;
+            bool ha = path != RT_NO_LEAF || slab_entry(&nodes[a], s, hi) >= 0;
+            bool hb = slab_entry(&nodes[b], s, hi) >= 0;
             if (ha && hb)
                 stack[sp++] = b;
             if (ha || hb) {
@@ -272,16 +249,16 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         node = stack[--sp];
         path = RT_NO_LEAF;
     }
-    st->bvh_nodes_visited += visited;
+    w->stats.bvh_nodes_visited += visited;
     return blocked;
 }
 
-bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st)
+bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
     bool found = false;
 #define RT_BRUTE_KIND(type, table, cap, KIND, name, use) \
     for (uint32_t i = 0; i < sc->n_##table; i++) { \
-        if (hit_prim(sc, PRIM_REF(PRIM_##KIND, i), r, tmin, &h->t, st, h)) { \
+        if (hit_prim(sc, PRIM_REF(PRIM_##KIND, i), r, tmin, &h->t, w, h)) { \
             h->kind = PRIM_##KIND; \
             h->index = i; \
             found = true; \

@@ -6,20 +6,21 @@
 #include <stdbool.h>
 
 #include "geometry.h"
-#include "rt_stats.h"
+#include "scratch.h"
 
-/* Nearest hit with tmin < t < h->t (set h->t to the ray's far limit). */
-bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);
+/* Nearest hit with tmin < t < h->t (set h->t to the ray's far limit).
+ * Each function counts into w->stats and uses w's stacks. */
+bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w);
 
 /* Whether anything lies on the ray with tmin < t < tmax (shadow rays).
  * *last_blocker (PRIM_NONE or a primitive of sc) is tried first and set
  * to the primitive found blocking: neighbouring shadow rays towards one
  * light tend to be blocked by the same one. */
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
-                    rt_stats_t *st);
+                    ray_scratch_t *w);
 
 /* scene_nearest without the BVH: every primitive, in table order (the
  * reference the traversal is tested against). */
-bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, rt_stats_t *st);
+bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w);
 
 #endif

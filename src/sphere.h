@@ -24,9 +24,9 @@ vec3_t sphere_normal(const sphere_t *s, vec3_t p);
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
 static inline bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
-                                   real_t *t, bool self, hit_t *h)
+                                   real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
-    (void)sc, (void)h;
+    (void)sc, (void)w, (void)h;
     return ray_hit_sphere(s, r, tmin, t, self);
 }
 

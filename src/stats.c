@@ -34,3 +34,11 @@ uint64_t rt_stats_tests(const rt_stats_t *st)
         n += st->prim_tests[k];
     return n;
 }
+
+/* over the table too: smaller than one add per counter */
+void rt_stats_add(rt_stats_t *sum, const rt_stats_t *part)
+{
+    for (size_t i = 0; i < sizeof counters / sizeof counters[0]; i++)
+        *(uint64_t *)(void *)((char *)sum + counters[i].offset) +=
+            *(const uint64_t *)(const void *)((const char *)part + counters[i].offset);
+}

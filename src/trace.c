@@ -112,7 +112,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         real_t ndl = v3_dot_in_range(s->n, ldir);
         if (ndl <= 0)
             continue;
-        tr->stats->shadow_rays++;
+        tr->scratch->stats.shadow_rays++;
 #if RT_USE_PATCHES
         /* the patch policy of docs/shading-model.md: a light below the
          * geometric surface is blocked by the patch itself (at t = 0) */
@@ -123,7 +123,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         /* the light's distance along the ray as (L - O) . ldir: within a
          * few ulps of |L - O| (ldir's error), without a square root */
         real_t dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
-        if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->stats))
+        if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
             add_light(&c, &t->kdc, s, ray, l, &shadow.dir, ndl, I);
     }
 #endif
@@ -141,7 +141,7 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight)
 RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
     hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
-    if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->stats))
+    if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->scratch))
         return false;
     surface_at(tr->scene, &h, ray, s);
     return true;
@@ -201,7 +201,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     if (!find_surface(tr, ray, &s))
         return tr->scene->background;
     if (depth == 1)
-        tr->stats->eye_hits++;
+        tr->scratch->stats.eye_hits++;
 
     colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
@@ -215,7 +215,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     /* SPD rule 8: a transmitting surface also spawns its reflection ray */
     if ((m->ks > 0 || (tr->spd_rules && m->t > 0)) && worth_tracing(tr, r_mul(weight, m->ks))) {
         reflected(ray, &s, cos_i, &next);
-        tr->stats->reflect_rays++;
+        tr->scratch->stats.reflect_rays++;
         colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
             c = colour_add_scaled(c, rc, m->ks);
@@ -223,7 +223,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
 #endif
 #if RT_USE_REFRACTION
     if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
-        tr->stats->refract_rays++;
+        tr->scratch->stats.refract_rays++;
         c = colour_add_scaled(c, trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t);
     }
 #endif

@@ -3,7 +3,7 @@
 #define TRACE_H
 
 #include "geometry.h"
-#include "rt_stats.h"
+#include "scratch.h"
 
 /* A material's Kd C and ambient term I Kd C, kept per ray depth: a hit
  * is mostly on the material the same depth of the previous pixel met. */
@@ -15,7 +15,7 @@ typedef struct {
 typedef struct {
     const scene_t *scene;
     int max_depth;      /* 1..RT_MAX_DEPTH; the eye ray has depth 1 */
-    rt_stats_t *stats;
+    ray_scratch_t *scratch; /* the worker's counters and traversal scratch */
     bool spd_rules;     /* SPD rule 8: reflect off transmitting surfaces too */
     real_t min_weight;  /* adaptive depth: skip child rays whose share of
                          * the pixel falls below this; 0 = off */

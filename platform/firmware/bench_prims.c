@@ -16,7 +16,7 @@
 int main(void)
 {
     static rt_error_t err;
-    static rt_stats_t st;
+    static ray_scratch_t st;
     static camera_t cam;
     port_init();
     port_icount_start();
@@ -41,7 +41,7 @@ int main(void)
             hits += scene_nearest(sc, &r, RT_T_MIN, &h, &st);
         }
     uint64_t total = port_icount_read() - t0 - rays_only;
-    uint64_t tests = rt_stats_tests(&st);
+    uint64_t tests = rt_stats_tests(&st.stats);
     report_value("rays", (uint64_t)GRID * GRID);
     report_value("hits", hits);
     report_value("tests", tests);

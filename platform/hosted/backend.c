@@ -116,7 +116,7 @@ static bool probe_with(const double o[3], const double d[3], bool brute, uint32_
     const scene_t *sc = &store.scene;
     double w = world_per_unit();
     ray_t r = probe_ray(o, d, leaf);
-    rt_stats_t st = { 0 };
+    static ray_scratch_t st; /* one probe at a time */
     hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
     if (!(brute ? scene_nearest_brute : scene_nearest)(sc, &r, RT_T_MIN, &h, &st))
         return false;
@@ -155,7 +155,7 @@ static bool probe_leaf(const double o[3], const double d[3], uint32_t leaf, prob
 static bool occluded(const double o[3], const double d[3], double tmax, uint32_t leaf, uint32_t *last_blocker)
 {
     ray_t r = probe_ray(o, d, leaf);
-    rt_stats_t st = { 0 };
+    static ray_scratch_t st; /* one probe at a time */
     prim_ref_t blocker = *last_blocker;
     bool b = scene_occluded(&store.scene, &r, RT_T_MIN, to_real(tmax / world_per_unit()), &blocker, &st);
     *last_blocker = blocker;

@@ -1,0 +1,46 @@
+/*
+ * scratch.h - what following rays writes, besides the tracer's caches:
+ * the counters, the BVH traversal's stacks and the CSG span lists. One
+ * per worker (render.c: RT_MAX_WORKERS), so renders running at once on
+ * two cores or threads never write the same byte; static storage, so the
+ * call stack stays small.
+ */
+#ifndef SCRATCH_H
+#define SCRATCH_H
+
+#include "rt_stats.h"
+#include "shape.h"
+
+/* A ray set up for slab tests (scene_hit.c). Distances along the ray are
+ * real_slab_t (real.h): in the fixed build a 32-bit format chosen per
+ * ray, rounded down. */
+typedef struct {
+    real_t o[3];
+    real_t inv[3];         /* 1/d in r_slab_dist's scale; 0 on parallel axes */
+    real_t dir_abs[3];
+    uint8_t near[3], far[3]; /* byte offsets in bvh_node_t of the bound the
+                              * ray enters slab a by, and leaves it by */
+    uint8_t parallel;      /* bit a: |d_a| < RT_SLAB_PARALLEL */
+    int shift;             /* for r_slab_from_t_* */
+    real_slab_t lo;        /* tmin */
+    real_t tmax;           /* the current far end (parallel axes' drift) */
+} slab_ray_t;
+
+/* A node waiting on the nearest-hit traversal's stack. */
+typedef struct {
+    uint32_t node;
+    real_slab_t entry;
+} bvh_stack_t;
+
+typedef struct ray_scratch {
+    rt_stats_t stats;                          /* added to the caller's after each step */
+    bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH]; /* scene_nearest */
+    uint32_t any_stack[RT_BVH_MAX_DEPTH];      /* scene_occluded */
+    slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
+#if RT_USE_OBJECTS
+    spans_t csg_spans[RT_CSG_MAX_DEPTH + 1][2]; /* both children, per CSG level */
+    spans_t object_spans;                      /* an object's whole span list */
+#endif
+} ray_scratch_t;
+
+#endif
