@@ -35,6 +35,7 @@ ifeq ($(filter $(BOARD),$(BOARDS)),)
 $(error BOARD=$(BOARD) is not a board of platform/*/board.mk: $(BOARDS))
 endif
 BOARD_FPU  :=
+BOARD_CORES := 1
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
@@ -65,17 +66,23 @@ PRUNE ?= 1
 # Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12, q24.
 CONFIG ?= q20
 CFG_FLAGS := $(CFG_$(CONFIG))
-# RAM: lines per band buffer (the firmware holds one band) and the stack
+# RAM: lines per band buffer (the firmware holds one band; on several
+# cores, two per core) and the stack (each core's)
 BAND_LINES ?= 4
 STACK_SIZE ?= 4096
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))
+# Cores that render: the board's (BOARD_CORES) unless CORES=1 asks for one.
+CORES ?= $(BOARD_CORES)
+ifeq ($(filter 1 $(BOARD_CORES),$(CORES)),)
+$(error CORES=$(CORES): BOARD=$(BOARD) renders on 1 or $(BOARD_CORES) cores)
+endif
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),
@@ -97,6 +104,7 @@ FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
 # The firmware's files: the core, the board-independent firmware, the
 # architecture's reset and exit, the board's own, the display sink.
 FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c \
+              $(if $(filter-out 1,$(CORES)),platform/firmware/bands.c) \
               platform/firmware/libc_min.c $(BOARD_SINK) $(wildcard platform/arch/$(BOARD_ARCH)/*.c) \
               $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)
 FW_SRC_DIRS = src platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))

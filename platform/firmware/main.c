@@ -11,9 +11,15 @@
 #include "port.h"
 #include "sink.h"
 #include "rt_render.h"
+#if BOARD_CORES > 1
+#include "bands.h"
+#endif
 
 #ifndef BOARD_BAND_LINES
 #define BOARD_BAND_LINES 4
+#endif
+#ifndef BOARD_CORES /* cores that render (board.mk; make CORES=1 renders on one) */
+#define BOARD_CORES 1
 #endif
 #ifndef BOARD_FORMAT
 #define BOARD_FORMAT RT_FB_RGB888
@@ -27,7 +33,9 @@ _Static_assert(BOARD_WIDTH >= 1 && BOARD_WIDTH <= RT_MAX_WIDTH, "BOARD_WIDTH out
 _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT out of range");
 _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out of 1..RT_MAX_DEPTH");
 
+#if BOARD_CORES == 1 /* (with more, each core has band buffers of its own: bands.c) */
 static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)];
+#endif
 
 /* The core's counters, keyed as on the host (stats.h). */
 static void report_counter(void *ctx, const char *key, uint64_t value)
@@ -51,19 +59,43 @@ int main(void)
                            .adaptive_milli = BOARD_ADAPTIVE_MILLI };
     static rt_stats_t st;
     static rt_fb_sink_t sink;
+    uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
+#if BOARD_CORES == 1
     sink_init(&sink, BOARD_FORMAT, band, sizeof band);
-
     uint64_t t0 = port_icount_read();
     int rc = rt_render(sc, &opts, &sink, &st, &err);
     uint64_t instr = port_icount_read() - t0 - sink_io_instructions();
+#else
+    sink_init(&sink, BOARD_FORMAT, 0, 0);
+    static bands_report_t rep;
+    int rc = bands_render(sc, &opts, &sink, &rep, &err);
+    uint64_t instr = 0; /* every core's render: the work, as one core counts it */
+    for (unsigned c = 0; c < BOARD_CORES; c++) {
+        instr += rep.core[c].render;
+        rt_stats_add(&st, &rep.core[c].stats);
+    }
+#endif
     if (rc != 0) {
         report_text(rc < 0 ? err.msg : "framebuffer sink failed");
         return 1;
     }
-    uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
     report_value("pixels", pixels);
     report_value("render_instructions", instr);
     report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
+#if BOARD_CORES > 1
+    static const char *const keys[][3] = { { "core0_render_instructions", "core0_wait_instructions", "core0_bands" },
+                                           { "core1_render_instructions", "core1_wait_instructions", "core1_bands" } };
+    _Static_assert(BOARD_CORES <= sizeof keys / sizeof keys[0], "a report key per core");
+    report_value("cores", BOARD_CORES);
+    report_value("cores_one_at_a_time", rep.one_at_a_time); /* 1: the counts below are exact */
+    for (unsigned c = 0; c < BOARD_CORES; c++) {
+        report_value(keys[c][0], rep.core[c].render);
+        report_value(keys[c][1], rep.core[c].wait);
+        report_value(keys[c][2], rep.core[c].bands);
+    }
+    report_value("critical_path_instructions", rep.critical_path);
+    report_value("critical_path_instructions_per_pixel", (rep.critical_path + pixels / 2) / pixels);
+#endif
     rt_stats_each(&st, report_counter, 0);
     report_value("stack_high_water", stack_high_water());
     report_value("stack_size", stack_size());

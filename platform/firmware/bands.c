@@ -1,0 +1,313 @@
+/*
+ * bands.c - one frame on several cores (bands.h).
+ *
+ * A band is a viewport of whole lines, rendered by rt_render on one core
+ * with that core's own worker (rt_render_opts_t.worker), into one of that
+ * core's own band buffers. When a core finishes a band it hands every
+ * band that is ready, in frame order, to the display sink, whichever core
+ * rendered it; a ticket lock keeps one core at a time in the sink. Besides
+ * the read-only scene, the cores share only the band counter, the
+ * buffers' states and the hand-over.
+ *
+ * Which core renders which band (BOARD_BAND_SPLIT):
+ *   0  interleave: core c takes bands c, c + N, c + 2N, ...
+ *   1  counter: each core takes the next band from a shared atomic counter.
+ *
+ * Counting. Under QEMU's -icount the cores run one at a time on one host
+ * thread, and the instruction counter is one clock for all of them. Each
+ * core therefore counts its own instructions per segment of work (a band,
+ * a hand-over) as the clock's advance minus the instructions the others
+ * counted in the meantime (they finish their segment before they let this
+ * core run again: see take_turn). From these counts each core keeps the
+ * clock it would have on the parallel board, where it waits only for a
+ * free band buffer (its band leaves when all bands above it have): the
+ * critical path is the latest core's clock at the end. Output costs no
+ * time on that timeline, as the single-core count leaves the sink out.
+ *
+ * Taking turns. With a shared counter, which core takes a band depends on
+ * when it asks; so when the cores run one at a time, a core asks only
+ * when its parallel clock is not ahead of the others' (the order parallel
+ * cores would ask in). When the cores truly run in parallel (QEMU's
+ * -accel tcg,thread=multi, a real chip) they never wait for a turn, and
+ * the counts are the clock's readings, not exact.
+ */
+#include "bands.h"
+
+#include "port.h"
+
+#ifndef BOARD_BAND_SPLIT
+#define BOARD_BAND_SPLIT 0
+#endif
+#define SLOTS 2 /* band buffers per core: one renders while the last waits its turn */
+#define BAND_BYTES (BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH))
+
+_Static_assert(BOARD_CORES == 2, "the port starts one more core (port_start_core1)");
+_Static_assert(BOARD_CORES <= RT_MAX_WORKERS, "one worker per core (RT_MAX_WORKERS)");
+_Static_assert(BOARD_BAND_SPLIT == 0 || BOARD_BAND_SPLIT == 1, "BOARD_BAND_SPLIT: 0 interleave, 1 counter");
+
+enum { SLOT_FREE, SLOT_READY };
+
+typedef struct {
+    volatile uint32_t state;
+    volatile uint32_t band;
+    volatile uint64_t ready_at;   /* parallel clock of its core when rendered */
+    volatile uint64_t emitted_at; /* ... when it went to the sink */
+} slot_t;
+
+static slot_t slots[BOARD_CORES][SLOTS];
+static uint8_t slot_px[BOARD_CORES][SLOTS][BAND_BYTES];
+static rt_fb_sink_t core_sink[BOARD_CORES];
+static rt_error_t core_err[BOARD_CORES];
+
+/* The frame, shared by the cores. */
+static struct {
+    const rt_scene_t *sc;
+    const rt_render_opts_t *opts;
+    rt_fb_sink_t *out;
+    bands_report_t *rep;
+    uint32_t n_bands;
+    volatile uint32_t next_band;          /* BOARD_BAND_SPLIT 1 */
+    volatile uint32_t next_emit;          /* the band the sink wants next */
+    volatile uint32_t ticket, serving;    /* the hand-over's lock */
+    volatile uint64_t last_emitted_at;
+    volatile uint64_t clock[BOARD_CORES]; /* parallel clocks, published */
+    volatile uint64_t busy[BOARD_CORES];  /* instructions counted so far */
+    volatile uint32_t done[BOARD_CORES];  /* no more bands to take */
+    volatile uint32_t blocked[BOARD_CORES]; /* waiting for a free buffer */
+    volatile uint32_t alive, go, spin;    /* start-up hand-shake */
+    volatile int status;                  /* first failure, any core */
+} fr;
+
+static uint64_t others_busy(unsigned c)
+{
+    uint64_t n = 0;
+    for (unsigned o = 0; o < BOARD_CORES; o++)
+        if (o != c)
+            n += fr.busy[o];
+    return n;
+}
+
+/* A segment of this core's work: started at clock reading t0 when the
+ * others had counted other0. */
+typedef struct {
+    uint64_t t0, other0;
+} segment_t;
+
+static segment_t segment_start(unsigned c) { return (segment_t){ port_icount_read(), others_busy(c) }; }
+
+/* This core's instructions in the segment, now counted as its own. */
+static uint64_t segment_end(unsigned c, segment_t s)
+{
+    uint64_t elapsed = port_icount_read() - s.t0, others = others_busy(c) - s.other0;
+    uint64_t own = fr.rep->one_at_a_time && others < elapsed ? elapsed - others : elapsed;
+    fr.busy[c] += own;
+    return own;
+}
+
+static void publish_clock(unsigned c, uint64_t clock)
+{
+    fr.clock[c] = clock;
+    port_signal_event();
+}
+
+/* When the cores run one at a time: returns once no other core still
+ * taking bands is behind this one on the parallel timeline (ties: the
+ * lower core first). A core waiting for a buffer is not waited for: its
+ * clock will move past the band this one is about to take. */
+static void take_turn(unsigned c, uint64_t clock)
+{
+    publish_clock(c, clock);
+    for (;;) {
+        bool mine = true;
+        for (unsigned o = 0; o < BOARD_CORES; o++) {
+            if (o == c || fr.done[o] || fr.blocked[o])
+                continue;
+            uint64_t theirs = fr.clock[o];
+            if (theirs < clock || (theirs == clock && o < c))
+                mine = false;
+        }
+        if (mine || fr.status != 0)
+            return;
+        port_wait_event();
+    }
+}
+
+static slot_t *ready_slot(uint32_t band, unsigned *core, unsigned *k)
+{
+    for (unsigned c = 0; c < BOARD_CORES; c++)
+        for (unsigned i = 0; i < SLOTS; i++)
+            if (slots[c][i].state == SLOT_READY && slots[c][i].band == band) {
+                *core = c;
+                *k = i;
+                return &slots[c][i];
+            }
+    return 0;
+}
+
+/* Hands every ready band, in frame order, to the sink. */
+static void hand_over(unsigned c)
+{
+    segment_t seg = segment_start(c);
+    uint32_t me = port_atomic_add(&fr.ticket, 1);
+    while (fr.serving != me)
+        port_wait_event();
+    __atomic_thread_fence(__ATOMIC_SEQ_CST); /* what the last holder wrote, seen */
+    unsigned oc, k;
+    slot_t *s;
+    while (fr.status == 0 && (s = ready_slot(fr.next_emit, &oc, &k)) != 0) {
+        uint16_t y = (uint16_t)(fr.next_emit * BOARD_BAND_LINES);
+        uint16_t y2 = (uint16_t)(y + BOARD_BAND_LINES - 1 < BOARD_HEIGHT ? y + BOARD_BAND_LINES - 1 : BOARD_HEIGHT - 1);
+        rt_fb_area_t area = { 0, y, BOARD_WIDTH - 1, y2 };
+        fr.out->flushing = true;
+        int st = fr.out->flush(fr.out, &area, slot_px[oc][k]);
+        while (st == 0 && fr.out->flushing)
+            if (fr.out->wait)
+                fr.out->wait(fr.out);
+        if (st != 0)
+            fr.status = st;
+        uint64_t at = s->ready_at > fr.last_emitted_at ? s->ready_at : fr.last_emitted_at;
+        fr.last_emitted_at = s->emitted_at = at;
+        fr.next_emit++;
+        __atomic_thread_fence(__ATOMIC_SEQ_CST); /* the pixels are out before the buffer is free */
+        s->state = SLOT_FREE;
+    }
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    fr.serving = me + 1;
+    port_signal_event();
+    (void)segment_end(c, seg); /* counted as busy (so the others' counts stay exact), not as render */
+}
+
+static int slot_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
+{
+    (void)a, (void)px;
+    rt_fb_flush_ready(s); /* the pixels stay in the buffer until hand_over */
+    return 0;
+}
+
+/* Core c's share of the frame. */
+static void render_bands(unsigned c)
+{
+    bands_core_t *me = &fr.rep->core[c];
+    uint64_t clock = 0;
+    uint32_t nth = 0; /* bands this core has taken */
+    for (unsigned k = 0;; k = (k + 1) % SLOTS) {
+        slot_t *s = &slots[c][k];
+        if (s->state != SLOT_FREE) {
+            fr.blocked[c] = 1;
+            port_signal_event();
+            while (s->state != SLOT_FREE && fr.status == 0)
+                port_wait_event();
+            fr.blocked[c] = 0;
+        }
+        if (s->emitted_at > clock) { /* on the parallel board it waited for that */
+            me->wait += s->emitted_at - clock;
+            clock = s->emitted_at;
+        }
+        if (fr.rep->one_at_a_time)
+            take_turn(c, clock);
+        uint32_t band = BOARD_BAND_SPLIT ? port_atomic_add(&fr.next_band, 1) : c + nth * BOARD_CORES;
+        if (band >= fr.n_bands || fr.status != 0)
+            break;
+        nth++;
+
+        rt_render_opts_t o = *fr.opts;
+        uint16_t y = (uint16_t)(band * BOARD_BAND_LINES);
+        o.viewport = (rt_viewport_t){ 0, y, BOARD_WIDTH,
+                                      (uint16_t)(BOARD_HEIGHT - y < BOARD_BAND_LINES ? BOARD_HEIGHT - y
+                                                                                     : BOARD_BAND_LINES) };
+        o.worker = (uint8_t)c;
+        rt_fb_sink_t *sink = &core_sink[c];
+        sink->band[0] = slot_px[c][k];
+        segment_t seg = segment_start(c);
+        int st = rt_render(fr.sc, &o, sink, &me->stats, &core_err[c]);
+        uint64_t cost = segment_end(c, seg);
+        if (st != 0) {
+            fr.status = st;
+            break;
+        }
+        me->render += cost;
+        me->bands++;
+        clock += cost;
+        s->band = band;
+        s->ready_at = clock;
+        __atomic_thread_fence(__ATOMIC_SEQ_CST); /* the band is whole before it is ready */
+        s->state = SLOT_READY;
+        publish_clock(c, clock);
+        hand_over(c);
+    }
+    fr.clock[c] = clock;
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    fr.done[c] = 1;
+    port_signal_event();
+}
+
+/* Core 1 starts here, on its own stack. */
+static void core1_entry(void)
+{
+    fr.alive = 1;
+    port_signal_event();
+    while (!fr.go) { /* counted by core 0 to tell how the cores run */
+        fr.spin++;
+        port_wait_event();
+    }
+    render_bands(1);
+    for (;;)
+        port_wait_event();
+}
+
+/* Whether the cores run one at a time: core 1 counts while it waits to
+ * start, and a core that does not count while core 0 spins is not
+ * running. Three tries, the majority wins (a QEMU time slice may end
+ * inside one). */
+static bool cores_one_at_a_time(void)
+{
+    unsigned stood_still = 0;
+    for (unsigned i = 0; i < 3; i++) {
+        uint32_t before = fr.spin;
+        for (volatile uint32_t n = 0; n < 20000; n++)
+            ;
+        stood_still += fr.spin == before;
+    }
+    return stood_still >= 2;
+}
+
+int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, bands_report_t *rep,
+                 rt_error_t *err)
+{
+    uint16_t h = opts->height;
+    fr.sc = sc;
+    fr.opts = opts;
+    fr.out = sink;
+    fr.rep = rep;
+    fr.n_bands = (uint32_t)(h + BOARD_BAND_LINES - 1) / BOARD_BAND_LINES;
+    for (unsigned c = 0; c < BOARD_CORES; c++) {
+        core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .band_bytes = BAND_BYTES, .flush = slot_flush };
+        core_sink[c].band[0] = slot_px[c][0];
+    }
+    int st = sink->begin ? sink->begin(sink, opts->width, h) : 0;
+    if (st != 0)
+        return st;
+    port_start_core1(core1_entry);
+    while (!fr.alive)
+        port_wait_event();
+    rep->one_at_a_time = cores_one_at_a_time();
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    fr.go = 1;
+    port_signal_event();
+    render_bands(0);
+    for (unsigned c = 1; c < BOARD_CORES; c++)
+        while (!fr.done[c])
+            port_wait_event();
+    for (unsigned c = 0; c < BOARD_CORES; c++) {
+        uint64_t end = rep->core[c].render + rep->core[c].wait;
+        if (end > rep->critical_path)
+            rep->critical_path = end;
+    }
+    if (fr.status != 0) {
+        for (unsigned c = 0; c < BOARD_CORES; c++)
+            if (core_err[c].msg[0])
+                *err = core_err[c];
+        return fr.status;
+    }
+    return sink->end ? sink->end(sink) : 0;
+}

@@ -1,0 +1,31 @@
+/*
+ * bands.h - one frame on several cores (BOARD_CORES > 1): bands of
+ * BOARD_BAND_LINES lines, rendered on every core and handed to the
+ * display sink in order, so the sink sees the stream one core sends.
+ */
+#ifndef BANDS_H
+#define BANDS_H
+
+#include "rt_render.h"
+
+/* What one core did, in instructions (each core's own: see bands.c). */
+typedef struct {
+    uint64_t render; /* inside its band renders */
+    uint64_t wait;   /* on the parallel timeline: for a free band buffer */
+    uint32_t bands;
+    rt_stats_t stats;
+} bands_core_t;
+
+typedef struct {
+    bands_core_t core[BOARD_CORES];
+    uint64_t critical_path; /* the latest core's render + wait */
+    bool one_at_a_time;     /* the cores ran in turns (QEMU -icount): counts exact */
+} bands_report_t;
+
+/* Renders the frame of opts (width, height, depth; no viewport) on all
+ * cores into sink: core 0 calls this, it starts the others. 0, -1 with
+ * *err set, or the sink's failure. */
+int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, bands_report_t *rep,
+                 rt_error_t *err);
+
+#endif
