@@ -244,6 +244,7 @@ static void render_bands(unsigned c)
 /* Core 1 starts here, on its own stack. */
 static void core1_entry(void)
 {
+    stack_paint(); /* core 1's stack, as main does core 0's */
     fr.alive = 1;
     port_signal_event();
     while (!fr.go) { /* counted by core 0 to tell how the cores run */

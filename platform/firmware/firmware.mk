@@ -13,6 +13,10 @@
 #   BOARD_CPU       compiler flags for the core (-mcpu=cortex-m3 -mthumb)
 #   BOARD_FPU       flags of a hard-float build (empty: no FPU)
 #   BOARD_QEMU      QEMU and its machine (qemu-system-arm -M mps2-an385)
+#   BOARD_ICOUNT    its -icount option, if not shift=0 (a board with two
+#                   cores: shift=0,sleep=off, which makes the run repeatable);
+#                   make board-run QEMU_ACCEL="-accel tcg,thread=multi" runs
+#                   without icount instead (cores in parallel; no counts)
 #   BOARD_PACKAGES  the Debian packages it needs (make run installs them)
 #   BOARD_CLOCK_HZ  the core's clock, for the time make run prints
 #   BOARD_BACKENDS  what BACKEND may be (fixed, float, double)
@@ -36,6 +40,7 @@ $(error BOARD=$(BOARD) is not a board of platform/*/board.mk: $(BOARDS))
 endif
 BOARD_FPU  :=
 BOARD_CORES := 1
+BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
@@ -192,7 +197,7 @@ RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMA
 
 # Run the built firmware: RUN_OUT gets the image, stdout the report.
 board-run:
-	@QEMU="$(BOARD_QEMU)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
+	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
 
 run: deps-board
 	$(MAKE) build/host/rt $(FW_ELF)

@@ -100,6 +100,10 @@ int main(void)
     report_value("stack_high_water", stack_high_water());
     report_value("stack_size", stack_size());
     int guard = stack_guard_intact();
+#if BOARD_CORES > 1
+    report_value("core1_stack_high_water", stack_high_water_core(1));
+    guard &= stack_guard_intact_core(1);
+#endif
     report_value("stack_guard_intact", (uint64_t)guard);
     if (!guard)
         return 3;

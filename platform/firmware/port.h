@@ -49,4 +49,45 @@ int stack_guard_intact(void);
  * format), for fault handlers and ports. */
 void report_text(const char *text);
 
+/* ---- a port with more than one core ------------------------------------- */
+/*
+ * Only a board with a second core provides these (mps2-an521: two
+ * Cortex-M33); its board.mk sets BOARD_CFLAGS += -DBOARD_CORES=2, and a
+ * single-core port neither defines nor links any of them. Both cores run
+ * the same image, so the console and port_exit() stay core 0's: core 1
+ * reports through shared memory. port_icount_read() may be called from
+ * either core (under QEMU the counter is one virtual clock, so it counts
+ * both cores' instructions, not the caller's).
+ */
+
+/* Which core runs the caller: 0 (the one reset starts in main) or 1. */
+unsigned port_core_id(void);
+
+/* Core 1 starts running entry() on its own stack (the board's .stack1);
+ * entry should call stack_paint() first, as main does. Call once. If
+ * entry returns, core 1 parks in port_wait_event() for good. */
+void port_start_core1(void (*entry)(void));
+
+/* Sleeps until the other core signals (or any other event): it may also
+ * return at once or spuriously, so callers loop on their own condition. */
+void port_wait_event(void);
+
+/* Wakes the other core out of port_wait_event(), after making the
+ * caller's earlier stores visible to it (barrier first, then the event),
+ * so a woken core re-reading its condition sees them. */
+void port_signal_event(void);
+
+/* *p += v as one indivisible step, returning the old value; a full
+ * barrier either side, so plain stores before it are seen by whoever
+ * reads the new value (hand-out of work, done counts). */
+uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v);
+
+/* Provided by platform/firmware/stack.c when BOARD_CORES > 1: the stack
+ * functions above measure core 0's stack (sections.ld's .stack); these
+ * measure either core's (1: the board's .stack1, same size and guard).
+ * stack_paint() paints whichever of the two stacks it is called on. */
+uint32_t stack_high_water_core(unsigned core);
+uint32_t stack_size_core(unsigned core);
+int stack_guard_intact_core(unsigned core);
+
 #endif

@@ -1,0 +1,22 @@
+# board.mk - ARM MPS2 AN521 under QEMU: the SSE-200 subsystem, two
+# Cortex-M33 at 20 MHz, run entirely Secure. Core 0 has neither the FPU
+# nor the DSP extension (QEMU's SSE-200 gives them to core 1 only: MVFR0
+# reads 0 on core 0, a VFP instruction faults NOCP there and a DSP one
+# UNDEFINSTR), and both cores run one image, so every build is soft-float
+# and without DSP instructions. Variables: platform/firmware/firmware.mk.
+BOARD_ARCH     := cortex-m
+BOARD_CROSS    := arm-none-eabi-
+BOARD_CPU      := -mcpu=cortex-m33+nofp+nodsp -mthumb
+BOARD_QEMU     := qemu-system-arm -M mps2-an521
+# sleep=off: with two cores running, the round-robin switch points (and
+# so the run) are the same every time; with sleep on they vary
+BOARD_ICOUNT   := shift=0,sleep=off
+BOARD_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
+BOARD_CLOCK_HZ ?= 20000000
+# no FPU usable by both cores: float and double are soft-float
+BOARD_BACKENDS := fixed float double
+BOARD_SRC      := platform/mps2-an521/board.c
+BOARD_LD       := platform/mps2-an521/link.ld
+# both cores render (platform/firmware/bands.c, with port.h's multi-core
+# part); make CORES=1 renders on core 0 alone
+BOARD_CORES    := 2
