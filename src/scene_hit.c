@@ -250,6 +250,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         path = RT_NO_LEAF;
     }
     w->stats.bvh_nodes_visited += visited;
+    if (!blocked)
+        *last_blocker = PRIM_NONE; /* lit: trying it on the next ray would likely be wasted */
     return blocked;
 }
 

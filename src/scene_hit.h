@@ -14,8 +14,9 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 
 /* Whether anything lies on the ray with tmin < t < tmax (shadow rays).
  * *last_blocker (PRIM_NONE or a primitive of sc) is tried first and set
- * to the primitive found blocking: neighbouring shadow rays towards one
- * light tend to be blocked by the same one. */
+ * to the primitive found blocking, or to PRIM_NONE when nothing blocks:
+ * neighbouring shadow rays towards one light tend to be blocked by the
+ * same one, and a lit ray's neighbours tend to be lit. */
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
                     ray_scratch_t *w);
 
