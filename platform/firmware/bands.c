@@ -13,9 +13,9 @@
  *   0  interleave: core c takes bands c, c + N, c + 2N, ...
  *   1  counter (the default): each core takes the next band from a shared
  *      atomic counter. On mps2-an521 with one-line bands its critical path
- *      was 0.4967 / 0.4963 / 0.4987 of one core's instructions on balls-2,
- *      rings-1 and the showpiece at 64x64, against 0.4967 / 0.5010 /
- *      0.5055 interleaved (README, "Two cores").
+ *      was 0.5045 / 0.5066 / 0.5018 of one core's instructions on balls-2,
+ *      rings-1 and the showpiece at 64x64, against 0.5045 / 0.5109 /
+ *      0.5093 interleaved (README, "Two cores").
  *
  * Counting. Under QEMU's -icount the cores run one at a time on one host
  * thread, and the instruction counter is one clock for all of them. Each
