@@ -29,6 +29,7 @@ run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/board-tests.sh "$B/rt"
 run tests/ports-tests.sh "$B/rt"
+run tests/cores-tests.sh "$B/rt"
 run tests/profile-tests.sh
 run tests/board-oled-test.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer

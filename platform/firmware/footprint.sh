@@ -15,10 +15,11 @@ ${CROSS:-arm-none-eabi-}size -A "$elf" | awk '
 lim=$(${CROSS:-arm-none-eabi-}nm "$elf" | awk '$3 == "__stack_limit" { print $1 }')
 top=$(${CROSS:-arm-none-eabi-}nm "$elf" | awk '$3 == "__stack_top" { print $1 }')
 echo "ram:   stack region $((0x${top:-0} - 0x${lim:-0})) bytes (separate)"
-hex=$(${CROSS:-arm-none-eabi-}nm -S "$elf" | awk '$4 == "band" { print $2 }')
-echo "ram:   of which band buffer $((0x${hex:-0})) bytes"
+# band buffers: main.c's one, or bands.c's two per core on a multi-core board
+hex=$(${CROSS:-arm-none-eabi-}nm -S "$elf" | awk '$4 == "band" || $4 == "slot_px" { print $2 }')
+echo "ram:   of which band buffers $((0x${hex:-0})) bytes"
 python3 "$here/stack_usage.py" "$objdir" --root main --depth "${DEPTH:-5}" \
     --indirect "${SINK_CALLBACKS:-stream_begin,stream_flush,stream_end}"
 if [ -n "$report" ] && [ -f "$report" ]; then
-    grep -E '^stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'
+    grep -E '^(core1_)?stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'
 fi
