@@ -165,6 +165,8 @@ bench: deps
 	@sh bench/lib-size.sh
 	@echo
 	python3 bench/boards_bench.py
+	@echo
+	python3 bench/cores_bench.py
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

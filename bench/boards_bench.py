@@ -14,7 +14,9 @@ instruction counts) and records
   - PSNR and max channel error against the exact double reference (the
     host's rt --double at the same size, in the board's pixel format);
   - code (text + vectors + exidx) and static RAM (data + bss) of the ELF.
-It writes bench/boards.md and bench/boards.csv.
+A board with two cores renders on one here (CORES=1), like the others;
+bench/cores_bench.py measures its split. It writes bench/boards.md and
+bench/boards.csv.
 
   bench/boards_bench.py [--boards a,b] [--scenes a,b] [--cycles-scenes a,b] [--no-cycles] [--update]
 """
@@ -65,7 +67,9 @@ def code_ram(cross, elf):
 
 
 def measure(board, backend, scene, size):
-    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size, "DEPTH=5"]
+    # one core on every board (a two-core board's split: bench/cores_bench.py)
+    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size, "DEPTH=5",
+            "CORES=1"]
     r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
     if r.returncode:
         return None

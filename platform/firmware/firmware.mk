@@ -227,4 +227,4 @@ print-fwdir:
 
 # the board's facts for scripts: make -s board-info BOARD=..
 board-info:
-	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT)"
+	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT) cores=$(BOARD_CORES)"
