@@ -214,13 +214,19 @@ size: $(FW_ELF)
 # Instructions per function, group and ray kind inside the render, under
 # QEMU (bench/profile.py), with the display sink apart as the firmware's
 # count has it; fails when the total or the ray counts disagree with the
-# firmware's report. The figures also go to PROFILE_JSON.
+# firmware's report. The figures also go to PROFILE_JSON. One core: a
+# two-core board is profiled with CORES=1 (the trace follows one CPU).
 PROFILE_JSON ?= $(FW_DIR)/profile-$(BACKEND).json
+ifneq ($(CORES),1)
+profile: deps-board
+	@$(MAKE) -s profile CORES=1 SIZE=$(SIZE)
+else
 profile: deps-board
 	@$(MAKE) -s $(FW_ELF) SIZE=$(SIZE)
 	python3 bench/profile.py $(FW_ELF) --machine $(BOARD) --qemu $(word 1,$(BOARD_QEMU)) \
 	    --sink $(BOARD_SINK_CALLBACKS) --json $(PROFILE_JSON) --check
 	@echo "JSON: $(PROFILE_JSON)"
+endif
 
 print-fwdir:
 	@echo $(FW_DIR)
