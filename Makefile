@@ -15,8 +15,9 @@
 #                   counters (bench/profile.py; same variables as make run,
 #                   SIZE 64x64 unless given; about 35 s for balls-2)
 #   make test       install missing packages, build, run every test
-#   make bench      run time against error over numeric configurations, BVH
-#                   scaling, code size with and without pruning, every board and backend (about 45 min)
+#   make bench      run time against error over numeric configurations, the
+#                   host's speed-up with rt --threads 2, BVH scaling, code size
+#                   with and without pruning, every board and backend (about 45 min)
 #   make bench-quick  a subset of the first (< 2 min)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
@@ -165,6 +166,8 @@ deps-board:
 bench: deps
 	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
 	python3 bench/run_bench.py --board $(BOARD)
+	@echo
+	python3 bench/threads_bench.py
 	@echo
 	@BOARD=$(BOARD) sh bench/bvh-bench.sh
 	@echo

@@ -160,10 +160,12 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
 
     static band_job_t job; /* one render at a time */
     job = (band_job_t){ .be = be, .opts = opts, .vp = vp, .img = img, .progress = progress };
-    /* A frame or viewport the core would refuse is not cut: one band, as
-     * given, for the core's own message. */
-    job.split = fw >= 1 && fh >= 1 && fw <= RT_MAX_WIDTH && fh <= RT_MAX_HEIGHT && vp.w >= 1 && vp.h >= 1 &&
-                vp.x < fw && vp.y < fh && vp.w <= fw - vp.x && vp.h <= fh - vp.y;
+    bool valid = fw >= 1 && fh >= 1 && fw <= RT_MAX_WIDTH && fh <= RT_MAX_HEIGHT && vp.w >= 1 && vp.h >= 1 &&
+                 vp.x < fw && vp.y < fh && vp.w <= fw - vp.x && vp.h <= fh - vp.y;
+    /* One thread renders the viewport as one band: the render and counts
+     * of one call of the core, as the board's. A frame or viewport the
+     * core would refuse is not cut either, for the core's own message. */
+    job.split = valid && threads > 1;
     job.n_bands = job.split ? (vp.h + BANDS_LINES - 1u) / BANDS_LINES : 1;
     job.fail_band = job.n_bands;
     atomic_init(&job.next_band, 0);
@@ -172,7 +174,7 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     pthread_mutex_init(&job.lock, NULL);
 
     *img = (image_t){ 0, 0, NULL };
-    if (job.split) {
+    if (valid) {
         img->width = vp.w;
         img->height = vp.h;
         img->rgb = malloc((size_t)vp.w * vp.h * 3);
@@ -186,7 +188,7 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
      * colours (sized for the widest real_t, double) */
     size_t band_bytes = BANDS_LINES * RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1);
     size_t scratch_bytes = 2 * ((size_t)(vp.w ? vp.w : RT_MAX_WIDTH) + 1) * 3 * sizeof(double);
-    bool ok = t != NULL && (img->rgb || !job.split);
+    bool ok = t != NULL && (img->rgb || !valid);
     for (unsigned i = 0; ok && i < threads; i++) {
         t[i].job = &job;
         t[i].index = i;

@@ -8,10 +8,11 @@
 #include "backend.h"
 #include "image.h"
 
-/* Lines per band (bands.c says why this many). Fixed, so the bands, and
- * with them the counts of --stats (each band starts the core's caches
- * afresh; in SPD mode each recomputes its top row of corners), are the
- * same for any number of threads. */
+/* Lines per band with two threads or more (bands.c says why this many).
+ * Fixed, so the bands, and with them the counts of --stats (each band
+ * starts the core's caches afresh; in SPD mode each recomputes its top
+ * row of corners), are the same for any number of threads from 2; one
+ * thread renders the viewport as one band. */
 #ifndef BANDS_LINES
 #define BANDS_LINES 16
 #endif
@@ -22,7 +23,7 @@ unsigned bands_default_threads(void);
 /* Renders opts (its viewport, or the whole frame: opts->width x height,
  * 0 for the scene's resolution) with `threads` threads (1..RT_MAX_WORKERS;
  * one of them the caller's), the bands handed out in order by an atomic
- * counter. Thread i renders as worker i, into its own sink, which expands
+ * counter (one thread: one band, the viewport; the same code). Thread i renders as worker i, into its own sink, which expands
  * its lines in `format` straight into their rows of *img (allocated here:
  * the viewport's size), and its own stats; *stats gets their sum.
  * opts->worker, scratch and scratch_bytes are the threads' own. The
