@@ -8,7 +8,12 @@ backend), rendered by build/host/rt with
     (platform/hosted/bands.c); each band recomputes its top row of SPD
     corner rays, which the eye-ray column shows.
 Time: render_seconds of --stats (wall time of the render, without loading
-the scene), median of RUNS runs after a warm-up, the two taken in turn. The host may be shared: a run during which other processes used
+the scene), median of RUNS runs after a warm-up, the two taken in turn;
+beside it threads_busy (the share of 2 x the wall time the two threads
+spent rendering) and the threads' time together against one thread's
+(2 x busy x time / one thread's time: the extra corner rows, and the
+threads slowing each other down on shared caches or a shared host), so
+speed-up = 2 x busy / that. The host may be shared: a run during which other processes used
 more than a tenth of a core is repeated (up to TRIES times, then kept and
 counted in the table's last column). It writes bench/threads.md and
 bench/threads.csv.
@@ -29,7 +34,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "build", "bench-threads")
 SIZE = "512x512"
-RUNS = 5
+RUNS = 7
 TRIES = 10
 OTHER_MAX = 0.1  # of a core, on average over the run
 THREADS = [1, 2]
@@ -44,7 +49,7 @@ def busy_seconds():
 
 
 def render(scene, threads):
-    """(render_seconds, eye_rays, quiet): the run repeated while others were busy."""
+    """(render_seconds, eye_rays, threads_busy, quiet): the run repeated while others were busy."""
     cmd = ["build/host/rt", scene, "-o", os.path.join(OUT, "out.png"), "--size", SIZE, "--spd", "--fixed",
            "--threads", str(threads), "--quiet", "--stats"]
     for attempt in range(TRIES):
@@ -55,11 +60,12 @@ def render(scene, threads):
         other = (b1 - b0) - mine
         secs = float(re.search(r"^render_seconds\s+(\S+)$", p.stderr, re.M).group(1))
         eye = int(re.search(r"^eye_rays\s+(\d+)$", p.stderr, re.M).group(1))
+        busy = float(re.search(r"^threads_busy\s+(\S+)$", p.stderr, re.M).group(1))
         quiet = other <= OTHER_MAX * (t1 - t0) + 2.0 / TICK  # a tick or two of noise
         if quiet:
             break
         time.sleep(1 + attempt)
-    return secs, eye, quiet
+    return secs, eye, busy, quiet
 
 
 def cpu_name():
@@ -93,22 +99,27 @@ def main():
         for n in THREADS:
             render(scene, n)  # warm-up
         times = {n: [] for n in THREADS}
+        busy = []
         eyes, noisy = {}, 0
         for _ in range(args.runs):
             for n in THREADS:
-                secs, eye, quiet = render(scene, n)
+                secs, eye, b, quiet = render(scene, n)
                 times[n].append(secs)
                 eyes[n] = eye
                 noisy += not quiet
+                if n == 2:
+                    busy.append(b)
         row = {"scene": name, "threads1_s": statistics.median(times[1]), "threads2_s": statistics.median(times[2]),
-               "eye_rays_1": eyes[1], "eye_rays_2": eyes[2], "noisy_runs": noisy}
+               "busy_2": statistics.median(busy), "eye_rays_1": eyes[1], "eye_rays_2": eyes[2], "noisy_runs": noisy}
         row["speedup"] = row["threads1_s"] / row["threads2_s"]
+        row["thread_time_ratio"] = 2 * row["busy_2"] * row["threads2_s"] / row["threads1_s"]
         rows.append(row)
-        print("%-16s --threads 1 %.3f s  --threads 2 %.3f s  speed-up %.2fx%s"
-              % (name, row["threads1_s"], row["threads2_s"], row["speedup"],
+        print("%-16s --threads 1 %.3f s  --threads 2 %.3f s  speed-up %.2fx  busy %.3f  thread time %.2fx%s"
+              % (name, row["threads1_s"], row["threads2_s"], row["speedup"], row["busy_2"], row["thread_time_ratio"],
                  "  (%d noisy runs)" % noisy if noisy else ""), flush=True)
 
-    keys = ["scene", "threads1_s", "threads2_s", "speedup", "eye_rays_1", "eye_rays_2", "noisy_runs"]
+    keys = ["scene", "threads1_s", "threads2_s", "speedup", "busy_2", "thread_time_ratio", "eye_rays_1", "eye_rays_2",
+            "noisy_runs"]
     with open(os.path.join(ROOT, "bench", "threads.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(keys)
@@ -120,16 +131,24 @@ def main():
           "SPD mode, fixed backend; render time (`render_seconds`: wall time, scene loading excluded), median of %d "
           "runs after a warm-up. `--threads 1`: the whole frame in one call of the core; `--threads 2`: bands of %s "
           "lines handed out to two threads, each band recomputing its top row of SPD corners (the eye rays "
-          "columns). Speed-up: `--threads 1` time over `--threads 2` time. Runs during which other processes used "
-          "more than %d%% of a core were repeated (up to %d times); \"noisy\" counts those kept anyway."
+          "columns). Speed-up: `--threads 1` time over `--threads 2` time. Busy: `threads_busy` of `--threads 2`, "
+          "the share of 2 x its time the threads spent rendering (the rest: starting the second thread, the last "
+          "band's wait). Thread time: the two threads' rendering time together against one thread's (2 x busy x "
+          "time / one thread's time): above 1 by the extra corner rows and by the threads slowing each other "
+          "down (shared caches, or a host that shares the cores); speed-up = 2 x busy / thread time. Runs during "
+          "which other processes used more than %d%% of a core were repeated (up to %d times); \"noisy\" counts "
+          "those kept anyway (a virtual machine's neighbours are not seen)."
           % (os.cpu_count() or 0, cpu_name(), SIZE, args.runs, bands, int(OTHER_MAX * 100), TRIES), "",
-          "| scene | --threads 1 (s) | --threads 2 (s) | speed-up | eye rays, 1 thread | eye rays, 2 threads | noisy |",
-          "|---|---|---|---|---|---|---|"]
+          "| scene | --threads 1 (s) | --threads 2 (s) | speed-up | busy | thread time | eye rays, 1 thread | "
+          "eye rays, 2 threads | noisy |",
+          "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        md.append("| %s | %.3f | %.3f | %.2fx | %d | %d | %d |" % (
-            r["scene"], r["threads1_s"], r["threads2_s"], r["speedup"], r["eye_rays_1"], r["eye_rays_2"],
-            r["noisy_runs"]))
-    md.append("| geometric mean | %.3f | %.3f | %.2fx | | | %d |" % (g1, g2, g1 / g2, sum(r["noisy_runs"] for r in rows)))
+        md.append("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %d | %d | %d |" % (
+            r["scene"], r["threads1_s"], r["threads2_s"], r["speedup"], r["busy_2"], r["thread_time_ratio"],
+            r["eye_rays_1"], r["eye_rays_2"], r["noisy_runs"]))
+    md.append("| geometric mean | %.3f | %.3f | %.2fx | %.3f | %.2fx | | | %d |" % (
+        g1, g2, g1 / g2, gmean([r["busy_2"] for r in rows]), gmean([r["thread_time_ratio"] for r in rows]),
+        sum(r["noisy_runs"] for r in rows)))
     with open(os.path.join(ROOT, "bench", "threads.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     print("wrote bench/threads.md, bench/threads.csv: geometric mean speed-up %.2fx" % (g1 / g2))

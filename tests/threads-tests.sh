@@ -66,19 +66,26 @@ for f in scenes/*.nff scenes/spd/*.nff; do
     i=$((i + 1))
 done
 
-# --stats (render_seconds, wall time, left out)
+# --stats (render_seconds and threads_busy, times, left out)
 counter() { sed -n "s/^ *\"*$1\"*[: ] *\([0-9]*\),*\$/\1/p" "$2"; }
 stats_case() { # NAME FORMAT SPD(0/1) W H ARGS...
     name=$1 fmt=$2 spd=$3 w=$4 h=$5; shift 5
+    bands=$(((h + BAND - 1) / BAND))
     for n in 1 2 3; do
         if ! "$RT" "$@" -o "$OUT/st.ppm" --quiet --threads $n --stats=$fmt 2>"$OUT/st$n.$fmt"; then
             bad "$name --stats=$fmt: --threads $n failed: $(cat "$OUT/st$n.$fmt")"
             return
         fi
-        grep -v render_seconds "$OUT/st$n.$fmt" >"$OUT/st$n.cmp"
+        grep -v -e render_seconds -e 'threads' "$OUT/st$n.$fmt" >"$OUT/st$n.cmp"
+        th=$(counter threads "$OUT/st$n.$fmt")
+        busy=$(sed -n 's/^ *"*threads_busy"*[: ] *\([0-9.]*\),*$/\1/p' "$OUT/st$n.$fmt")
+        want_th=$((n < bands ? n : bands))
+        if [ "$th" != $want_th ] || ! awk -v b="$busy" 'BEGIN { exit !(b > 0 && b <= 1) }'; then
+            bad "$name --stats=$fmt --threads $n: threads '$th', threads_busy '$busy' (want $want_th, at most one a band, and a share in (0, 1])"
+            return
+        fi
     done
     e1=$(counter eye_rays "$OUT/st1.$fmt") e2=$(counter eye_rays "$OUT/st2.$fmt")
-    bands=$(((h + BAND - 1) / BAND))
     if [ "$spd" = 1 ]; then
         want1=$(((w + 1) * (h + 1))) want2=$(((w + 1) * (h + 1) + (bands - 1) * (w + 1)))
         rays=""

@@ -1,30 +1,32 @@
 /*
- * bands.c - `rt --threads N`: the frame (or viewport) cut into bands of
- * BANDS_LINES lines, each rendered by one call of the core as its own
- * viewport (pixels the same as in the whole frame), handed out in order
- * by an atomic counter to N threads. Thread i is the core's worker i and
- * has its own sink, SPD scratch and stats; the sinks write disjoint rows
- * of one image, so pixels need no lock.
+ * bands.c - `rt --threads N`. One thread renders the frame (or viewport)
+ * in one call of the core, as rt always did. Two or more cut it into bands
+ * of BANDS_LINES lines, each rendered by one call of the core as its own
+ * viewport (pixels the same as in the whole frame, SPD mode included),
+ * handed out in order by an atomic counter. Thread i is the core's worker
+ * i and has its own sink, SPD scratch and stats; the sinks write disjoint
+ * rows of one image, so pixels need no lock. The calling thread is
+ * thread 0, so one thread runs the same code with no thread started.
  *
- * Band height, measured on balls-2 at 512x512 --spd, fixed backend, two
- * threads on two cores (median of 3, seconds; eye rays from --stats):
+ * Band height: 16 lines. Two threads on two cores (a shared 2-vCPU VM:
+ * about 5% noise), 512x512, seconds, median of 5:
  *
- *     lines   seconds   eye rays    (one band: 263169 corner rays)
- *       1      2.85      525312
- *       4      1.79      328960
- *       8      1.60      295065
- *      16      1.52      279616
- *      32      1.47      271393
- *      64      1.45      267281
+ *     band lines                     1      4      8     16     32     64
+ *     balls-2 --spd (s)          0.196  0.127  0.114  0.112  0.111  0.110
+ *       its eye rays            525312 328320 295488 279072 270864 266760
+ *     showpiece, normal mode (s) 0.258  0.261  0.262  0.266  0.278  0.310
  *
- * In SPD mode each band recomputes its top row of corners, W+1 rays, so
- * a band of h lines costs 1/h more eye rays (16: +6 %); smaller bands
- * balance the threads better at the end of the frame. Past 16 lines the
- * time gains little (the extra row is cheap beside the shading of the
- * other 16), while 512 / 16 = 32 bands still leave the last one a small
- * share of a many-thread run and keep a small image (48x40: 3 bands)
- * spread over more than one thread. Non-SPD renders do not care (the
- * same within noise from 1 to 64 lines).
+ * (one thread, one band: balls-2 --spd 0.180 s and 263169 eye rays,
+ * showpiece 0.497 s.)
+ *
+ * In SPD mode each band recomputes its top row of corners, W+1 more eye
+ * rays, so h-line bands trace 1/h more (16: +6 %, about 3 % more time):
+ * 1 and 4 lines waste work, 8 is 2 % slower than 16, 32 and 64 are 1-2 %
+ * faster (so too on gears-1, rings-2 and teapot-2). In normal mode a band costs nothing extra
+ * and only the balance counts: the showpiece's rows differ in cost and
+ * 64-line bands (8 per frame) leave one thread idle at the end, 12-20 %
+ * slower than small ones over runs. 16 is within 2-3 % of the best in both modes
+ * on two cores and leaves a 512-line frame 32 bands for more threads.
  */
 #include "bands.h"
 
@@ -33,7 +35,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 struct band_thread;
@@ -65,9 +67,17 @@ typedef struct band_thread {
     void *scratch;
     size_t scratch_bytes;
     uint8_t *band;
+    double busy; /* seconds in the core's render calls */
     pthread_t tid;
     bool started;
 } band_thread_t;
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
 
 unsigned bands_default_threads(void)
 {
@@ -128,7 +138,9 @@ static void *band_worker(void *arg)
         o.scratch = t->scratch;
         o.scratch_bytes = t->scratch_bytes;
         rt_error_t err = { 0 };
+        double t0 = now_seconds();
         int status = job->be->render(&o, &t->sink, &t->stats, &err);
+        t->busy += now_seconds() - t0;
         if (status != 0) {
             pthread_mutex_lock(&job->lock);
             if (k < job->fail_band) { /* the first band's failure, whichever thread is first */
@@ -145,8 +157,9 @@ static void *band_worker(void *arg)
 }
 
 int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, unsigned threads,
-                 bool progress, image_t *img, rt_stats_t *stats, rt_error_t *err)
+                 bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err)
 {
+    double start = now_seconds();
     /* the frame as the core will see it */
     uint16_t fw = opts->width, fh = opts->height, sw, sh;
     be->resolution(&sw, &sh);
@@ -211,6 +224,14 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
         for (unsigned i = 1; i < threads; i++)
             if (t[i].started)
                 pthread_join(t[i].tid, NULL);
+        time->wall = now_seconds() - start;
+        time->threads = 1;
+        time->busy = t[0].busy;
+        for (unsigned i = 1; i < threads; i++)
+            if (t[i].started) {
+                time->threads++;
+                time->busy += t[i].busy;
+            }
         for (unsigned i = 0; i < threads; i++)
             be->stats_add(stats, &t[i].stats);
         status = 0;

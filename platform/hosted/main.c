@@ -8,7 +8,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "backend.h"
@@ -84,13 +83,6 @@ static bool parse_double(const char *s, double *out)
         return false;
     *out = v;
     return true;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
 /* How many fraction bits the geometry gave up so that a far camera or
@@ -353,9 +345,8 @@ static int cmd_render(int argc, char **argv)
     bool progress = !quiet && isatty(2);
     image_t img;
     rt_stats_t st = { 0 };
-    double t0 = now_seconds();
-    int status = bands_render(be, &opts, format, threads, progress, &img, &st, &err);
-    double secs = now_seconds() - t0; /* wall time */
+    bands_time_t time = { 0, 0, 0 };
+    int status = bands_render(be, &opts, format, threads, progress, &img, &st, &time, &err);
     if (progress)
         fprintf(stderr, "\r                \r");
     if (status != 0) {
@@ -363,7 +354,8 @@ static int cmd_render(int argc, char **argv)
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
     if (stats)
-        report_stats(stderr, stats_format, be, backend_name(be), &st, img.width, img.height, secs, geometry_bits_lost(be));
+        report_stats(stderr, stats_format, be, backend_name(be), &st, img.width, img.height, time.wall, time.threads,
+                     time.threads ? time.busy / (time.threads * time.wall) : 0, geometry_bits_lost(be));
     if (image_write(out_path, &img, why, sizeof why) != 0) {
         fprintf(stderr, "rt: %s\n", why);
         image_free(&img);
