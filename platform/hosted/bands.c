@@ -20,7 +20,8 @@
  * showpiece 0.497 s.)
  *
  * In SPD mode each band recomputes its top row of corners, W+1 more eye
- * rays, so h-line bands trace 1/h more (16: +6 %, about 3 % more time):
+ * rays, so h-line bands trace 1/h more (16: +6 %, and 5-8 % more time
+ * on one thread: balls-2, gears-1, rings-2, teapot-2, tetra-2):
  * 1 and 4 lines waste work, 8 is 2 % slower than 16, 32 and 64 are 1-2 %
  * faster (so too on gears-1, rings-2 and teapot-2). In normal mode a band costs nothing extra
  * and only the balance counts: the showpiece's rows differ in cost and
