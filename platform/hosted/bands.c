@@ -39,8 +39,6 @@
 #include <time.h>
 #include <unistd.h>
 
-struct band_thread;
-
 typedef struct {
     const rt_backend_t *be;
     const rt_render_opts_t *opts;
