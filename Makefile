@@ -15,8 +15,9 @@
 #                   counters (bench/profile.py; same variables as make run,
 #                   SIZE 64x64 unless given; about 35 s for balls-2)
 #   make test       install missing packages, build, run every test
-#   make bench      run time against error over numeric configurations, BVH
-#                   scaling, code size with and without pruning, every board and backend (about 45 min)
+#   make bench      run time against error over numeric configurations, the
+#                   host's speed-up with rt --threads 2, BVH scaling, code size
+#                   with and without pruning, every board and backend (about 45 min)
 #   make bench-quick  a subset of the first (< 2 min)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
@@ -40,9 +41,10 @@ CC      ?= cc
 LD      ?= ld
 OBJCOPY ?= objcopy
 
-# Capacities for the host: large enough for every SPD "default" scene.
+# Capacities for the host: large enough for every SPD "default" scene,
+# and workers for `rt --threads` up to 64 (1.8 KiB each a backend).
 HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 \
-            -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024
+            -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024 -DRT_MAX_WORKERS=64
 
 WARN      = -std=c11 -Wall -Wextra -Werror
 CORE_SRC  = $(wildcard src/*.c)
@@ -89,12 +91,13 @@ $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_
 
 build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
+	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
-# libpng for PNG files; zlib for the UART stream's Adler-32 checksums.
-build/$(1)/rt: build/$(1)/main.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o build/$(1)/host_io.o \
-               build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
-	$$(CC) $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
+# libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
+# POSIX threads for --threads (bands.c).
+build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
+               build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
+	$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
 build/$(1)/test_%: tests/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/testlib.h tests/probe_jump.h
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
@@ -114,6 +117,12 @@ CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
 CFG_q24 = -DFX_FRAC_BITS=24
 $(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
+
+# ThreadSanitizer build of rt (tests/threads-tests.sh): renders on several
+# threads share no written byte (and the saturation counter is atomic).
+tsan_CFLAGS = -O1 -g -fsanitize=thread -DFX_COUNT_SATURATIONS=1
+tsan_LDFLAGS = -fsanitize=thread
+$(eval $(call host_rules,tsan))
 
 # The stress suite's build: sanitised, and counting fixed-point saturations.
 stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
@@ -158,6 +167,8 @@ bench: deps
 	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
 	python3 bench/run_bench.py --board $(BOARD)
 	@echo
+	python3 bench/threads_bench.py
+	@echo
 	@BOARD=$(BOARD) sh bench/bvh-bench.sh
 	@echo
 	@sh bench/prims-bench.sh
@@ -175,7 +186,7 @@ bench-quick: deps
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/asan/test_fx build/asan/test_fx_soft build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/scenec/rt-scenec $(FUZZERS)
+        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
 
 test: deps
 	$(MAKE) -j2 $(TESTS)

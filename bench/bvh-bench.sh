@@ -13,11 +13,11 @@ OUT=build/bench-bvh
 mkdir -p "$OUT"
 
 median3() { sort -n | sed -n 2p; }
-host_time() { # scene, extra args: median render time of 3 runs (after a warm-up)
+host_time() { # scene, extra args: median render time of 3 runs (after a warm-up), one thread
     f=$1; shift
-    "$RT" "$f" -o "$OUT/warm.png" --quiet "$@" 2>/dev/null
+    "$RT" "$f" -o "$OUT/warm.png" --quiet --threads 1 "$@" 2>/dev/null
     for i in 1 2 3; do
-        "$RT" "$f" -o "$OUT/t.png" --stats --quiet "$@" 2>&1 | awk '$1 == "render_seconds" { print $2 }'
+        "$RT" "$f" -o "$OUT/t.png" --stats --quiet --threads 1 "$@" 2>&1 | awk '$1 == "render_seconds" { print $2 }'
     done | median3
 }
 
@@ -42,7 +42,7 @@ printf '%-16s %7s %9s %9s %10s %10s %10s %10s %12s\n' scene backend "time (s)" p
 for s in balls gears rings teapot tetra; do
     for b in fixed double; do
         t=$(host_time scenes/spd/$s-default.nff --spd --$b)
-        "$RT" scenes/spd/$s-default.nff -o "$OUT/$s-$b.png" --spd --$b --stats --quiet 2>"$OUT/$s-$b.stats"
+        "$RT" scenes/spd/$s-default.nff -o "$OUT/$s-$b.png" --spd --$b --threads 1 --stats --quiet 2>"$OUT/$s-$b.stats"
         st() { awk -v k="$1" '$1 == k { print $2 }' "$OUT/$s-$b.stats"; }
         printf '%-16s %7s %9s %9s %10s %10s %10s %10s %12s\n' "$s-default" $b "$t" "$(st primitives)" \
             "$(st bvh_nodes)" "$(st eye_hits)" "$(st reflect_rays)" "$(st refract_rays)" "$(st shadow_rays)"

@@ -61,7 +61,7 @@ def scene_path(scene):
 
 def render(cfg, scene, size, out, extra=()):
     rt, flag = host_rt(cfg)
-    r = run([rt, scene_path(scene), "-o", out, "--size", size, flag, "--quiet", "--stats"] + list(extra))
+    r = run([rt, scene_path(scene), "-o", out, "--size", size, flag, "--threads", "1", "--quiet", "--stats"] + list(extra))
     m = re.search(r"^render_seconds\s+([0-9.]+)$", r.stderr, re.M)
     return float(m.group(1))
 
@@ -88,7 +88,7 @@ def callgrind(cfg, scene):
     rt, flag = host_rt(cfg)
     out = os.path.join(OUT, "cg.out")
     r = run(["valgrind", "--tool=callgrind", "--callgrind-out-file=" + out, rt, scene_path(scene),
-             "-o", os.path.join(OUT, "cg.png"), "--size", CALLGRIND_SIZE, flag, "--quiet"])
+             "-o", os.path.join(OUT, "cg.png"), "--size", CALLGRIND_SIZE, flag, "--threads", "1", "--quiet"])
     m = re.search(r"Collected : (\d+)", r.stderr)
     return int(m.group(1)) if m else None
 

@@ -40,6 +40,10 @@ if [ "$mode" = all ]; then
     if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
         need="$need libasan8 libubsan1"
     fi
+    # ThreadSanitizer (build/tsan/rt, tests/threads-tests.sh): gcc's libtsan
+    if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=thread -o /dev/null - >/dev/null 2>&1; then
+        need="$need libtsan2"
+    fi
 fi
 if [ -n "$need" ]; then
     echo "installing ($mode):$need"

@@ -53,7 +53,14 @@ typedef uint32_t fx_shine_t;/* unsigned Q20.12: Phong exponents up to ~1e6 */
 #endif
 #if FX_COUNT_SATURATIONS
 extern volatile uint32_t fx_saturations;
+/* One counter for every worker: a relaxed atomic add where the compiler
+ * has one (the host's stress build renders on several threads), so no
+ * count is lost; a plain one otherwise. */
+#ifdef __ATOMIC_RELAXED
+#define FX_ON_SATURATE() ((void)__atomic_fetch_add(&fx_saturations, 1u, __ATOMIC_RELAXED))
+#else
 #define FX_ON_SATURATE() ((void)fx_saturations++)
+#endif
 #endif
 #ifndef FX_ON_SATURATE
 #define FX_ON_SATURATE() ((void)0)

@@ -26,7 +26,7 @@ oled_case() { # NAME SCENE SIZE
         bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
         return
     fi
-    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth 5 --format l4 --quiet --stats 2>"$OUT/$n-host.stats"
+    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth 5 --format l4 --threads 1 --quiet --stats 2>"$OUT/$n-host.stats"
     ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$n.report")
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/$n.report")
     if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then

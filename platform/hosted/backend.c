@@ -185,6 +185,6 @@ static double pow_unit(double x, double s)
 }
 
 const rt_backend_t BACKEND_SYMBOL = {
-    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, probe, probe_leaf, occluded,
+    load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, rt_stats_add, probe, probe_leaf, occluded,
     bounds, eye_dir, pow_unit,
 };

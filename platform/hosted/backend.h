@@ -47,6 +47,8 @@ typedef struct {
                         uint16_t lines);
     /* rt_stats_each (stats.h): the counters by key. */
     void (*stats_each)(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
+    /* rt_stats_add: sum += part (the threads' counts into one). */
+    void (*stats_add)(rt_stats_t *sum, const rt_stats_t *part);
     /* Nearest hit of one ray against the loaded scene (for tests), through
      * the BVH or, with `brute`, by testing every primitive. Origin and t
      * are in the file's units (the backend applies the reader's scale). */

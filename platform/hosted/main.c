@@ -8,10 +8,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include <unistd.h>
 
 #include "backend.h"
+#include "bands.h"
 #include "host_io.h"
 #include "image.h"
 #include "receive.h"
@@ -41,6 +41,8 @@ static const char usage_text[] =
     "                      rays, four averaged per pixel, depth 5, SPD rule 8\n"
     "  --adaptive W        skip child rays whose share of the pixel is below W\n"
     "                      (0.001..1; off by default)\n"
+    "  --threads N         render with N threads, 1..%d (default: the online CPUs,\n"
+    "                      here %u); the image is the same for every N\n"
     "  --quiet             no progress indicator\n"
     "  -h, --help          this text; --version: the version\n"
     "Options take their value as the next argument or after '='\n"
@@ -81,53 +83,6 @@ static bool parse_double(const char *s, double *out)
         return false;
     *out = v;
     return true;
-}
-
-/* ---- the framebuffer sink: collects bands into a whole image ---------- */
-
-#define HOST_BAND_LINES 8
-
-typedef struct {
-    rt_fb_sink_t sink;
-    image_t img;           /* the viewport (by default the whole frame) */
-    rt_viewport_t vp;
-    bool progress;
-    uint8_t band_a[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
-    uint8_t band_b[HOST_BAND_LINES * RT_MAX_WIDTH * 4];
-} host_sink_t;
-
-static int host_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
-{
-    host_sink_t *hs = s->user;
-    if (hs->vp.w == 0)
-        hs->vp = (rt_viewport_t){ 0, 0, w, h };
-    hs->img.width = hs->vp.w;
-    hs->img.height = hs->vp.h;
-    hs->img.rgb = malloc((size_t)hs->vp.w * hs->vp.h * 3);
-    return hs->img.rgb ? 0 : 1;
-}
-
-static int host_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
-{
-    host_sink_t *hs = s->user;
-    size_t w = (size_t)hs->img.width;
-    for (unsigned y = a->y1; y <= a->y2; y++) {
-        uint8_t *dst = hs->img.rgb + (size_t)(y - hs->vp.y) * w * 3;
-        const uint8_t *src = px + (size_t)(y - a->y1) * RT_FB_LINE_BYTES(s->format, w);
-        for (size_t x = 0; x < w; x++)
-            rt_fb_expand(s->format, src, x, dst + 3 * x);
-    }
-    if (hs->progress)
-        fprintf(stderr, "\rrendering: %3u%%", (unsigned)(100 * (a->y2 + 1 - hs->vp.y) / hs->img.height));
-    rt_fb_flush_ready(s); /* synchronous: the band is free again */
-    return 0;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
 /* How many fraction bits the geometry gave up so that a far camera or
@@ -187,11 +142,11 @@ static void print_usage(void)
     for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
         used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
                                  backends[i].what);
-    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list);
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list, RT_MAX_WORKERS, bands_default_threads());
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -208,6 +163,7 @@ static const struct option render_options[] = {
     { "stats", optional_argument, NULL, OPT_STATS },
     { "spd", no_argument, NULL, OPT_SPD },
     { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
+    { "threads", required_argument, NULL, OPT_THREADS },
     { "quiet", no_argument, NULL, OPT_QUIET },
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, OPT_VERSION },
@@ -216,7 +172,8 @@ static const struct option render_options[] = {
 
 static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
-    { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" }, { 0, NULL },
+    { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" },
+    { OPT_THREADS, "a number" }, { 0, NULL },
 };
 
 #define RENDER_HELP "rt --help"
@@ -239,6 +196,7 @@ static int cmd_render(int argc, char **argv)
     rt_render_opts_t opts = { 0 };
     rt_fb_format_t format = RT_FB_RGB888;
     bool quiet = false;
+    unsigned threads = bands_default_threads();
     bool stats = false;
     report_format_t stats_format = REPORT_TEXT;
 
@@ -315,6 +273,16 @@ static int cmd_render(int argc, char **argv)
             opts.adaptive_milli = (uint16_t)(v * 1000 + 0.5);
             break;
         }
+        case OPT_THREADS: {
+            long n;
+            if (!parse_uint(optarg, 1, RT_MAX_WORKERS, &n)) {
+                char msg[96];
+                snprintf(msg, sizeof msg, "--threads: expected a number from 1 to %d, got '%%s'", RT_MAX_WORKERS);
+                return render_usage_error(msg, optarg);
+            }
+            threads = (unsigned)n;
+            break;
+        }
         case OPT_QUIET:
             quiet = true;
             break;
@@ -372,41 +340,28 @@ static int cmd_render(int argc, char **argv)
     if (opts.spd && !opts.width) {
         opts.width = opts.height = 512;
     }
-    /* two rows of corner colours, sized for the wider (double) backend */
-    size_t scratch_bytes = 2 * ((size_t)(opts.width ? opts.width : RT_MAX_WIDTH) + 1) * 3 * sizeof(double);
-    void *scratch = opts.spd ? malloc(scratch_bytes) : NULL;
-    opts.scratch = scratch;
-    opts.scratch_bytes = scratch ? scratch_bytes : 0;
-
-    static host_sink_t hs;
-    hs.sink = (rt_fb_sink_t){ .format = format,
-                           .band = { hs.band_a, hs.band_b },
-                           .band_bytes = sizeof hs.band_a,
-                           .begin = host_begin,
-                           .flush = host_flush,
-                           .user = &hs };
-    hs.vp = opts.viewport;
-    hs.progress = !quiet && isatty(2);
+    /* the frame in bands on `threads` threads, even one: the same path
+     * for every N (bands.c) */
+    bool progress = !quiet && isatty(2);
+    image_t img;
     rt_stats_t st = { 0 };
-    double t0 = now_seconds();
-    int status = be->render(&opts, &hs.sink, &st, &err);
-    double secs = now_seconds() - t0;
-    free(scratch);
-    if (hs.progress)
+    bands_time_t time = { 0, 0, 0 };
+    int status = bands_render(be, &opts, format, threads, progress, &img, &st, &time, &err);
+    if (progress)
         fprintf(stderr, "\r                \r");
     if (status != 0) {
         fprintf(stderr, "%s: %s\n", scene_path, status < 0 ? err.msg : "framebuffer sink failed");
-        image_free(&hs.img);
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
     if (stats)
-        report_stats(stderr, stats_format, be, backend_name(be), &st, hs.img.width, hs.img.height, secs, geometry_bits_lost(be));
-    if (image_write(out_path, &hs.img, why, sizeof why) != 0) {
+        report_stats(stderr, stats_format, be, backend_name(be), &st, img.width, img.height, time.wall, time.threads,
+                     time.threads ? time.busy / (time.threads * time.wall) : 0, geometry_bits_lost(be));
+    if (image_write(out_path, &img, why, sizeof why) != 0) {
         fprintf(stderr, "rt: %s\n", why);
-        image_free(&hs.img);
+        image_free(&img);
         return 1;
     }
-    image_free(&hs.img);
+    image_free(&img);
     return 0;
 }
 

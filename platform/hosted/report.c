@@ -56,13 +56,16 @@ static void put_str(report_t *r, const char *k, const char *v)
 }
 
 void report_stats(FILE *f, report_format_t format, const rt_backend_t *be, const char *backend,
-                  const rt_stats_t *st, int width, int height, double seconds, int range_bits_lost)
+                  const rt_stats_t *st, int width, int height, double seconds, unsigned threads, double busy,
+                  int range_bits_lost)
 {
     report_t r = { f, format, 0 };
     put_str(&r, "backend", backend);
     put_int(&r, "width", width);
     put_int(&r, "height", height);
     put_real(&r, "render_seconds", seconds, 6);
+    put_int(&r, "threads", threads);
+    put_real(&r, "threads_busy", busy, 3);
     be->stats_each(st, put_uint, &r);
 
     put_int(&r, "scene_scale_log2", be->scale_log2());
