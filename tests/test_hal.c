@@ -160,7 +160,7 @@ int main(void)
                   two ? "double" : "single", rc, got.flushes, got.ends);
             sink_init(&got, 0, 4, two);
             got.fail_at = 3;
-            rc = be->render_steps(&opts[0], &got.sink, &st, &err, 3);
+            rc = be->render_steps(&opts[0], &got.sink, &st, &err, 3, NULL, NULL);
             CHECK(rc == 42 && got.flushes == 3 && got.ends == 0,
                   "%s, %s buffer, in steps of 3 lines: flush 3 fails -> status %d, %d flushes, %d end", bn,
                   two ? "double" : "single", rc, got.flushes, got.ends);
@@ -206,12 +206,12 @@ int main(void)
             const uint16_t steps[] = { 1, 3, 7 };
             for (size_t k = 0; k < 3; k++) {
                 sink_init(&got, 0, 4, true);
-                rc = be->render_steps(&opts[m], &got.sink, &st, &err, steps[k]);
+                rc = be->render_steps(&opts[m], &got.sink, &st, &err, steps[k], NULL, NULL);
                 bool whole = rc == 0 && got.ends == 1 && memcmp(got.img, ref[m].img, sizeof got.img) == 0;
                 rt_render_opts_t ov = opts[m];
                 ov.viewport = vps[4];
                 sink_init(&got, 0, 2, false);
-                rc = be->render_steps(&ov, &got.sink, &st, &err, steps[k]);
+                rc = be->render_steps(&ov, &got.sink, &st, &err, steps[k], NULL, NULL);
                 bool part = rc == 0 && got.ends == 1 && same_crop(&got, &ref[m], vps[4]);
                 CHECK(whole && part, "%s%s: steps of %u lines == one call (whole frame %s, viewport %s)", bn,
                       m ? " SPD" : "", steps[k], whole ? "same" : "DIFFERS", part ? "same" : "DIFFERS");

@@ -67,11 +67,11 @@ static int render(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *
 }
 
 static int render_steps(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
-                        uint16_t lines)
+                        uint16_t lines, bool (*more)(void *user), void *user)
 {
     rt_render_ctx_t ctx;
     int status = rt_render_begin(&ctx, &store.scene, opts, sink, stats, err);
-    while (status == 0 && !rt_render_done(&ctx))
+    while (status == 0 && !rt_render_done(&ctx) && (!more || more(user)))
         status = rt_render_step(&ctx, lines);
     return status != 0 ? status : rt_render_end(&ctx);
 }

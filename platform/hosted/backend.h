@@ -42,9 +42,11 @@ typedef struct {
 
     void (*bvh_stats)(bvh_stats_t *out);
     int (*render)(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err);
-    /* The same through rt_render_begin / rt_render_step(lines) / rt_render_end. */
+    /* The same through rt_render_begin / rt_render_step(lines) / rt_render_end;
+     * with `more`, each step only while more(user) says so (the frame may
+     * then end early; end() is still called). */
     int (*render_steps)(const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err,
-                        uint16_t lines);
+                        uint16_t lines, bool (*more)(void *user), void *user);
     /* rt_stats_each (stats.h): the counters by key. */
     void (*stats_each)(const rt_stats_t *st, rt_stats_visit_fn *visit, void *ctx);
     /* rt_stats_add: sum += part (the threads' counts into one). */

@@ -1,33 +1,23 @@
 /*
  * bands.c - `rt --threads N`. One thread renders the frame (or viewport)
- * in one call of the core, as rt always did. Two or more cut it into bands
- * of BANDS_LINES lines, each rendered by one call of the core as its own
- * viewport (pixels the same as in the whole frame, SPD mode included),
- * handed out in order by an atomic counter. Thread i is the core's worker
- * i and has its own sink, SPD scratch and stats; the sinks write disjoint
- * rows of one image, so pixels need no lock. The calling thread is
- * thread 0, so one thread runs the same code with no thread started.
+ * in one call of the core, as rt always did. With two or more, thread i
+ * starts on the i-th of N equal runs of lines and renders it top down,
+ * one line per step of one render context (rt_render_begin/_step, as its
+ * own viewport), so in SPD mode each corner row is traced once within a
+ * run. A thread whose run is done takes the lower half of what is left of
+ * the longest other run, down to one line, and renders that the same way:
+ * the threads stay busy to the end, and in SPD mode a frame costs one
+ * more row of corners per run start (N - 1 plus one per such split),
+ * where fixed bands of 16 lines cost one per band (6% more eye rays at
+ * 512 lines). Thread i is the core's worker i and has its own sink (one
+ * line: every step is flushed), SPD scratch and stats; the sinks write
+ * disjoint rows of one image, so pixels take no lock; the runs' bounds
+ * take one mutex. The calling thread is thread 0.
  *
- * Band height: 16 lines. Two threads on two cores (a shared 2-vCPU VM:
- * about 5% noise), 512x512, seconds, median of 5:
- *
- *     band lines                     1      4      8     16     32     64
- *     balls-2 --spd (s)          0.196  0.127  0.114  0.112  0.111  0.110
- *       its eye rays            525312 328320 295488 279072 270864 266760
- *     showpiece, normal mode (s) 0.258  0.261  0.262  0.266  0.278  0.310
- *
- * (one thread, one band: balls-2 --spd 0.180 s and 263169 eye rays,
- * showpiece 0.497 s.)
- *
- * In SPD mode each band recomputes its top row of corners, W+1 more eye
- * rays, so h-line bands trace 1/h more (16: +6 %, and 5-8 % more time
- * on one thread: balls-2, gears-1, rings-2, teapot-2, tetra-2):
- * 1 and 4 lines waste work, 8 is 2 % slower than 16, 32 and 64 are 1-2 %
- * faster (so too on gears-1, rings-2 and teapot-2). In normal mode a band costs nothing extra
- * and only the balance counts: the showpiece's rows differ in cost and
- * 64-line bands (8 per frame) leave one thread idle at the end, 12-20 %
- * slower than small ones over runs. 16 is within 2-3 % of the best in both modes
- * on two cores and leaves a 512-line frame 32 bands for more threads.
+ * Pixels do not depend on who renders what (a viewport's pixels are
+ * those of the whole frame); counts do: where runs start and split (which
+ * depends on timing) decides how many corner rows SPD mode traces again
+ * and where the core's caches start afresh.
  */
 #include "bands.h"
 
@@ -39,22 +29,30 @@
 #include <time.h>
 #include <unistd.h>
 
+#define ONE_CALL_LINES 16 /* lines per flush of the one-thread render */
+
+/* A run of lines [next, end) of the viewport, rendered top down by its
+ * thread; a thread out of lines lowers `end` of another run to take the
+ * rest below (both under the job's lock). */
+typedef struct {
+    unsigned next, end;
+} run_t;
+
 typedef struct {
     const rt_backend_t *be;
     const rt_render_opts_t *opts;
-    rt_viewport_t vp;      /* the viewport the bands cut */
-    unsigned n_bands;
-    bool split;            /* false: one band, opts->viewport as given */
+    rt_viewport_t vp;      /* the viewport the threads share */
+    bool split;            /* false: one call of the core, opts->viewport as given */
     image_t *img;
-    atomic_uint next_band; /* the next band to hand out */
-    atomic_bool failed;    /* stop handing out bands */
+    run_t *runs;           /* one per thread */
+    unsigned n_runs;
+    atomic_bool failed;    /* stop taking lines */
     /* the progress indicator: lines done by every thread */
     bool progress;
     atomic_uint lines_done;
-    pthread_mutex_t lock; /* the indicator's line, and the first failure */
+    pthread_mutex_t lock; /* the runs, the indicator's line, the first failure */
     unsigned shown;       /* per cent last printed */
-    unsigned fail_band;   /* the lowest band that failed (n_bands: none) */
-    int fail_status;
+    int fail_status;      /* the first failure (0: none) */
     rt_error_t fail_err;
 } band_job_t;
 
@@ -119,31 +117,75 @@ static int band_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
     return 0;
 }
 
+/* The next line of the thread's run, if it has one: claimed before each
+ * step, so a thread taking lines below never takes this one. */
+static bool claim_line(void *user)
+{
+    band_thread_t *t = user;
+    band_job_t *job = t->job;
+    run_t *r = &job->runs[t->index];
+    pthread_mutex_lock(&job->lock);
+    bool mine = r->next < r->end && !atomic_load(&job->failed);
+    if (mine)
+        r->next++;
+    pthread_mutex_unlock(&job->lock);
+    return mine;
+}
+
+/* A thread out of lines: its run becomes the lower half of the longest
+ * other run with two lines or more left (the owner keeps the upper half,
+ * which it is working down). False when there is none. */
+static bool take_lines(band_thread_t *t)
+{
+    band_job_t *job = t->job;
+    run_t *mine = &job->runs[t->index], *longest = NULL;
+    unsigned most = 1;
+    pthread_mutex_lock(&job->lock);
+    for (unsigned i = 0; i < job->n_runs; i++) {
+        run_t *r = &job->runs[i];
+        if (r != mine && r->end - r->next > most) {
+            most = r->end - r->next;
+            longest = r;
+        }
+    }
+    if (longest) {
+        unsigned mid = longest->next + (most + 1) / 2;
+        *mine = (run_t){ mid, longest->end };
+        longest->end = mid;
+    }
+    pthread_mutex_unlock(&job->lock);
+    return longest != NULL && !atomic_load(&job->failed);
+}
+
 static void *band_worker(void *arg)
 {
     band_thread_t *t = arg;
     band_job_t *job = t->job;
-    for (;;) {
-        unsigned k = atomic_fetch_add(&job->next_band, 1);
-        if (k >= job->n_bands || atomic_load(&job->failed))
-            break;
+    run_t *r = &job->runs[t->index];
+    do {
         rt_render_opts_t o = *job->opts;
-        if (job->split) {
-            unsigned y = job->vp.y + k * BANDS_LINES;
-            unsigned h = job->vp.y + job->vp.h - y;
-            o.viewport = (rt_viewport_t){ job->vp.x, (uint16_t)y, job->vp.w, (uint16_t)(h < BANDS_LINES ? h : BANDS_LINES) };
-        }
         o.worker = (uint8_t)t->index;
         o.scratch = t->scratch;
         o.scratch_bytes = t->scratch_bytes;
         rt_error_t err = { 0 };
         double t0 = now_seconds();
-        int status = job->be->render(&o, &t->sink, &t->stats, &err);
+        int status;
+        if (job->split) {
+            pthread_mutex_lock(&job->lock);
+            run_t now = *r;
+            pthread_mutex_unlock(&job->lock);
+            if (now.next >= now.end)
+                continue; /* taken before it began */
+            o.viewport = (rt_viewport_t){ job->vp.x, (uint16_t)(job->vp.y + now.next), job->vp.w,
+                                          (uint16_t)(now.end - now.next) };
+            status = job->be->render_steps(&o, &t->sink, &t->stats, &err, 1, claim_line, t);
+        } else {
+            status = job->be->render(&o, &t->sink, &t->stats, &err);
+        }
         t->busy += now_seconds() - t0;
         if (status != 0) {
             pthread_mutex_lock(&job->lock);
-            if (k < job->fail_band) { /* the first band's failure, whichever thread is first */
-                job->fail_band = k;
+            if (job->fail_status == 0) { /* the first failure */
                 job->fail_status = status;
                 job->fail_err = err;
             }
@@ -151,7 +193,7 @@ static void *band_worker(void *arg)
             atomic_store(&job->failed, true);
             break;
         }
-    }
+    } while (job->split && take_lines(t));
     return NULL;
 }
 
@@ -174,13 +216,10 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     job = (band_job_t){ .be = be, .opts = opts, .vp = vp, .img = img, .progress = progress };
     bool valid = fw >= 1 && fh >= 1 && fw <= RT_MAX_WIDTH && fh <= RT_MAX_HEIGHT && vp.w >= 1 && vp.h >= 1 &&
                  vp.x < fw && vp.y < fh && vp.w <= fw - vp.x && vp.h <= fh - vp.y;
-    /* One thread renders the viewport as one band: the render and counts
-     * of one call of the core, as the board's. A frame or viewport the
-     * core would refuse is not cut either, for the core's own message. */
+    /* One thread renders the viewport in one call of the core: the render
+     * and counts of the board's. A frame or viewport the core would refuse
+     * is not cut either, for the core's own message. */
     job.split = valid && threads > 1;
-    job.n_bands = job.split ? (vp.h + BANDS_LINES - 1u) / BANDS_LINES : 1;
-    job.fail_band = job.n_bands;
-    atomic_init(&job.next_band, 0);
     atomic_init(&job.failed, false);
     atomic_init(&job.lines_done, 0);
     pthread_mutex_init(&job.lock, NULL);
@@ -193,14 +232,19 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     }
     if (threads < 1)
         threads = 1;
-    if (threads > job.n_bands)
-        threads = job.n_bands;
+    if (job.split && threads > vp.h)
+        threads = vp.h; /* a line each at least */
     band_thread_t *t = calloc(threads, sizeof *t);
-    /* each thread: a band's lines in the format, two rows of corner
-     * colours (sized for the widest real_t, double) */
-    size_t band_bytes = BANDS_LINES * RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1);
+    /* thread i starts on the i-th of `threads` equal runs of lines */
+    job.runs = calloc(threads, sizeof *job.runs);
+    job.n_runs = threads;
+    for (unsigned i = 0; job.runs && i < threads; i++)
+        job.runs[i] = (run_t){ (unsigned)((uint64_t)vp.h * i / threads), (unsigned)((uint64_t)vp.h * (i + 1) / threads) };
+    /* each thread: one line in the format (every step is flushed), two
+     * rows of corner colours (sized for the widest real_t, double) */
+    size_t band_bytes = RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1) * (job.split ? 1 : ONE_CALL_LINES);
     size_t scratch_bytes = 2 * ((size_t)(vp.w ? vp.w : RT_MAX_WIDTH) + 1) * 3 * sizeof(double);
-    bool ok = t != NULL && (img->rgb || !valid);
+    bool ok = t != NULL && job.runs != NULL && (img->rgb || !valid);
     for (unsigned i = 0; ok && i < threads; i++) {
         t[i].job = &job;
         t[i].index = i;
@@ -233,18 +277,16 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
             }
         for (unsigned i = 0; i < threads; i++)
             be->stats_add(stats, &t[i].stats);
-        status = 0;
-        if (job.fail_band < job.n_bands) {
-            status = job.fail_status;
-            if (status < 0)
-                *err = job.fail_err;
-        }
+        status = job.fail_status;
+        if (status < 0)
+            *err = job.fail_err;
     }
     for (unsigned i = 0; t && i < threads; i++) {
         free(t[i].band);
         free(t[i].scratch);
     }
     free(t);
+    free(job.runs);
     pthread_mutex_destroy(&job.lock);
     if (status != 0)
         image_free(img);
