@@ -52,7 +52,8 @@ void report_text(const char *text);
 /* ---- a port with more than one core ------------------------------------- */
 /*
  * Only a board with a second core provides these (mps2-an521: two
- * Cortex-M33); its board.mk sets BOARD_CFLAGS += -DBOARD_CORES=2, and a
+ * Cortex-M33); its board.mk sets BOARD_CORES := 2 (platform/firmware/
+ * bands.c then splits the frame between the cores), and a
  * single-core port neither defines nor links any of them. Both cores run
  * the same image, so the console and port_exit() stay core 0's: core 1
  * reports through shared memory. port_icount_read() may be called from

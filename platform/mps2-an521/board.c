@@ -2,11 +2,12 @@
  * board.c - the MPS2 AN521's side of the port contract (port.h): the
  * SSE-200's two Cortex-M33, run Secure. The console is CMSDK APB UART0,
  * the instruction counter CMSDK APB timer 0 (both at their Secure
- * aliases), and the multi-core part: which core, starting core 1 (its
+ * aliases; cmsdk.h), and the multi-core part: which core, starting core 1 (its
  * own vector table and stack), through the SSE-200's system control.
  * Waiting, signalling and the atomic add are the architecture's
  * (platform/arch/cortex-m/multicore.c).
  */
+#include "cmsdk.h"
 #include "port.h"
 
 #if defined(__ARM_FP) || defined(__ARM_FEATURE_DSP)
@@ -15,17 +16,11 @@
 
 #define REG(addr) (*(volatile uint32_t *)(addr))
 
-#define UART0_DATA REG(0x50200000u)
-#define UART0_STATE REG(0x50200004u)   /* bit 0: TX full */
-#define UART0_CTRL REG(0x50200008u)    /* bit 0: TX enable */
-#define UART0_BAUDDIV REG(0x50200010u) /* must be >= 16 before enabling */
-
+#define UART0 0x50200000u
 /* Timer 0 counts down at 20 MHz; under qemu -icount shift=0 one guest
  * instruction takes 1 ns, so it decrements exactly once per 50 -- of
  * either core: it runs on the one virtual clock the two share. */
-#define TIMER0_CTRL REG(0x50000000u)
-#define TIMER0_VALUE REG(0x50000004u)
-#define TIMER0_RELOAD REG(0x50000008u)
+#define TIMER0 0x50000000u
 #define INSTRUCTIONS_PER_TICK 50u
 
 /* SSE-200 system control and identity */
@@ -34,40 +29,16 @@
 #define CPUWAIT REG(0x50021118u)      /* bit 1 set at reset: core 1 held */
 #define CPUWAIT_CPU1 2u
 
-void port_init(void)
-{
-    UART0_BAUDDIV = 16; /* the minimum the model accepts; QEMU ignores the rate */
-    UART0_CTRL = 1;
-}
+void port_init(void) { cmsdk_uart_init(UART0); }
 
-/* Not for two cores at once (the bytes would interleave): the firmware
- * writes from core 0 only. */
-void port_write(const void *data, size_t len)
-{
-    const uint8_t *p = data;
-    for (size_t i = 0; i < len; i++) {
-        while (UART0_STATE & 1u)
-            ;
-        UART0_DATA = p[i];
-    }
-}
+/* One core at a time (bands.c hands bands to the sink under a lock). */
+void port_write(const void *data, size_t len) { cmsdk_uart_write(UART0, data, len); }
 
-void port_icount_start(void)
-{
-    TIMER0_CTRL = 0;
-    TIMER0_RELOAD = 0xFFFFFFFFu;
-    TIMER0_VALUE = 0xFFFFFFFFu;
-    TIMER0_CTRL = 1; /* enable */
-}
+void port_icount_start(void) { cmsdk_timer_start(TIMER0); }
 
-/* No state, so either core may read it: the ticks since the start are the
- * counter's distance from its start value, modulo 2^32 ticks, which is
- * 214.7e9 instructions (three hours of a 20 MHz core). */
-uint64_t port_icount_read(void)
-{
-    uint32_t ticks = 0xFFFFFFFFu - TIMER0_VALUE;
-    return (uint64_t)ticks * INSTRUCTIONS_PER_TICK;
-}
+/* No state, so either core may read it; 2^32 ticks are 214.7e9
+ * instructions (three hours of a 20 MHz core). */
+uint64_t port_icount_read(void) { return (uint64_t)cmsdk_timer_ticks(TIMER0) * INSTRUCTIONS_PER_TICK; }
 
 /* ---- two cores ------------------------------------------------------------ */
 
