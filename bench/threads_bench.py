@@ -69,6 +69,18 @@ def render(scene, threads):
     return secs, eye, busy, quiet
 
 
+def render_pair(scene):
+    """Mean render_seconds of two one-thread renders run at once, as separate
+    processes: what the machine's two cores give two jobs that share
+    nothing, the control for the threads' speed-up."""
+    cmd = lambda k: ["build/host/rt", scene, "-o", os.path.join(OUT, "pair%d.png" % k), "--size", SIZE, "--spd",
+                     "--fixed", "--threads", "1", "--quiet", "--stats"]
+    ps = [subprocess.Popen(cmd(k), cwd=ROOT, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
+          for k in (0, 1)]
+    outs = [p.communicate()[1] for p in ps]
+    return statistics.mean(float(re.search(r"^render_seconds\s+(\S+)$", o, re.M).group(1)) for o in outs)
+
+
 def cpu_name():
     try:
         with open("/proc/cpuinfo") as f:
@@ -98,7 +110,7 @@ def main():
         for n in THREADS:
             render(scene, n)  # warm-up
         times = {n: [] for n in THREADS}
-        busy = []
+        busy, pair = [], []
         eyes, noisy = {}, 0
         for _ in range(args.runs):
             for n in THREADS:
@@ -108,17 +120,22 @@ def main():
                 noisy += not quiet
                 if n == 2:
                     busy.append(b)
+            pair.append(render_pair(scene))
         row = {"scene": name, "threads1_s": statistics.median(times[1]), "threads2_s": statistics.median(times[2]),
                "busy_2": statistics.median(busy), "eye_rays_1": eyes[1], "eye_rays_2": eyes[2], "noisy_runs": noisy}
         row["speedup"] = row["threads1_s"] / row["threads2_s"]
         row["thread_time_ratio"] = 2 * row["busy_2"] * row["threads2_s"] / row["threads1_s"]
+        row["pair_ratio"] = statistics.median(pair) / row["threads1_s"]  # two processes at once, over one alone
+        row["ceiling"] = 2 / row["pair_ratio"]
         rows.append(row)
-        print("%-16s --threads 1 %.3f s  --threads 2 %.3f s  speed-up %.2fx  busy %.3f  thread time %.2fx%s"
+        print("%-16s --threads 1 %.3f s  --threads 2 %.3f s  speed-up %.2fx  busy %.3f  thread time %.2fx  "
+              "two processes %.2fx (ceiling %.2fx)%s"
               % (name, row["threads1_s"], row["threads2_s"], row["speedup"], row["busy_2"], row["thread_time_ratio"],
+                 row["pair_ratio"], row["ceiling"],
                  "  (%d noisy runs)" % noisy if noisy else ""), flush=True)
 
-    keys = ["scene", "threads1_s", "threads2_s", "speedup", "busy_2", "thread_time_ratio", "eye_rays_1", "eye_rays_2",
-            "noisy_runs"]
+    keys = ["scene", "threads1_s", "threads2_s", "speedup", "busy_2", "thread_time_ratio", "pair_ratio", "ceiling",
+            "eye_rays_1", "eye_rays_2", "noisy_runs"]
     with open(os.path.join(ROOT, "bench", "threads.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(keys)
@@ -134,19 +151,23 @@ def main():
           "the share of 2 x its time the threads spent rendering (the rest: starting the second thread, the end "
           "of the frame). Thread time: the two threads' rendering time together against one thread's (2 x busy x "
           "time / one thread's time): above 1 by the extra corner rows and by the threads slowing each other "
-          "down (shared caches, or a host that shares the cores); speed-up = 2 x busy / thread time. Runs during "
+          "down (shared caches, or a host that shares the cores); speed-up = 2 x busy / thread time. Two "
+          "processes: two one-thread renders run at once as separate processes (sharing nothing), their time over "
+          "one alone, measured in the same runs: what this machine's two cores give two independent jobs; ceiling "
+          "= 2 / that, the speed-up the threads could reach here. Runs during "
           "which other processes used more than %d%% of a core were repeated (up to %d times); \"noisy\" counts "
           "those kept anyway (a virtual machine's neighbours are not seen)."
           % (os.cpu_count() or 0, cpu_name(), SIZE, args.runs, int(OTHER_MAX * 100), TRIES), "",
-          "| scene | --threads 1 (s) | --threads 2 (s) | speed-up | busy | thread time | eye rays, 1 thread | "
-          "eye rays, 2 threads | noisy |",
-          "|---|---|---|---|---|---|---|---|---|"]
+          "| scene | --threads 1 (s) | --threads 2 (s) | speed-up | busy | thread time | two processes | ceiling | "
+          "eye rays, 1 thread | eye rays, 2 threads | noisy |",
+          "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        md.append("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %d | %d | %d |" % (
+        md.append("| %s | %.3f | %.3f | %.2fx | %.3f | %.2fx | %.2fx | %.2fx | %d | %d | %d |" % (
             r["scene"], r["threads1_s"], r["threads2_s"], r["speedup"], r["busy_2"], r["thread_time_ratio"],
-            r["eye_rays_1"], r["eye_rays_2"], r["noisy_runs"]))
-    md.append("| geometric mean | %.3f | %.3f | %.2fx | %.3f | %.2fx | | | %d |" % (
+            r["pair_ratio"], r["ceiling"], r["eye_rays_1"], r["eye_rays_2"], r["noisy_runs"]))
+    md.append("| geometric mean | %.3f | %.3f | %.2fx | %.3f | %.2fx | %.2fx | %.2fx | | | %d |" % (
         g1, g2, g1 / g2, gmean([r["busy_2"] for r in rows]), gmean([r["thread_time_ratio"] for r in rows]),
+        gmean([r["pair_ratio"] for r in rows]), gmean([r["ceiling"] for r in rows]),
         sum(r["noisy_runs"] for r in rows)))
     with open(os.path.join(ROOT, "bench", "threads.md"), "w") as f:
         f.write("\n".join(md) + "\n")

@@ -17,7 +17,7 @@ echo "board tests: QEMU lm3s6965evb (OLED) against the hosted fixed build in l4"
 oled_case() { # NAME SCENE SIZE
     n=$1 scene=$2 size=$3
     set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5
-    if ! make -s firmware "$@" >"$OUT/$n.build" 2>&1; then
+    if ! make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1; then
         bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
         return
     fi

@@ -18,7 +18,7 @@ fwdir() { echo "build/board/mps2-an385/$1-$2-d5-rgb888"; }
 fw() {
     n=$1
     shift
-    make -s firmware "$@" >"$OUT/$n.build" 2>&1 &&
+    make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1 &&
         make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
 }
 
@@ -27,7 +27,7 @@ scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2 \
          quadrics torus boxes transforms csg showpiece; do
     d=$(fwdir $s 64x64)
-    if ! make -s firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
+    if ! make -s -j2 firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
         bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
         continue
     fi
@@ -104,11 +104,11 @@ fi
 
 # Linked-symbol checks on the default scene's firmware (and, as a control
 # that the check can fail, the soft-float build must show its helpers).
-make -s firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
+make -s -j2 firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
 d=$(fwdir showpiece 128x128)
 bad_syms=$(arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|__aeabi_f.*|__aeabi_d.*|__aeabi_[fd]2.*)$')
 [ -z "$bad_syms" ] && ok "fixed firmware links no heap or soft-float symbol" || bad "fixed firmware links: $bad_syms"
-make -s firmware BACKEND=double SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
+make -s -j2 firmware BACKEND=double SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
 arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
     ok "control: the soft-float build does link __aeabi_dmul" ||
     bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"

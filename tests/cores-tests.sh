@@ -23,7 +23,7 @@ val() { awk -v k="$2" '$1 == k { print $2 }' "$1"; }
 run() {
     rn=$1
     shift
-    make -s firmware BOARD=$B "$@" >"$OUT/$rn.build" 2>&1 &&
+    make -s -j2 firmware BOARD=$B "$@" >"$OUT/$rn.build" 2>&1 &&
         make -s board-run BOARD=$B "$@" RUN_OUT="$OUT/$rn.png" RUN_RT="$RT" >"$OUT/$rn.report" 2>&1
 }
 stream_of() { eval "$(make -s board-info BOARD=$B "$@")"; echo "${elf%.elf}.stream"; }
