@@ -88,7 +88,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 \
-            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -Iplatform/arch/$(BOARD_ARCH) -I$(FW_DIR)
+            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),
 # errors and counters, the UART sink, and the solids' object-space code

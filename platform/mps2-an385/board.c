@@ -4,7 +4,7 @@
  * (cmsdk.h). The MPS2 AN386 (Cortex-M4F) has the same memory map and
  * peripherals and uses this file too.
  */
-#include "cmsdk.h"
+#include "../arch/cortex-m/cmsdk.h" /* the MPS2 boards' UART and timer */
 #include "port.h"
 
 #define UART0 0x40004000u

@@ -7,7 +7,7 @@
  * Waiting, signalling and the atomic add are the architecture's
  * (platform/arch/cortex-m/multicore.c).
  */
-#include "cmsdk.h"
+#include "../arch/cortex-m/cmsdk.h" /* the MPS2 boards' UART and timer */
 #include "port.h"
 
 #if defined(__ARM_FP) || defined(__ARM_FEATURE_DSP)
