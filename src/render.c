@@ -143,6 +143,11 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     uint16_t w = opts->width ? opts->width : sc->width;
     uint16_t h = opts->height ? opts->height : sc->height;
     int depth = opts->max_depth ? opts->max_depth : RT_MAX_DEPTH;
+    if (opts->worker >= RT_MAX_WORKERS) { /* before ctx is touched: rt_render's is a worker's */
+        rt_error_set(err, 0, "worker exceeds RT_MAX_WORKERS - 1 = ");
+        rt_error_append_int(err, RT_MAX_WORKERS - 1);
+        return -1;
+    }
     ctx->sink = sink;
     ctx->y = ctx->y_end = 0; /* done, should the caller step after a failure */
     if (w == 0 || h == 0 || w > RT_MAX_WIDTH || h > RT_MAX_HEIGHT) {
@@ -155,11 +160,6 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     if (depth > RT_MAX_DEPTH) {
         rt_error_set(err, 0, "depth exceeds RT_MAX_DEPTH = ");
         rt_error_append_int(err, RT_MAX_DEPTH);
-        return -1;
-    }
-    if (opts->worker >= RT_MAX_WORKERS) {
-        rt_error_set(err, 0, "worker exceeds RT_MAX_WORKERS - 1 = ");
-        rt_error_append_int(err, RT_MAX_WORKERS - 1);
         return -1;
     }
     struct rt_worker *wk = &workers[opts->worker];
@@ -289,7 +289,8 @@ static RT_INLINE int render_end(rt_render_ctx_t *ctx)
 RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
                       rt_error_t *err)
 {
-    /* the worker's own context: off the stack, under the whole render */
+    /* the worker's own context: off the stack, under the whole render
+     * (an invalid worker fails before render_begin touches it) */
     rt_render_ctx_t *ctx = &workers[opts->worker < RT_MAX_WORKERS ? opts->worker : 0].ctx;
     int status = render_begin(ctx, sc, opts, sink, stats, err);
     if (status != 0)
@@ -301,6 +302,7 @@ RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sin
 RT_COLD int rt_render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,
                             rt_stats_t *stats, rt_error_t *err)
 {
+    ctx->y = ctx->y_end = 0; /* done, should the caller step after any failure */
     return render_begin(ctx, sc, opts, sink, stats, err);
 }
 

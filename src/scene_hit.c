@@ -20,7 +20,6 @@
  * is not above the smallest far one, which stays conservative: rounding
  * down moves both by less than a unit. */
 
-
 #define NODE_MIN(a) (offsetof(bvh_node_t, min) + (a) * sizeof(real_t))
 #define NODE_MAX(a) (offsetof(bvh_node_t, max) + (a) * sizeof(real_t))
 _Static_assert(NODE_MIN(2) + sizeof(real_t) == offsetof(bvh_node_t, min) + sizeof(vec3_t) &&
