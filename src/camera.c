@@ -4,7 +4,9 @@
 #include "rt_error.h"
 #include "rt_render.h"
 
-RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
+/* The camera with half spans of 1 / (2 sub) pixel, sample (i, j) at
+ * offsets (2i - cx, 2j - cy) of them. */
+static const char *camera_setup(camera_t *c, const view_t *view, int32_t span, int32_t sub, int32_t cx, int32_t cy)
 {
     vec3_t fwd = v3_sub(view->at, view->from);
     if (fwd.x == 0 && fwd.y == 0 && fwd.z == 0)
@@ -19,11 +21,10 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     if (c->u.x == 0 && c->u.y == 0 && c->u.z == 0)
         return "view: 'up' is zero or parallel to the view direction";
     c->v = v3_unit_cross(c->u, w);
-    c->nx = nx;
-    c->ny = ny;
-    int32_t span = (nx > ny ? nx : ny) - 1;
+    c->cx = cx;
+    c->cy = cy;
     real_wide_t tan_half = view->tan_half;
-    real_wide_t half_step = span > 0 ? r_wdiv_int(tan_half, span) : 0;
+    real_wide_t half_step = span > 0 ? r_wdiv_int(tan_half, span * sub) : 0;
     /* T at the distance of `at` (within 16, like all geometry), unless the
      * view is so wide there that T's offsets would pass 256 (a wide lens,
      * or a far camera): then at unit distance */
@@ -34,6 +35,20 @@ RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int
     }
     c->half_span = r_wmul_real(half_step, dist);
     return 0;
+}
+
+RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
+{
+    return camera_setup(c, view, (nx > ny ? nx : ny) - 1, 1, nx - 1, ny - 1);
+}
+
+/* Pixel centres are samples of the w x h camera: pixel i's centre is
+ * 2i - (w - 1) of its half spans, (2i - (w - 1)) sub of the cells' half
+ * spans, and its corners sub cells to either side: corner cell i lies at
+ * 2i - sub w. */
+RT_COLD const char *camera_init_cells(camera_t *c, const view_t *view, int32_t w, int32_t h, int32_t sub)
+{
+    return camera_setup(c, view, (w > h ? w : h) - 1, sub, sub * w, sub * h);
 }
 
 RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
@@ -51,8 +66,8 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
      * and each product is rounded once. |a|, |b| <= max(256, tan_half)
      * and |at| < 513 (camera_init), so up to a lens of 179.8 degrees none
      * needs a saturation test (a wider one would only saturate its edges). */
-    real_t a = r_from_wide_in_range(c->half_span * (2 * i - (c->nx - 1)));
-    real_t b = r_from_wide_in_range(c->half_span * (2 * j - (c->ny - 1)));
+    real_t a = r_from_wide_in_range(c->half_span * (2 * i - c->cx));
+    real_t b = r_from_wide_in_range(c->half_span * (2 * j - c->cy));
     vec3_t t = v3(r_from_wide_in_range(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
                   r_from_wide_in_range(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
                   r_from_wide_in_range(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));

@@ -15,11 +15,19 @@ typedef struct {
     real_wide_t half_span;    /* s / 2 = tan(angle / 2) / (max(X, Y) - 1),
                                * times |at - eye|: at T's distance */
     real_t start;             /* rays start this far from the eye */
-    int32_t nx, ny;           /* samples per row and column */
+    int32_t cx, cy;           /* sample (i, j) lies (2i - cx, 2j - cy) half
+                               * spans from T's reference point */
 } camera_t;
 
-/* NULL, or why the view cannot make a camera. Rays start at the eye. */
+/* NULL, or why the view cannot make a camera of nx x ny samples (the
+ * model's X x Y). Rays start at the eye. */
 const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny);
+
+/* The same view for a frame of w x h pixels, each split into sub x sub
+ * cells: sample (i, j) is the cell corner i / sub, j / sub pixels from the
+ * frame's top left pixel corner (the pixel-area grid of
+ * docs/shading-model.md). */
+const char *camera_init_cells(camera_t *c, const view_t *view, int32_t w, int32_t h, int32_t sub);
 
 /* Start eye rays where they reach the sphere around the box [min, max]
  * (the scene's bounds), if the eye is outside it. */

@@ -93,6 +93,10 @@ struct rt_worker {
     prim_ref_t last_blocker[RT_MAX_LIGHTS];
     material_terms_t terms[RT_MAX_DEPTH];
     ray_scratch_t scratch;
+#if RT_USE_AA
+    real_t aa_threshold; /* adaptive: a corner spread that splits a square */
+    real_t aa_scale;     /* 1 / (corners or samples a pixel sums) */
+#endif
 };
 static struct rt_worker workers[RT_MAX_WORKERS];
 
@@ -119,6 +123,140 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
         put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)));
     }
     ctx->rows[1] = ctx->rows[0]; /* the lower corners are the next line's upper */
+    ctx->rows[0] = below;
+}
+#endif
+
+#if RT_USE_AA
+/* Anti-aliasing: samples of the pixel-area image (docs/shading-model.md),
+ * each clamped to [0, 1] before it is averaged. The camera's samples are
+ * the corners of cells, 2^levels (adaptive) or 2 spp (uniform, whose
+ * samples are every other corner: the cells' centres) to a pixel side. */
+static real_t clamp_unit(real_t c) { return c > 0 ? (c < R_ONE ? c : R_ONE) : 0; }
+
+static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j)
+{
+    ray_t ray = camera_ray(&wk->cam, i, j);
+    wk->scratch.stats.eye_rays++;
+    colour_t c = trace_ray(&wk->tr, &ray, 1, R_ONE);
+    return v3(clamp_unit(c.x), clamp_unit(c.y), clamp_unit(c.z));
+}
+
+/* Line y, uniform: the mean of spp x spp cell centres a pixel. */
+static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+{
+    struct rt_worker *wk = ctx->worker;
+    int32_t n = ctx->spp, sub = 2 * n;
+    for (uint16_t x = 0; x < ctx->w; x++) {
+        colour_t sum = v3(0, 0, 0);
+        for (int32_t b = 0; b < n; b++)
+            for (int32_t a = 0; a < n; a++)
+                sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1));
+        put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale));
+    }
+}
+
+#ifndef AA_GROW
+#define AA_GROW 1
+#endif
+/* A cell corner not traced yet (traced ones are clamped to [0, 1]). */
+#define NOT_TRACED (-R_ONE)
+
+/* Row j of cell corners x0 << levels .. (x0 + w) << levels: the pixel
+ * corners traced, the others not yet. */
+static void aa_corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, unsigned levels, colour_t *row)
+{
+    uint32_t sub = 1u << levels;
+    for (uint32_t i = 0; i <= (uint32_t)w << levels; i++)
+        row[i].x = i % sub ? NOT_TRACED : 0;
+    for (uint32_t i = 0; i <= w; i++)
+        row[i << levels] = aa_sample(wk, (int32_t)(x0 + i) << levels, j);
+}
+
+/* The largest difference of one channel among four corners. */
+static real_t spread(real_t a, real_t b, real_t c, real_t d)
+{
+    real_t hi = a, lo = a;
+    hi = b > hi ? b : hi, lo = b < lo ? b : lo;
+    hi = c > hi ? c : hi, lo = c < lo ? c : lo;
+    hi = d > hi ? d : hi, lo = d < lo ? d : lo;
+    return hi - lo;
+}
+
+/* Corner (x, y) of grid g (n a side) whose top left is cell corner (i, j). */
+static const colour_t *aa_corner(struct rt_worker *wk, colour_t *g, unsigned n, int32_t i, int32_t j, unsigned x,
+                                 unsigned y)
+{
+    colour_t *c = &g[y * n + x];
+    if (c->x < 0)
+        *c = aa_sample(wk, i + (int32_t)x, j + (int32_t)y);
+    return c;
+}
+
+/* Pixel (i, j) of an adaptive frame from its grid g of (2^levels + 1)^2
+ * cell corners, traced as they are first needed. Squares wait on a small
+ * stack (three siblings a level), so no recursion adds to trace_ray's. */
+static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j, unsigned levels)
+{
+    struct {
+        uint8_t x, y, level;
+    } todo[3 * RT_AA_MAX_LEVELS + 1];
+    unsigned n_todo = 1, sub = 1u << levels, n = sub + 1;
+    todo[0].x = todo[0].y = todo[0].level = 0;
+    colour_t sum = v3(0, 0, 0);
+    while (n_todo > 0) {
+        n_todo--;
+        unsigned x = todo[n_todo].x, y = todo[n_todo].y, level = todo[n_todo].level, size = sub >> level;
+        const colour_t *c[4];
+        for (unsigned k = 0; k < 4; k++)
+            c[k] = aa_corner(wk, g, n, i, j, x + (k & 1u) * size, y + (k >> 1) * size);
+        real_t thr = wk->aa_threshold * (1 << (AA_GROW * level));
+        if (level < levels && (spread(c[0]->x, c[1]->x, c[2]->x, c[3]->x) > thr ||
+                               spread(c[0]->y, c[1]->y, c[2]->y, c[3]->y) > thr ||
+                               spread(c[0]->z, c[1]->z, c[2]->z, c[3]->z) > thr)) {
+            unsigned half = size / 2;
+            wk->scratch.stats.aa_splits++;
+            for (unsigned k = 0; k < 4; k++) {
+                todo[n_todo].x = (uint8_t)(x + (k & 1u) * half);
+                todo[n_todo].y = (uint8_t)(y + (k >> 1) * half);
+                todo[n_todo].level = (uint8_t)(level + 1);
+                n_todo++;
+            }
+        } else { /* the corners' mean times the square's share, 4^(levels - level) of 4^levels cells */
+            colour_t corners = v3_add(v3_add(*c[0], *c[1]), v3_add(*c[2], *c[3]));
+            int32_t cells = (int32_t)1 << (2 * (levels - level));
+            sum = v3_add(sum, v3(corners.x * cells, corners.y * cells, corners.z * cells));
+        }
+    }
+    return v3_scale(sum, wk->aa_scale);
+}
+
+/* Line y, adaptive: rows[0] holds the cell corners on the line's upper
+ * edge, rows[1] gets those of its lower edge; a pixel's left edge is its
+ * left neighbour's right one. */
+static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+{
+    struct rt_worker *wk = ctx->worker;
+    unsigned levels = ctx->aa_levels, sub = 1u << levels, n = sub + 1;
+    colour_t *above = ctx->rows[0], *below = ctx->rows[1], *g = ctx->cells;
+    aa_corner_row(wk, (int32_t)(y + 1) << levels, ctx->x0, ctx->w, levels, below);
+    for (uint16_t x = 0; x < ctx->w; x++) {
+        colour_t *top = above + x * sub, *bottom = below + x * sub;
+        for (unsigned r = 1; r < sub; r++) {
+            g[r * n] = x > 0 ? g[r * n + sub] : v3(NOT_TRACED, 0, 0);
+            for (unsigned k = 1; k <= sub; k++)
+                g[r * n + k].x = NOT_TRACED;
+        }
+        for (unsigned k = 0; k <= sub; k++) {
+            g[k] = top[k];
+            g[sub * n + k] = bottom[k];
+        }
+        colour_t c = aa_pixel(wk, g, (int32_t)(ctx->x0 + x) << levels, (int32_t)y << levels, levels);
+        for (unsigned k = 0; k <= sub; k++)
+            bottom[k] = g[sub * n + k]; /* for the line below */
+        put_pixel(line, x, ctx->sink->format, c);
+    }
+    ctx->rows[1] = ctx->rows[0];
     ctx->rows[0] = below;
 }
 #endif
@@ -204,6 +342,42 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
     }
 #endif
+#if !RT_USE_AA
+    if (opts->aa_levels || opts->spp > 1) {
+        rt_error_set(err, 0, "anti-aliasing is not compiled in (RT_USE_AA = 0)");
+        return -1;
+    }
+    int32_t sub = 1;
+#else
+    ctx->aa_levels = opts->aa_levels;
+    ctx->spp = opts->spp > 1 ? opts->spp : 0;
+    if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
+        rt_error_set(err, 0, "choose one of SPD mode, adaptive and uniform anti-aliasing");
+        return -1;
+    }
+    if (ctx->aa_levels > RT_AA_MAX_LEVELS || ctx->spp > RT_AA_MAX_SPP) {
+        rt_error_set(err, 0, ctx->spp ? "anti-aliasing samples exceed RT_AA_MAX_SPP = "
+                                      : "anti-aliasing levels exceed RT_AA_MAX_LEVELS = ");
+        rt_error_append_int(err, ctx->spp ? RT_AA_MAX_SPP : RT_AA_MAX_LEVELS);
+        return -1;
+    }
+    int32_t sub = ctx->aa_levels ? (int32_t)1 << ctx->aa_levels : 2 * ctx->spp; /* cells a pixel side */
+    if (ctx->aa_levels) {
+        size_t row = ((size_t)vp.w << ctx->aa_levels) + 1;
+        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_AA_SCRATCH(vp.w, ctx->aa_levels)) {
+            rt_error_set(err, 0, "anti-aliasing needs a scratch buffer of RT_RENDER_AA_SCRATCH(width, levels) bytes");
+            return -1;
+        }
+        ctx->rows[0] = opts->scratch;
+        ctx->rows[1] = (colour_t *)ctx->rows[0] + row;
+        ctx->cells = (colour_t *)ctx->rows[1] + row;
+        uint32_t t = opts->aa_threshold ? opts->aa_threshold : RT_AA_THRESHOLD;
+        wk->aa_threshold = r_div(r_from_int((int32_t)t), r_from_int(255));
+        wk->aa_scale = R_RATIO(1, (int32_t)4 << (2 * ctx->aa_levels));
+    } else if (ctx->spp) {
+        wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
+    }
+#endif
     int32_t nx = w, ny = h;
 #if RT_USE_SPD
     if (opts->spd) { /* a grid of corners, one more each way */
@@ -213,7 +387,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 #endif
     /* another viewpoint: rt_camera_from_view made it a view_t */
     const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
-    const char *why = camera_init(&wk->cam, view, nx, ny);
+    const char *why = sub > 1 ? camera_init_cells(&wk->cam, view, w, h, sub) : camera_init(&wk->cam, view, nx, ny);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;
@@ -243,6 +417,10 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     if (opts->spd)
         corner_row(wk, vp.y, vp.x, vp.w, ctx->rows[0]);
 #endif
+#if RT_USE_AA
+    if (ctx->aa_levels)
+        aa_corner_row(wk, (int32_t)vp.y << ctx->aa_levels, vp.x, vp.w, ctx->aa_levels, ctx->rows[0]);
+#endif
     return 0;
 }
 
@@ -265,6 +443,13 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 #if RT_USE_SPD
         if (ctx->spd)
             spd_line(ctx, y, line);
+        else
+#endif
+#if RT_USE_AA
+        if (ctx->aa_levels)
+            adaptive_line(ctx, y, line);
+        else if (ctx->spp)
+            uniform_line(ctx, y, line);
         else
 #endif
             plain_line(ctx, y, line);

@@ -189,6 +189,24 @@
 #define RT_USE_SPD 1
 #endif
 
+/* Anti-aliasing (rt_render_opts_t.aa_levels, .spp); firmware that never
+ * asks for it leaves it out. Adaptive subdivision splits a pixel at most
+ * RT_AA_MAX_LEVELS times (2^levels cells a side), where its corners differ
+ * by more than RT_AA_THRESHOLD / 255 unless the options say otherwise;
+ * uniform sampling takes up to RT_AA_MAX_SPP x RT_AA_MAX_SPP samples. */
+#ifndef RT_USE_AA
+#define RT_USE_AA 1
+#endif
+#ifndef RT_AA_MAX_LEVELS
+#define RT_AA_MAX_LEVELS 4
+#endif
+#ifndef RT_AA_THRESHOLD
+#define RT_AA_THRESHOLD 12
+#endif
+#ifndef RT_AA_MAX_SPP
+#define RT_AA_MAX_SPP 16
+#endif
+
 /* RT_FB_ONLY_FORMAT: the one pixel format (an RT_FB_* of rt_fb.h) the
  * render packs, so the other packers are left out; unset, all of them are
  * in (the board build sets it from FORMAT=). */
@@ -278,6 +296,18 @@
 #endif
 #if !(RT_BVH_LEAF_SIZE >= 1 && RT_BVH_LEAF_SIZE <= 16)
 #error "RT_BVH_LEAF_SIZE out of 1..16"
+#endif
+/* An adaptive pixel's sum of 4^(levels + 1) corner colours in [0, 1]
+ * is at most 2^10 (inside the fixed range's 2048), as is a uniform pixel's sum of
+ * spp^2 samples. */
+#if !(RT_AA_MAX_LEVELS >= 1 && RT_AA_MAX_LEVELS <= 4)
+#error "RT_AA_MAX_LEVELS out of 1..4"
+#endif
+#if !(RT_AA_THRESHOLD >= 1 && RT_AA_THRESHOLD <= 255)
+#error "RT_AA_THRESHOLD out of 1..255"
+#endif
+#if !(RT_AA_MAX_SPP >= 2 && RT_AA_MAX_SPP <= 32)
+#error "RT_AA_MAX_SPP out of 2..32"
 #endif
 #if !(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255)
 #error "RT_MAX_LIGHTS out of 1..255"

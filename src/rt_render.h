@@ -51,7 +51,21 @@ typedef struct {
      * colours: at least RT_RENDER_SPD_SCRATCH(width) bytes (the viewport's
      * width if one is set). */
     bool spd;
-    void *scratch;
+    /* Anti-aliasing (RT_USE_AA), each pixel the mean over its square of
+     * the model's colour, clamped (docs/shading-model.md, "Pixel area"):
+     *   aa_levels 1..RT_AA_MAX_LEVELS: adaptive. Samples at the pixel's
+     *     corners (shared with its neighbours); a square whose corners
+     *     differ by more than aa_threshold / 255 in a channel is split in
+     *     four, down to aa_levels times; each square counts its corners'
+     *     mean by its area. Needs `scratch` of at least
+     *     RT_RENDER_AA_SCRATCH(width, aa_levels) bytes (the viewport's
+     *     width if one is set). aa_threshold 0: RT_AA_THRESHOLD.
+     *   spp 2..RT_AA_MAX_SPP: uniform, spp x spp samples at the centres
+     *     of equal cells (the converged reference with many); no scratch.
+     * 0 for both: one sample at the pixel's centre (the default). Neither
+     * goes with SPD mode, nor with each other. */
+    uint8_t aa_levels, aa_threshold, spp;
+    void *scratch; /* aligned for the core's real_t (8 bytes will do) */
     size_t scratch_bytes;
     /* Which of the RT_MAX_WORKERS workers (rt_config.h) renders: renders
      * running at the same time, on other cores or threads, each need
@@ -60,6 +74,11 @@ typedef struct {
 } rt_render_opts_t;
 
 #define RT_RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * 3 * RT_REAL_BYTES)
+/* Adaptive anti-aliasing: two rows of cell-corner colours and one pixel's
+ * grid of them. */
+#define RT_RENDER_AA_SCRATCH(width, levels)                                                    \
+    ((2 * (((size_t)(width) << (levels)) + 1) + (((size_t)1 << (levels)) + 1) * (((size_t)1 << (levels)) + 1)) * \
+     3 * RT_REAL_BYTES)
 
 
 /* Another viewpoint for scene sc: 0, or -1 with *err set when a position
@@ -104,7 +123,9 @@ typedef struct {
     uint16_t y, y_end, band_y; /* next line, end, first line of the band */
     unsigned cur;              /* the band buffer being filled */
     bool spd;
-    void *rows[2];             /* SPD corner rows (in the scratch) */
+    uint8_t aa_levels, spp;    /* anti-aliasing: as the options say */
+    void *rows[2];             /* SPD or AA corner rows (in the scratch) */
+    void *cells;               /* AA: one pixel's cell corners (in the scratch) */
     struct rt_worker *worker;  /* the core's state for this render (render.c) */
     rt_stats_t *stats;         /* the caller's, or NULL */
 } rt_render_ctx_t;

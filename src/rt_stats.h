@@ -16,7 +16,8 @@
     X(reflect_rays, "reflection rays traced") \
     X(refract_rays, "refraction rays traced") \
     X(shadow_rays, "shadow rays, including lights a patch hides from itself") \
-    X(bvh_nodes_visited, "BVH nodes visited")
+    X(bvh_nodes_visited, "BVH nodes visited") \
+    X(aa_splits, "squares adaptive anti-aliasing split in four")
 
 /* Room for the per-kind counters: at least the number of kinds
  * (prim_kinds.h checks), so this header needs none of the core's. */

@@ -637,17 +637,21 @@ static Vec trace(Vec o, Vec d, int depth)
     return col;
 }
 
+static double clamp01(double c)
+{
+    return c > 0 ? (c < 1 ? c : 1) : 0; /* a NaN would become 0 */
+}
+
 static unsigned char byte(double c)
 {
-    c = c > 0 ? (c < 1 ? c : 1) : 0; /* a NaN would become 0 */
-    return (unsigned char)floor(255 * c + 0.5);
+    return (unsigned char)floor(255 * clamp01(c) + 0.5);
 }
 
 /* ---- main ------------------------------------------------------------- */
 
 static void usage(void)
 {
-    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N]\n", stderr);
+    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N]\n", stderr);
     exit(2);
 }
 
@@ -665,7 +669,7 @@ static long whole(const char *s, char **end, long lo, long hi)
 int main(int argc, char **argv)
 {
     const char *scene = NULL, *outname = NULL;
-    long sx = 0, sy = 0;
+    long sx = 0, sy = 0, spp = 1;
     int i, j, X, Y, big;
     double s, pi = acos(-1.0);
     Vec w, u, v;
@@ -684,6 +688,10 @@ int main(int argc, char **argv)
                 usage();
         } else if (!strcmp(argv[i], "--depth") && i + 1 < argc) {
             max_depth = (int)whole(argv[++i], &end, 1, 100);
+            if (*end)
+                usage();
+        } else if (!strcmp(argv[i], "--spp") && i + 1 < argc) {
+            spp = whole(argv[++i], &end, 1, 64);
             if (*end)
                 usage();
         } else if (argv[i][0] != '-' && !scene) {
@@ -735,12 +743,23 @@ int main(int argc, char **argv)
     fprintf(f, "P6\n%d %d\n255\n", X, Y);
     for (j = 0; j < Y; j++) {
         for (i = 0; i < X; i++) {
-            Vec dir = norm(add(w, add(mul(u, (i - (X - 1) / 2.0) * s),
-                                      mul(v, -(j - (Y - 1) / 2.0) * s))));
-            Vec c = trace(from, dir, 1);
-            row[3 * i] = byte(c.x);
-            row[3 * i + 1] = byte(c.y);
-            row[3 * i + 2] = byte(c.z);
+            /* the pixel-area image: the mean of spp x spp samples at the
+             * centres of equal cells of the pixel's square, each clamped
+             * (--spp 1: the pixel's centre alone) */
+            Vec sum = vec(0, 0, 0);
+            int a, b;
+            for (b = 0; b < spp; b++) {
+                for (a = 0; a < spp; a++) {
+                    double x = i - 0.5 + (a + 0.5) / spp, y = j - 0.5 + (b + 0.5) / spp;
+                    Vec dir = norm(add(w, add(mul(u, (x - (X - 1) / 2.0) * s), mul(v, -(y - (Y - 1) / 2.0) * s))));
+                    Vec c = trace(from, dir, 1);
+                    sum = add(sum, vec(clamp01(c.x), clamp01(c.y), clamp01(c.z)));
+                }
+            }
+            sum = mul(sum, 1.0 / (double)(spp * spp));
+            row[3 * i] = byte(sum.x);
+            row[3 * i + 1] = byte(sum.y);
+            row[3 * i + 2] = byte(sum.z);
         }
         fwrite(row, 3, (size_t)X, f);
     }

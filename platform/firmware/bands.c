@@ -220,6 +220,8 @@ static void render_bands(unsigned c)
                                       (uint16_t)(BOARD_HEIGHT - y < BOARD_BAND_LINES ? BOARD_HEIGHT - y
                                                                                      : BOARD_BAND_LINES) };
         o.worker = (uint8_t)c;
+        if (o.scratch) /* each core its own (bands.h) */
+            o.scratch = (uint8_t *)o.scratch + c * o.scratch_bytes;
         rt_fb_sink_t *sink = &core_sink[c];
         sink->band[0] = slot_px[c][k];
         segment_t seg = segment_start(c);

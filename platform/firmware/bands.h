@@ -23,7 +23,9 @@ typedef struct {
 } bands_report_t;
 
 /* Renders the frame of opts (width, height, depth; no viewport) on all
- * cores into sink: core 0 calls this, it starts the others. 0, -1 with
+ * cores into sink: core 0 calls this, it starts the others. A scratch
+ * (adaptive anti-aliasing) is BOARD_CORES areas of scratch_bytes each,
+ * one after the other: one per core. 0, -1 with
  * *err set, or the sink's failure. */
 int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, bands_report_t *rep,
                  rt_error_t *err);

@@ -29,6 +29,23 @@
 #define BOARD_ADAPTIVE_MILLI 0
 #endif
 
+/* Anti-aliasing (make AA=LEVELS[,THRESHOLD] or SPP=N): adaptive levels
+ * and threshold, or uniform samples a side; 0 = one sample a pixel. */
+#ifndef BOARD_AA_LEVELS
+#define BOARD_AA_LEVELS 0
+#endif
+#ifndef BOARD_AA_THRESHOLD
+#define BOARD_AA_THRESHOLD 0
+#endif
+#ifndef BOARD_SPP
+#define BOARD_SPP 0
+#endif
+#if BOARD_AA_LEVELS
+/* each core's rows of cell corners, one after the other (bands.c) */
+#define AA_SCRATCH_BYTES RT_RENDER_AA_SCRATCH(BOARD_WIDTH, BOARD_AA_LEVELS)
+static uint64_t aa_scratch[BOARD_CORES][(AA_SCRATCH_BYTES + 7) / 8];
+#endif
+
 _Static_assert(BOARD_WIDTH >= 1 && BOARD_WIDTH <= RT_MAX_WIDTH, "BOARD_WIDTH out of range");
 _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT out of range");
 _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out of 1..RT_MAX_DEPTH");
@@ -56,7 +73,12 @@ int main(void)
         return 2;
     }
     rt_render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
-                           .adaptive_milli = BOARD_ADAPTIVE_MILLI };
+                           .adaptive_milli = BOARD_ADAPTIVE_MILLI, .aa_levels = BOARD_AA_LEVELS,
+                           .aa_threshold = BOARD_AA_THRESHOLD, .spp = BOARD_SPP };
+#if BOARD_AA_LEVELS
+    opts.scratch = aa_scratch;
+    opts.scratch_bytes = sizeof aa_scratch[0];
+#endif
     static rt_stats_t st;
     static rt_fb_sink_t sink;
     uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;

@@ -10,7 +10,7 @@
  * more row of corners per run start (N - 1 plus one per such split),
  * where fixed bands of 16 lines cost one per band (6% more eye rays at
  * 512 lines). Thread i is the core's worker i and has its own sink (one
- * line: every step is flushed), SPD scratch and stats; the sinks write
+ * line: every step is flushed), SPD or anti-aliasing scratch and stats; the sinks write
  * disjoint rows of one image, so pixels take no lock; the runs' bounds
  * take one mutex. The calling thread is thread 0.
  *
@@ -240,23 +240,28 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     job.n_runs = threads;
     for (unsigned i = 0; job.runs && i < threads; i++)
         job.runs[i] = (run_t){ (unsigned)((uint64_t)vp.h * i / threads), (unsigned)((uint64_t)vp.h * (i + 1) / threads) };
-    /* each thread: one line in the format (every step is flushed), two
-     * rows of corner colours (sized for the widest real_t, double) */
+    /* each thread: one line in the format (every step is flushed), and
+     * for SPD mode two rows of corner colours, for adaptive anti-aliasing
+     * RT_RENDER_AA_SCRATCH's rows and grid (sized for the widest real_t,
+     * double) */
     size_t band_bytes = RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1) * (job.split ? 1 : ONE_CALL_LINES);
-    size_t scratch_bytes = 2 * ((size_t)(vp.w ? vp.w : RT_MAX_WIDTH) + 1) * 3 * sizeof(double);
+    size_t scratch_w = vp.w ? vp.w : RT_MAX_WIDTH, sub = (size_t)1 << (opts->aa_levels & 15u);
+    size_t scratch_bytes = opts->spd          ? 2 * (scratch_w + 1) * 3 * sizeof(double)
+                           : opts->aa_levels ? (2 * (scratch_w * sub + 1) + (sub + 1) * (sub + 1)) * 3 * sizeof(double)
+                                             : 0;
     bool ok = t != NULL && job.runs != NULL && (img->rgb || !valid);
     for (unsigned i = 0; ok && i < threads; i++) {
         t[i].job = &job;
         t[i].index = i;
         t[i].band = malloc(band_bytes);
-        t[i].scratch = opts->spd ? malloc(scratch_bytes) : NULL;
-        t[i].scratch_bytes = opts->spd ? scratch_bytes : 0;
+        t[i].scratch = scratch_bytes ? malloc(scratch_bytes) : NULL;
+        t[i].scratch_bytes = scratch_bytes;
         t[i].sink = (rt_fb_sink_t){ .format = format,
                                     .band = { t[i].band, NULL },
                                     .band_bytes = band_bytes,
                                     .flush = band_flush,
                                     .user = &t[i] };
-        ok = t[i].band && (t[i].scratch || !opts->spd);
+        ok = t[i].band && (t[i].scratch || !scratch_bytes);
     }
     int status = 1; /* out of memory: as a sink's failure */
     if (ok) {

@@ -39,6 +39,11 @@ static const char usage_text[] =
     "                      (text, the default) or one JSON object (json)\n"
     "  --spd               SPD test procedure: 512x512 pixels (or --size) from corner\n"
     "                      rays, four averaged per pixel, depth 5, SPD rule 8\n"
+    "  --aa L[,T]          adaptive anti-aliasing: split a pixel's square where its\n"
+    "                      corners differ by more than T/255 (default %d), at most\n"
+    "                      L times (1..%d)\n"
+    "  --spp N             uniform anti-aliasing: N x N samples a pixel (2..%d;\n"
+    "                      --double --spp 16 is the converged pixel-area image)\n"
     "  --adaptive W        skip child rays whose share of the pixel is below W\n"
     "                      (0.001..1; off by default)\n"
     "  --threads N         render with N threads, 1..%d (default: the online CPUs,\n"
@@ -142,11 +147,12 @@ static void print_usage(void)
     for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
         used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
                                  backends[i].what);
-    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list, RT_MAX_WORKERS, bands_default_threads());
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list, RT_AA_THRESHOLD, RT_AA_MAX_LEVELS, RT_AA_MAX_SPP,
+           RT_MAX_WORKERS, bands_default_threads());
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -162,6 +168,8 @@ static const struct option render_options[] = {
     { "format", required_argument, NULL, OPT_FORMAT },
     { "stats", optional_argument, NULL, OPT_STATS },
     { "spd", no_argument, NULL, OPT_SPD },
+    { "aa", required_argument, NULL, OPT_AA },
+    { "spp", required_argument, NULL, OPT_SPP },
     { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
     { "threads", required_argument, NULL, OPT_THREADS },
     { "quiet", no_argument, NULL, OPT_QUIET },
@@ -173,6 +181,7 @@ static const struct option render_options[] = {
 static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
     { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" },
+    { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" },
     { OPT_THREADS, "a number" }, { 0, NULL },
 };
 
@@ -266,6 +275,37 @@ static int cmd_render(int argc, char **argv)
         case OPT_SPD:
             opts.spd = true;
             break;
+        case OPT_AA: {
+            long l, t = 0;
+            char buf[32];
+            const char *comma = strchr(optarg, ',');
+            size_t n = comma ? (size_t)(comma - optarg) : strlen(optarg);
+            bool ok = n < sizeof buf;
+            if (ok) {
+                memcpy(buf, optarg, n);
+                buf[n] = '\0';
+                ok = parse_uint(buf, 1, RT_AA_MAX_LEVELS, &l) && (!comma || parse_uint(comma + 1, 1, 255, &t));
+            }
+            if (!ok) {
+                char msg[128];
+                snprintf(msg, sizeof msg, "--aa: expected LEVELS (1..%d) or LEVELS,THRESHOLD (1..255), got '%%s'",
+                         RT_AA_MAX_LEVELS);
+                return render_usage_error(msg, optarg);
+            }
+            opts.aa_levels = (uint8_t)l;
+            opts.aa_threshold = (uint8_t)t;
+            break;
+        }
+        case OPT_SPP: {
+            long n;
+            if (!parse_uint(optarg, 1, RT_AA_MAX_SPP, &n)) {
+                char msg[96];
+                snprintf(msg, sizeof msg, "--spp: expected a number from 1 to %d, got '%%s'", RT_AA_MAX_SPP);
+                return render_usage_error(msg, optarg);
+            }
+            opts.spp = (uint8_t)n;
+            break;
+        }
         case OPT_ADAPTIVE: {
             double v;
             if (!parse_double(optarg, &v) || v < 0.001 || v > 1)
