@@ -156,9 +156,6 @@ static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
     }
 }
 
-#ifndef AA_GROW
-#define AA_GROW 1
-#endif
 /* A cell corner not traced yet (traced ones are clamped to [0, 1]). */
 #define NOT_TRACED (-R_ONE)
 
@@ -193,9 +190,21 @@ static const colour_t *aa_corner(struct rt_worker *wk, colour_t *g, unsigned n, 
     return c;
 }
 
+/* Whether a channel of a, b, c, d spreads over more than t. */
+static bool spread_over(colour_t a, colour_t b, colour_t c, colour_t d, real_t t)
+{
+    return spread(a.x, b.x, c.x, d.x) > t || spread(a.y, b.y, c.y, d.y) > t || spread(a.z, b.z, c.z, d.z) > t;
+}
+
 /* Pixel (i, j) of an adaptive frame from its grid g of (2^levels + 1)^2
- * cell corners, traced as they are first needed. Squares wait on a small
- * stack (three siblings a level), so no recursion adds to trace_ray's. */
+ * cell corners, traced as they are first needed (docs/shading-model.md,
+ * "Anti-aliasing"). A square whose corners spread over the threshold
+ * (times 4 a level: a square's share of the pixel is 4 times smaller)
+ * gets its centre traced; it is split in four unless the centre lies
+ * within half that of the corners' mean (the colour is close to
+ * bilinear: a gradient, not an edge), when it counts as the mean of
+ * corners and centre. Squares wait on a small stack (three siblings a
+ * level), so no recursion adds to trace_ray's frames. */
 static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j, unsigned levels)
 {
     struct {
@@ -207,26 +216,31 @@ static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j
     while (n_todo > 0) {
         n_todo--;
         unsigned x = todo[n_todo].x, y = todo[n_todo].y, level = todo[n_todo].level, size = sub >> level;
+        unsigned half = size / 2;
         const colour_t *c[4];
         for (unsigned k = 0; k < 4; k++)
             c[k] = aa_corner(wk, g, n, i, j, x + (k & 1u) * size, y + (k >> 1) * size);
-        real_t thr = wk->aa_threshold * (1 << (AA_GROW * level));
-        if (level < levels && (spread(c[0]->x, c[1]->x, c[2]->x, c[3]->x) > thr ||
-                               spread(c[0]->y, c[1]->y, c[2]->y, c[3]->y) > thr ||
-                               spread(c[0]->z, c[1]->z, c[2]->z, c[3]->z) > thr)) {
-            unsigned half = size / 2;
-            wk->scratch.stats.aa_splits++;
-            for (unsigned k = 0; k < 4; k++) {
-                todo[n_todo].x = (uint8_t)(x + (k & 1u) * half);
-                todo[n_todo].y = (uint8_t)(y + (k >> 1) * half);
-                todo[n_todo].level = (uint8_t)(level + 1);
-                n_todo++;
+        colour_t corners = v3_add(v3_add(*c[0], *c[1]), v3_add(*c[2], *c[3])); /* 4 times their mean */
+        real_t limit = wk->aa_threshold * ((int32_t)1 << (2 * level));
+        if (level < levels && spread_over(*c[0], *c[1], *c[2], *c[3], limit)) {
+            colour_t m4 = v3_scale(*aa_corner(wk, g, n, i, j, x + half, y + half), r_from_int(4));
+            colour_t off = v3_sub(m4, corners); /* 4 (centre - mean) */
+            real_t near = 2 * limit;            /* 4 (limit / 2) */
+            if (r_abs(off.x) > near || r_abs(off.y) > near || r_abs(off.z) > near) {
+                wk->scratch.stats.aa_splits++;
+                for (unsigned k = 0; k < 4; k++) {
+                    todo[n_todo].x = (uint8_t)(x + (k & 1u) * half);
+                    todo[n_todo].y = (uint8_t)(y + (k >> 1) * half);
+                    todo[n_todo].level = (uint8_t)(level + 1);
+                    n_todo++;
+                }
+                continue;
             }
-        } else { /* the corners' mean times the square's share, 4^(levels - level) of 4^levels cells */
-            colour_t corners = v3_add(v3_add(*c[0], *c[1]), v3_add(*c[2], *c[3]));
-            int32_t cells = (int32_t)1 << (2 * (levels - level));
-            sum = v3_add(sum, v3(corners.x * cells, corners.y * cells, corners.z * cells));
+            corners = v3_scale(v3_add(corners, m4), R_RATIO(1, 2));
         }
+        /* 4 times the square's mean times its share, 4^(levels - level) of 4^levels cells */
+        int32_t cells = (int32_t)1 << (2 * (levels - level));
+        sum = v3_add(sum, v3(corners.x * cells, corners.y * cells, corners.z * cells));
     }
     return v3_scale(sum, wk->aa_scale);
 }

@@ -201,7 +201,7 @@
 #define RT_AA_MAX_LEVELS 4
 #endif
 #ifndef RT_AA_THRESHOLD
-#define RT_AA_THRESHOLD 12
+#define RT_AA_THRESHOLD 8
 #endif
 #ifndef RT_AA_MAX_SPP
 #define RT_AA_MAX_SPP 16
