@@ -12,12 +12,25 @@
 #define PIXEL_FORMAT(f) (f)
 #endif
 
-/* Pixel x of a line in format f: the one packer of every format (rt_fb.h). */
-static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, colour_t c)
+#if RT_USE_DITHER
+/* A 4x4 Bayer matrix: pixel (x, y) rounds up from (2 m + 1) / 32 of a
+ * quantisation step, m = bayer4[y % 4][x % 4]; its mean is one half, the
+ * threshold of rounding to nearest. */
+static const uint8_t bayer4[4][4] = { { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 } };
+/* 8-bit v at n levels above 0, rounding up from d / 32 of a step */
+static RT_INLINE unsigned dither_channel(unsigned v, unsigned n, unsigned d) { return (v * n * 32u + 255u * d) / (255u * 32u); }
+#endif
+
+/* Pixel x of a line in format f: the one packer of every format (rt_fb.h).
+ * d: 0, or the dither threshold 1..31 (in 1/32 of a step) of the pixel. */
+static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, colour_t c, unsigned d)
 {
     unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
     unsigned w, l;
     uint8_t *px;
+#if !RT_USE_DITHER
+    (void)d;
+#endif
     switch (PIXEL_FORMAT(f)) {
     case RT_FB_RGB888:
         px = line + 3u * x;
@@ -35,24 +48,49 @@ static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, col
     case RT_FB_RGB565:
     case RT_FB_RGB565BE:
         px = line + 2u * x;
-        w = ((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 | ((b * 31u + 127u) / 255u);
+#if RT_USE_DITHER
+        if (d)
+            w = dither_channel(r, 31, d) << 11 | dither_channel(g, 63, d) << 5 | dither_channel(b, 31, d);
+        else
+#endif
+            w = ((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 | ((b * 31u + 127u) / 255u);
         if (PIXEL_FORMAT(f) == RT_FB_RGB565BE)
             w = (w >> 8 | w << 8) & 0xFFFFu;
         px[0] = (uint8_t)w;
         px[1] = (uint8_t)(w >> 8);
         break;
     default: /* RT_FB_L8, RT_FB_L4 */
-        l = (77u * r + 150u * g + 29u * b + 128u) >> 8;
+        l = 77u * r + 150u * g + 29u * b; /* luma times 256 */
+#if RT_USE_DITHER
+        if (d)
+            l = PIXEL_FORMAT(f) == RT_FB_L8 ? (l + 8u * d) >> 8 : (l * 15u * 32u + 65280u * d) / (65280u * 32u);
+        else
+#endif
+        {
+            l = (l + 128u) >> 8;
+            if (PIXEL_FORMAT(f) == RT_FB_L4)
+                l = (l * 15u + 127u) / 255u;
+        }
         if (PIXEL_FORMAT(f) == RT_FB_L8) {
             line[x] = (uint8_t)l;
         } else {
-            l = (l * 15u + 127u) / 255u;
             px = line + (x >> 1);
             /* the left pixel's write clears the right one's nibble */
             *px = x & 1u ? (uint8_t)(*px | l) : (uint8_t)(l << 4);
         }
         break;
     }
+}
+
+/* The dither threshold of frame pixel (x, y) for ctx's sink: 0 when off. */
+static RT_INLINE unsigned dither_at(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
+{
+#if RT_USE_DITHER
+    return ctx->sink->dither ? 2u * bayer4[y & 3u][x & 3u] + 1u : 0u;
+#else
+    (void)ctx, (void)x, (void)y;
+    return 0;
+#endif
 }
 
 static void wait_flushed(rt_fb_sink_t *sink)
@@ -120,7 +158,7 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
     corner_row(ctx->worker, y + 1, ctx->x0, ctx->w, below);
     for (uint16_t x = 0; x < ctx->w; x++) {
         colour_t sum = c3_add(c3_add(above[x], above[x + 1]), c3_add(below[x], below[x + 1]));
-        put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)));
+        put_pixel(line, x, ctx->sink->format, v3_scale(sum, R_RATIO(1, 4)), dither_at(ctx, ctx->x0 + x, y));
     }
     ctx->rows[1] = ctx->rows[0]; /* the lower corners are the next line's upper */
     ctx->rows[0] = below;
@@ -152,7 +190,7 @@ static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
         for (int32_t b = 0; b < n; b++)
             for (int32_t a = 0; a < n; a++)
                 sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1));
-        put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale));
+        put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale), dither_at(ctx, ctx->x0 + x, y));
     }
 }
 
@@ -268,7 +306,7 @@ static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
         colour_t c = aa_pixel(wk, g, (int32_t)(ctx->x0 + x) << levels, (int32_t)y << levels, levels);
         for (unsigned k = 0; k <= sub; k++)
             bottom[k] = g[sub * n + k]; /* for the line below */
-        put_pixel(line, x, ctx->sink->format, c);
+        put_pixel(line, x, ctx->sink->format, c, dither_at(ctx, ctx->x0 + x, y));
     }
     ctx->rows[1] = ctx->rows[0];
     ctx->rows[0] = below;
@@ -282,7 +320,7 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
     for (uint16_t x = 0; x < ctx->w; x++) {
         ray_t ray = camera_ray(&wk->cam, ctx->x0 + x, y);
         wk->scratch.stats.eye_rays++;
-        put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE));
+        put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE), dither_at(ctx, ctx->x0 + x, y));
     }
 }
 

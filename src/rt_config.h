@@ -207,6 +207,12 @@
 #define RT_AA_MAX_SPP 16
 #endif
 
+/* Ordered dithering of the packed formats (rt_fb_sink_t.dither); left
+ * out of firmware that does not ask for it. */
+#ifndef RT_USE_DITHER
+#define RT_USE_DITHER 1
+#endif
+
 /* RT_FB_ONLY_FORMAT: the one pixel format (an RT_FB_* of rt_fb.h) the
  * render packs, so the other packers are left out; unset, all of them are
  * in (the board build sets it from FORMAT=). */

@@ -33,7 +33,8 @@
  *   L4        4-bit grey (L8 scaled to 0..15, rounded), two pixels per
  *             byte, the left pixel in the high nibble (SSD0323 OLEDs); an
  *             odd width leaves the low nibble of each line's last byte 0.
- * 565 channels and L4 are rounded to nearest: v * max / 255. */
+ * 565 channels and L4 are rounded to nearest: v * max / 255 (or dithered:
+ * the sink's `dither`). */
 #define RT_FB_FORMATS(X)                         \
     X(RT_FB_RGB888, "rgb888", 0, 24)             \
     X(RT_FB_RGB565, "rgb565", 1, 16)             \
@@ -84,6 +85,12 @@ struct rt_fb_sink {
     size_t band_bytes;   /* size of each band buffer */
     size_t pitch;        /* bytes from one line to the next in a band;
                           * 0: tightly packed (RT_FB_LINE_BYTES) */
+    /* Ordered dithering (RT_USE_DITHER) of the formats with fewer than 8
+     * bits a channel (565, L4) and of L8's luma: each pixel rounds at the
+     * threshold of a 4x4 Bayer matrix by its frame position instead of
+     * at one half, so smooth shading shows no bands. false: round to
+     * nearest (the default). */
+    bool dither;
 
     /* begin and flush: 0 to go on; anything else aborts the frame, and
      * rt_render returns that status without calling end() (a sink that

@@ -4,11 +4,13 @@
  *    no further flush and no end();
  *  - stats may be NULL;
  *  - a viewport renders exactly the same pixels as that region of the
- *    whole frame (normal and SPD mode; corners, interior, one pixel, full
+ *    whole frame (every mode; corners, interior, one pixel, full
  *    width, one column, odd sizes), with a tight and a padded pitch, and
  *    leaves the rest of the sink's frame untouched;
  *  - the incremental API, stepping 1, 3 and 7 lines, gives the same frame
- *    as one call. */
+ *    as one call;
+ *  - all of it in SPD mode and with adaptive and uniform anti-aliasing
+ *    too, and anti-aliasing's bad options refused before any flush. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -102,8 +104,10 @@ static bool same_crop(const test_sink_t *got, const test_sink_t *ref, rt_viewpor
     return true;
 }
 
-static test_sink_t ref[2], got;
-static double scratch[2 * (W + 1) * 3];
+#define MODES 4 /* one sample, SPD, adaptive (3 levels) and uniform (3 x 3) anti-aliasing */
+static const char *const mode_name[MODES] = { "", " SPD", " AA 3", " SPP 3" };
+static test_sink_t ref[MODES], got;
+static double scratch[(2 * (W * 8 + 1) + 9 * 9) * 3]; /* the larger of SPD's and 3 levels' (for double) */
 
 int main(void)
 {
@@ -138,15 +142,19 @@ int main(void)
             continue;
         }
         rt_stats_t st = { 0 };
-        rt_render_opts_t opts[2] = { { .width = W, .height = H, .max_depth = 3 },
-                                  { .width = W, .height = H, .max_depth = 3, .spd = true, .scratch = scratch,
-                                    .scratch_bytes = sizeof scratch } };
-        for (int m = 0; m < 2; m++) {
+        rt_render_opts_t opts[MODES] = {
+            { .width = W, .height = H, .max_depth = 3 },
+            { .width = W, .height = H, .max_depth = 3, .spd = true, .scratch = scratch, .scratch_bytes = sizeof scratch },
+            { .width = W, .height = H, .max_depth = 3, .aa_levels = 3, .scratch = scratch,
+              .scratch_bytes = sizeof scratch },
+            { .width = W, .height = H, .max_depth = 3, .spp = 3 },
+        };
+        for (int m = 0; m < MODES; m++) {
             /* 29 lines, 4 lines a band: 8 bands */
             sink_init(&ref[m], 0, 4, true);
             int rc = be->render(&opts[m], &ref[m].sink, &st, &err);
             CHECK(rc == 0 && ref[m].flushes == 8 && ref[m].ends == 1 && !ref[m].bad_area,
-                  "%s%s: whole frame: status %d, %d flushes, %d end", bn, m ? " SPD" : "", rc, ref[m].flushes,
+                  "%s%s: whole frame: status %d, %d flushes, %d end", bn, mode_name[m], rc, ref[m].flushes,
                   ref[m].ends);
         }
 
@@ -172,8 +180,8 @@ int main(void)
         CHECK(rc == 0 && memcmp(got.img, ref[0].img, sizeof got.img) == 0, "%s: stats NULL: status %d, same image",
               bn, rc);
 
-        /* viewports, tight and padded pitch, normal and SPD */
-        for (int m = 0; m < 2; m++) {
+        /* viewports, tight and padded pitch, every mode */
+        for (int m = 0; m < MODES; m++) {
             int ok = 0, total = 0;
             for (size_t i = 0; i < n_vps; i++) {
                 for (int padded = 0; padded < 2; padded++) {
@@ -185,15 +193,36 @@ int main(void)
                     total++;
                     ok += good;
                     if (!good)
-                        printf("        %s%s: viewport %u,%u %ux%u pitch %s: status %d%s\n", bn, m ? " SPD" : "",
+                        printf("        %s%s: viewport %u,%u %ux%u pitch %s: status %d%s\n", bn, mode_name[m],
                                vps[i].x, vps[i].y, vps[i].w, vps[i].h, padded ? "padded" : "tight", rc,
                                rc < 0 ? err.msg : "");
                 }
             }
             CHECK(ok == total, "%s%s: %d of %d viewports (x %zu rectangles, tight and padded pitch) "
-                  "byte-identical to the crop of the whole frame, the rest untouched", bn, m ? " SPD" : "", ok, total,
+                  "byte-identical to the crop of the whole frame, the rest untouched", bn, mode_name[m], ok, total,
                   n_vps);
         }
+        /* anti-aliasing's refusals: no scratch, a short one, with SPD, both kinds, too many levels or samples */
+        {
+            rt_render_opts_t bad[6] = { opts[2], opts[2], opts[2], opts[2], opts[2], opts[3] };
+            bad[0].scratch = NULL;
+            bad[1].scratch_bytes = RT_RENDER_AA_SCRATCH(W, 3) / 4; /* (the fixed build's size is half double's) */
+            bad[2].spd = true;
+            bad[3].spp = 2;
+            bad[4].aa_levels = RT_AA_MAX_LEVELS + 1;
+            bad[5].spp = RT_AA_MAX_SPP + 1;
+            int refused = 0;
+            for (int k = 0; k < 6; k++) {
+                sink_init(&got, 0, 4, true);
+                rc = be->render(&bad[k], &got.sink, &st, &err);
+                refused += rc == -1 && got.flushes == 0 && err.msg[0] != '\0';
+                if (rc != -1)
+                    printf("        %s: bad anti-aliasing options %d: status %d\n", bn, k, rc);
+            }
+            CHECK(refused == 6, "%s: %d of 6 bad anti-aliasing options refused before any flush (last: '%s')", bn,
+                  refused, err.msg);
+        }
+
         rt_render_opts_t o = opts[0];
         o.viewport = (rt_viewport_t){ W - 2, 0, 3, 1 };
         sink_init(&got, 0, 3, false);
@@ -202,7 +231,7 @@ int main(void)
               err.msg);
 
         /* the incremental API */
-        for (int m = 0; m < 2; m++) {
+        for (int m = 0; m < MODES; m++) {
             const uint16_t steps[] = { 1, 3, 7 };
             for (size_t k = 0; k < 3; k++) {
                 sink_init(&got, 0, 4, true);
@@ -214,7 +243,7 @@ int main(void)
                 rc = be->render_steps(&ov, &got.sink, &st, &err, steps[k], NULL, NULL);
                 bool part = rc == 0 && got.ends == 1 && same_crop(&got, &ref[m], vps[4]);
                 CHECK(whole && part, "%s%s: steps of %u lines == one call (whole frame %s, viewport %s)", bn,
-                      m ? " SPD" : "", steps[k], whole ? "same" : "DIFFERS", part ? "same" : "DIFFERS");
+                      mode_name[m], steps[k], whole ? "same" : "DIFFERS", part ? "same" : "DIFFERS");
             }
         }
     }

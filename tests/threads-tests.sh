@@ -6,7 +6,8 @@
 #   - on every scene of scenes/ and scenes/spd/ at 48x40, the backend and
 #     mode rotating over fixed/double/float and normal, --spd, --viewport,
 #     --format rgb565 and --spd with --viewport (3 and 5 rotations: the
-#     first 15 scenes give every pair);
+#     first 15 scenes give every pair), and adaptive and uniform
+#     anti-aliasing on six scenes (viewports and packed formats too);
 #   - --stats (text and JSON): `threads` is N and `threads_busy` a share;
 #     in normal mode eye_rays is W*H and every ray count the same for all
 #     N (BVH nodes and intersection tests depend on where runs start,
@@ -64,6 +65,18 @@ for f in scenes/*.nff scenes/spd/*.nff; do
     b=$(echo "fixed double float" | cut -d' ' -f$((i % 3 + 1)))
     m=$(echo $modes | cut -d' ' -f$((i % 5 + 1)))
     same_for_threads "$(basename "$f" .nff) --$b $m" "$f" --size ${W}x$H --$b $(mode_args $m)
+    i=$((i + 1))
+done
+
+# Anti-aliasing: adaptive (corner rows traced again at each run start:
+# the same pixels) and uniform, with a viewport and a packed format.
+i=0
+for f in scenes/showpiece.nff scenes/csg.nff scenes/spd/balls-1.nff scenes/spd/rings-1.nff scenes/spd/teapot-1.nff \
+         scenes/spd/tetra-2.nff; do
+    b=$(echo "fixed double float" | cut -d' ' -f$((i % 3 + 1)))
+    for a in "--aa 3" "--aa 2,20 --viewport 5,3,37,29" "--spp 2 --format rgb565" "--aa 4,4 --format l4 --viewport 0,9,48,20"; do
+        same_for_threads "$(basename "$f" .nff) --$b $a" "$f" --size ${W}x$H --$b $a
+    done
     i=$((i + 1))
 done
 
@@ -189,7 +202,8 @@ out=$("$RT" scenes/spd/tetra-1.nff -o "$OUT/max.ppm" --size 8x8 --quiet --thread
 
 # ThreadSanitizer: nothing the threads write is shared.
 if [ -x "$TSAN" ]; then
-    for args in "--fixed" "--double" "--float" "--fixed --spd" "--fixed --format l4 --viewport 3,5,41,30"; do
+    for args in "--fixed" "--double" "--float" "--fixed --spd" "--fixed --format l4 --viewport 3,5,41,30" "--fixed --aa 3" \
+                "--float --spp 2"; do
         for f in scenes/showpiece.nff scenes/spd/rings-1.nff; do
             s=$(basename "$f" .nff)
             "$TSAN" "$f" -o "$OUT/tsan.ppm" --size ${W}x$H --quiet --threads 4 $args 2>"$OUT/tsan.err"

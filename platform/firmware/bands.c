@@ -288,7 +288,7 @@ int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_
     fr.rep = rep;
     fr.n_bands = (uint32_t)(h + BOARD_BAND_LINES - 1) / BOARD_BAND_LINES;
     for (unsigned c = 0; c < BOARD_CORES; c++) {
-        core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .band_bytes = BAND_BYTES, .flush = slot_flush };
+        core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .dither = sink->dither, .band_bytes = BAND_BYTES, .flush = slot_flush };
     }
     int st = sink->begin ? sink->begin(sink, opts->width, h) : 0;
     if (st != 0)

@@ -90,14 +90,18 @@ AA_LEVELS := $(word 1,$(subst $(comma), ,$(AA)))
 AA_THRESHOLD := $(or $(word 2,$(subst $(comma), ,$(AA))),0)
 AA_FLAGS := $(if $(filter-out 0,$(AA_LEVELS))$(filter-out 0 1,$(SPP)),-DBOARD_AA_LEVELS=$(AA_LEVELS) -DBOARD_AA_THRESHOLD=$(AA_THRESHOLD) -DBOARD_SPP=$(SPP),-DRT_USE_AA=0)
 AA_TAG := $(if $(filter-out 0,$(AA_LEVELS)),-aa$(AA_LEVELS)$(if $(filter-out 0,$(AA_THRESHOLD)),_$(AA_THRESHOLD)))$(if $(filter-out 0 1,$(SPP)),-spp$(SPP))
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))
+# DITHER=1: ordered dithering of the packed formats (rt --dither); 0
+# (the default) links none of it (RT_USE_DITHER=0).
+DITHER ?= 0
+DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),

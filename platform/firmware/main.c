@@ -40,6 +40,9 @@
 #ifndef BOARD_SPP
 #define BOARD_SPP 0
 #endif
+#ifndef BOARD_DITHER /* ordered dithering of the packed formats (make DITHER=1) */
+#define BOARD_DITHER 0
+#endif
 #if BOARD_AA_LEVELS
 /* each core's rows of cell corners, one after the other (bands.c) */
 #define AA_SCRATCH_BYTES RT_RENDER_AA_SCRATCH(BOARD_WIDTH, BOARD_AA_LEVELS)
@@ -84,11 +87,13 @@ int main(void)
     uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
 #if BOARD_CORES == 1
     sink_init(&sink, BOARD_FORMAT, band, sizeof band);
+    sink.dither = BOARD_DITHER;
     uint64_t t0 = port_icount_read();
     int rc = rt_render(sc, &opts, &sink, &st, &err);
     uint64_t instr = port_icount_read() - t0 - sink_io_instructions();
 #else
     sink_init(&sink, BOARD_FORMAT, 0, 0);
+    sink.dither = BOARD_DITHER;
     static bands_report_t rep;
     int rc = bands_render(sc, &opts, &sink, &rep, &err);
     uint64_t instr = 0; /* every core's render: the work, as one core counts it */

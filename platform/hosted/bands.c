@@ -197,8 +197,8 @@ static void *band_worker(void *arg)
     return NULL;
 }
 
-int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, unsigned threads,
-                 bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err)
+int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, bool dither,
+                 unsigned threads, bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err)
 {
     double start = now_seconds();
     /* the frame as the core will see it */
@@ -257,6 +257,7 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
         t[i].scratch = scratch_bytes ? malloc(scratch_bytes) : NULL;
         t[i].scratch_bytes = scratch_bytes;
         t[i].sink = (rt_fb_sink_t){ .format = format,
+                                    .dither = dither,
                                     .band = { t[i].band, NULL },
                                     .band_bytes = band_bytes,
                                     .flush = band_flush,

@@ -23,7 +23,8 @@ unsigned bands_default_threads(void);
  * 0 for the scene's resolution) with `threads` threads (1..RT_MAX_WORKERS;
  * one of them the caller's; one thread: one call of the core). Thread i
  * starts on the i-th of N equal runs of lines and renders as worker i,
- * into its own sink, which expands its lines in `format` straight into
+ * into its own sink, which expands its lines in `format` (dithered if
+ * `dither`, rt_fb_sink_t) straight into
  * their rows of *img (allocated here: the viewport's size), and its own
  * stats; a thread out of lines takes the lower half of the longest run
  * left (bands.c). *stats gets the sum. opts->worker, scratch and
@@ -31,7 +32,7 @@ unsigned bands_default_threads(void);
  * shows the lines done by all threads on stderr; *time gets the times.
  * Returns as be->render does: 0, the first failure's sink status, or -1
  * with *err set (then *img is freed). */
-int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, unsigned threads,
-                 bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err);
+int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, bool dither,
+                 unsigned threads, bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err);
 
 #endif

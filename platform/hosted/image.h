@@ -42,7 +42,10 @@ typedef struct {
 } image_diff_t;
 
 /* Returns 0, or -1 if the sizes differ (reason in why).
- * PSNR = 10*log10(255^2/MSE) over all channels of all pixels. */
-int image_compare(const image_t *a, const image_t *b, image_diff_t *d, char *why, size_t why_len);
+ * PSNR = 10*log10(255^2/MSE) over all channels of all pixels. blur > 0:
+ * both images are first blurred by a Gaussian of that many pixels (the
+ * way an eye sees a small panel's pixels: dithering's measure), the
+ * differences taken unrounded (max_err rounded up). */
+int image_compare(const image_t *a, const image_t *b, double blur, image_diff_t *d, char *why, size_t why_len);
 
 #endif

@@ -20,7 +20,7 @@
 
 static const char usage_text[] =
     "usage: rt [options] SCENE.nff -o OUT.png|OUT.ppm\n"
-    "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N]\n"
+    "       rt compare A.png B.png [--psnr-min DB] [--max-over8 PERCENT] [--max-error N] [--blur SIGMA]\n"
     "       rt receive [STREAM] -o OUT.png   (the board's UART stream, stdin by default)\n"
     "       rt receive [STREAM] --report-only   (its report lines alone: a board with a panel)\n"
     "       rt --version\n"
@@ -34,6 +34,8 @@ static const char usage_text[] =
     "                      image is the rectangle (pixels as in the whole frame)\n"
     "  --format F          framebuffer pixel format: %s\n"
     "                      (the first is the default; written expanded to RGB)\n"
+    "  --dither            ordered dithering (4x4 Bayer) of the formats with fewer\n"
+    "                      than 8 bits a channel and of l8's luma\n"
     "  --stats[=FORMAT]    print the render's counters (the board report's keys),\n"
     "                      BVH shape and render time on stderr: 'key value' lines\n"
     "                      (text, the default) or one JSON object (json)\n"
@@ -64,6 +66,8 @@ static const char compare_usage[] =
     "  --psnr-min DB       exit 1 if PSNR is below DB\n"
     "  --max-over8 PCT     exit 1 if more than PCT % of pixels differ by > 8/255\n"
     "  --max-error N       exit 1 if any channel differs by more than N/255\n"
+    "  --blur SIGMA        first blur both images by a Gaussian of SIGMA pixels\n"
+    "                      (0..16; how an eye sees a small panel: for dithering)\n"
     "  -h, --help          this text; --version: the version\n"
     "\n"
     "exit status: 0 within the thresholds, 1 over one, 2 bad input or usage\n";
@@ -152,8 +156,8 @@ static void print_usage(void)
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
-    OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
+    OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR, OPT_BLUR,
     OPT_BACKEND /* + the backend's index */
 };
 
@@ -166,6 +170,7 @@ static const struct option render_options[] = {
 #undef BACKEND_OPTION
     { "depth", required_argument, NULL, OPT_DEPTH },
     { "format", required_argument, NULL, OPT_FORMAT },
+    { "dither", no_argument, NULL, OPT_DITHER },
     { "stats", optional_argument, NULL, OPT_STATS },
     { "spd", no_argument, NULL, OPT_SPD },
     { "aa", required_argument, NULL, OPT_AA },
@@ -204,6 +209,7 @@ static int cmd_render(int argc, char **argv)
     const rt_backend_t *be = backends[0].be;
     rt_render_opts_t opts = { 0 };
     rt_fb_format_t format = RT_FB_RGB888;
+    bool dither = false;
     bool quiet = false;
     unsigned threads = bands_default_threads();
     bool stats = false;
@@ -265,6 +271,9 @@ static int cmd_render(int argc, char **argv)
             format = formats[i].format;
             break;
         }
+        case OPT_DITHER:
+            dither = true;
+            break;
         case OPT_STATS:
             if (optarg && !strcmp(optarg, "json"))
                 stats_format = REPORT_JSON;
@@ -386,7 +395,7 @@ static int cmd_render(int argc, char **argv)
     image_t img;
     rt_stats_t st = { 0 };
     bands_time_t time = { 0, 0, 0 };
-    int status = bands_render(be, &opts, format, threads, progress, &img, &st, &time, &err);
+    int status = bands_render(be, &opts, format, dither, threads, progress, &img, &st, &time, &err);
     if (progress)
         fprintf(stderr, "\r                \r");
     if (status != 0) {
@@ -409,6 +418,7 @@ static const struct option compare_options[] = {
     { "psnr-min", required_argument, NULL, OPT_PSNR_MIN },
     { "max-over8", required_argument, NULL, OPT_MAX_OVER8 },
     { "max-error", required_argument, NULL, OPT_MAX_ERROR },
+    { "blur", required_argument, NULL, OPT_BLUR },
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, OPT_VERSION },
     { NULL, 0, NULL, 0 },
@@ -416,7 +426,7 @@ static const struct option compare_options[] = {
 
 static const host_option_need_t compare_needs[] = {
     { OPT_PSNR_MIN, "a non-negative number" }, { OPT_MAX_OVER8, "a non-negative number" },
-    { OPT_MAX_ERROR, "a non-negative number" }, { 0, NULL },
+    { OPT_MAX_ERROR, "a non-negative number" }, { OPT_BLUR, "a number of pixels" }, { 0, NULL },
 };
 
 #define COMPARE_HELP "rt compare --help"
@@ -425,7 +435,7 @@ static const host_option_need_t compare_needs[] = {
 static int cmd_compare(int argc, char **argv)
 {
     const char *paths[2] = { NULL, NULL };
-    double psnr_min = -1, max_over8 = -1, max_error = -1;
+    double psnr_min = -1, max_over8 = -1, max_error = -1, blur = 0;
     opterr = 0;
     int c, which = 0;
     while ((c = getopt_long(argc, argv, ":h", compare_options, &which)) != -1) {
@@ -434,13 +444,14 @@ static int cmd_compare(int argc, char **argv)
         case OPT_PSNR_MIN:
         case OPT_MAX_OVER8:
         case OPT_MAX_ERROR:
-            if (!parse_double(optarg, &v) || v < 0) {
+        case OPT_BLUR:
+            if (!parse_double(optarg, &v) || v < 0 || (c == OPT_BLUR && v > 16)) {
                 char msg[160];
-                snprintf(msg, sizeof msg, "--%s needs a non-negative number, got '%s'",
-                         compare_options[which].name, optarg);
+                snprintf(msg, sizeof msg, "--%s needs a %s, got '%s'", compare_options[which].name,
+                         c == OPT_BLUR ? "number from 0 to 16" : "non-negative number", optarg);
                 return host_usage_error("rt", COMPARE_HELP, "%s", msg);
             }
-            *(c == OPT_PSNR_MIN ? &psnr_min : c == OPT_MAX_OVER8 ? &max_over8 : &max_error) = v;
+            *(c == OPT_PSNR_MIN ? &psnr_min : c == OPT_MAX_OVER8 ? &max_over8 : c == OPT_BLUR ? &blur : &max_error) = v;
             break;
         case 'h':
             fputs(compare_usage, stdout);
@@ -465,7 +476,7 @@ static int cmd_compare(int argc, char **argv)
         }
     }
     image_diff_t d;
-    int rc = image_compare(&img[0], &img[1], &d, why, sizeof why);
+    int rc = image_compare(&img[0], &img[1], blur, &d, why, sizeof why);
     image_free(&img[0]);
     image_free(&img[1]);
     if (rc != 0) {
