@@ -185,7 +185,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/asan/test_fx build/asan/test_fx_soft build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
 
 test: deps

@@ -44,6 +44,7 @@ BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
+BOARD_RUN_AA := 3
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
 $(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
@@ -83,7 +84,15 @@ endif
 # Anti-aliasing: AA=LEVELS[,THRESHOLD] adaptive (rt --aa), SPP=N uniform
 # (rt --spp); neither (or AA=0): one sample a pixel, and the firmware links
 # none of it (RT_USE_AA=0). make run renders with RUN_AA (Makefile).
+# make run without AA or SPP renders with the board's BOARD_RUN_AA (3
+# levels unless its board.mk says otherwise: the 16 KiB boards render one
+# sample).
 comma := ,
+ifneq ($(filter run,$(MAKECMDGOALS)),)
+ifeq ($(origin AA)$(origin SPP),undefinedundefined)
+AA := $(BOARD_RUN_AA)
+endif
+endif
 AA ?= 0
 SPP ?= 0
 AA_LEVELS := $(word 1,$(subst $(comma), ,$(AA)))
@@ -213,14 +222,19 @@ RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMA
 board-run:
 	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
 
+RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 1,$(SPP)),--spp $(SPP))
+RUN_AREA = out/$(NAME)-area$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
 run: deps-board
-	$(MAKE) build/host/rt $(FW_ELF)
+	$(MAKE) build/host/rt $(FW_ELF) AA=$(AA) SPP=$(SPP)
 	@mkdir -p out
-	@$(MAKE) -s board-run >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
-	@build/host/rt $(SCENE) -o $(RUN_REF) --double --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)) vs $(RUN_REF_IS): '
+	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
+	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))) vs $(RUN_REF_IS) with the same samples (the number format): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
-	@echo "image: $(RUN_OUT)"
+	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board vs the pixel-area image (rt --double --spp 16: what a viewer sees): '
+	@build/host/rt compare $(RUN_OUT) $(RUN_AREA)
+	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=3 anti-aliases))"
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt

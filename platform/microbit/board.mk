@@ -10,3 +10,7 @@ BOARD_CLOCK_HZ ?= 16000000
 BOARD_BACKENDS := fixed
 BOARD_SRC      := platform/microbit/board.c
 BOARD_LD       := platform/microbit/link.ld
+
+# 16 KiB of RAM: make run renders one sample a pixel (AA=1 fits at 128
+# pixels wide: two rows of 257 cell corners)
+BOARD_RUN_AA   := 0

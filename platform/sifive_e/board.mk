@@ -19,3 +19,7 @@ BOARD_CLOCK_HZ ?= 320000000
 BOARD_BACKENDS := fixed
 BOARD_SRC      := platform/sifive_e/board.c
 BOARD_LD       := platform/sifive_e/link.ld
+
+# 16 KiB of RAM: make run renders one sample a pixel (AA=1 fits at 128
+# pixels wide: two rows of 257 cell corners)
+BOARD_RUN_AA   := 0
