@@ -17,7 +17,8 @@
 #   make test       install missing packages, build, run every test
 #   make bench      run time against error over numeric configurations, the
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
-#                   with and without pruning, every board and backend (about 45 min)
+#                   with and without pruning, every board and backend, anti-aliasing
+#                   and dithering against the pixel-area image (about 75 min)
 #   make bench-quick  a subset of the first (< 2 min)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
@@ -178,6 +179,8 @@ bench: deps
 	python3 bench/boards_bench.py
 	@echo
 	python3 bench/cores_bench.py
+	@echo
+	python3 bench/aa_bench.py
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

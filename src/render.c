@@ -203,7 +203,7 @@ static void aa_corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t
 {
     uint32_t sub = 1u << levels;
     for (uint32_t i = 0; i <= (uint32_t)w << levels; i++)
-        row[i].x = i % sub ? NOT_TRACED : 0;
+        row[i].x = (i % sub) != 0 ? NOT_TRACED : 0;
     for (uint32_t i = 0; i <= w; i++)
         row[i << levels] = aa_sample(wk, (int32_t)(x0 + i) << levels, j);
 }
@@ -378,28 +378,11 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     }
     ctx->pitch = pitch;
     ctx->band_lines = band_lines;
-#if !RT_USE_SPD
-    if (opts->spd) {
-        rt_error_set(err, 0, "SPD mode is not compiled in (RT_USE_SPD = 0)");
-        return -1;
-    }
-#else
-    ctx->spd = opts->spd;
-    if (opts->spd) {
-        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(vp.w)) {
-            rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
-            return -1;
-        }
-        ctx->rows[0] = opts->scratch;
-        ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
-    }
-#endif
 #if !RT_USE_AA
     if (opts->aa_levels || opts->spp > 1) {
         rt_error_set(err, 0, "anti-aliasing is not compiled in (RT_USE_AA = 0)");
         return -1;
     }
-    int32_t sub = 1;
 #else
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
@@ -413,7 +396,6 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_append_int(err, ctx->spp ? RT_AA_MAX_SPP : RT_AA_MAX_LEVELS);
         return -1;
     }
-    int32_t sub = ctx->aa_levels ? (int32_t)1 << ctx->aa_levels : 2 * ctx->spp; /* cells a pixel side */
     if (ctx->aa_levels) {
         size_t row = ((size_t)vp.w << ctx->aa_levels) + 1;
         if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_AA_SCRATCH(vp.w, ctx->aa_levels)) {
@@ -430,6 +412,22 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
     }
 #endif
+#if !RT_USE_SPD
+    if (opts->spd) {
+        rt_error_set(err, 0, "SPD mode is not compiled in (RT_USE_SPD = 0)");
+        return -1;
+    }
+#else
+    ctx->spd = opts->spd;
+    if (opts->spd) {
+        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(vp.w)) {
+            rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
+            return -1;
+        }
+        ctx->rows[0] = opts->scratch;
+        ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
+    }
+#endif
     int32_t nx = w, ny = h;
 #if RT_USE_SPD
     if (opts->spd) { /* a grid of corners, one more each way */
@@ -439,7 +437,13 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 #endif
     /* another viewpoint: rt_camera_from_view made it a view_t */
     const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
-    const char *why = sub > 1 ? camera_init_cells(&wk->cam, view, w, h, sub) : camera_init(&wk->cam, view, nx, ny);
+    const char *why;
+#if RT_USE_AA
+    if (ctx->aa_levels || ctx->spp) /* cells a pixel side: 2^levels, or 2 spp (samples at their centres) */
+        why = camera_init_cells(&wk->cam, view, w, h, ctx->aa_levels ? (int32_t)1 << ctx->aa_levels : 2 * ctx->spp);
+    else
+#endif
+        why = camera_init(&wk->cam, view, nx, ny);
     if (why) {
         rt_error_set(err, 0, why);
         return -1;

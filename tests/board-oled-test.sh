@@ -4,7 +4,8 @@
 # in L4, pixel for pixel, and its report the host's counters; a frame
 # smaller than the panel (odd width) is taken from the panel's top left;
 # a damaged capture gives no image; a frame larger than the panel does not
-# build. Written to be pasted into tests/board-tests.sh as well (it keeps
+# build; anti-aliased and dithered frames (make AA=3 DITHER=1) likewise.
+# Written to be pasted into tests/board-tests.sh as well (it keeps
 # to its ok/bad helpers; the capture check needs the showpiece case's dump).
 RT=${1:-build/host/rt}
 OUT=build/test-board-oled
@@ -14,9 +15,9 @@ ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 
 echo "board tests: QEMU lm3s6965evb (OLED) against the hosted fixed build in l4"
-oled_case() { # NAME SCENE SIZE
-    n=$1 scene=$2 size=$3
-    set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5
+oled_case() { # NAME SCENE SIZE [MAKE-VARS [RT-ARGS]]
+    n=$1 scene=$2 size=$3 vars=$4 args=$5
+    set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5 $vars
     if ! make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1; then
         bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
         return
@@ -26,11 +27,12 @@ oled_case() { # NAME SCENE SIZE
         bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
         return
     fi
-    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth 5 --format l4 --threads 1 --quiet --stats 2>"$OUT/$n-host.stats"
+    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth 5 --format l4 --threads 1 --quiet --stats $args \
+        2>"$OUT/$n-host.stats"
     ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$n.report")
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/$n.report")
     if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
-        ok "$n $size: panel == host fixed l4 ($cmp), $ipp instructions/pixel, stack $hw bytes"
+        ok "$n $size: panel == host fixed l4 $args ($cmp), $ipp instructions/pixel, stack $hw bytes"
     else
         bad "$n $size: panel and host fixed l4 differ: $cmp"
     fi
@@ -45,6 +47,9 @@ oled_case() { # NAME SCENE SIZE
 oled_case showpiece scenes/showpiece.nff 128x64
 oled_case balls-2 scenes/spd/balls-2.nff 128x64
 oled_case rings-1 scenes/spd/rings-1.nff 47x31
+# anti-aliased and dithered, as the panel is best used
+oled_case showpiece-aa-dither scenes/showpiece.nff 128x64 "AA=3 DITHER=1" "--aa 3 --dither"
+oled_case rings-1-dither scenes/spd/rings-1.nff 47x31 "DITHER=1" "--dither"
 
 # The capture check: a dump whose 4x4 blocks are not uniform greys 17*v
 # (one byte changed in the showpiece's dump) gives no image.

@@ -68,5 +68,40 @@ PY
         fi
     done
 done
+# Ordered dithering (--dither): each pixel within one step of the source
+# (rgb565: 9/255 R, B and 5/255 G; l8: 2/255 of the 8-bit luma; l4: 17/255
+# of it), not the undithered image, and closer to the source as an eye
+# sees it: after a Gaussian blur of 1 pixel (rt compare --blur 1) the
+# dithered image's PSNR against the source (rgb888; for l4, the l8 render)
+# is at least 5 dB above the undithered one's (128x128, the showpiece).
+for f in scenes/spd/balls-1.nff scenes/showpiece.nff; do
+    s=$(basename "$f" .nff)
+    for case in rgb565:rgb888:9 l8:l8:2 l4:l8:17; do
+        fmt=${case%%:*} rest=${case#*:} src=${rest%%:*} lim=${rest#*:}
+        "$RT" "$f" -o "$OUT/$s-$fmt-dither.ppm" --size 61x37 --format $fmt --dither --quiet 2>/dev/null
+        if e=$("$RT" compare "$OUT/$s-$fmt-dither.ppm" "$OUT/$s-$src.ppm" --max-error $lim) &&
+           ! cmp -s "$OUT/$s-$fmt-dither.ppm" "$OUT/$s-$fmt.ppm"; then
+            pass=$((pass + 1)); echo "  ok    $s $fmt --dither: within $lim/255 of $src ($e), not the undithered image"
+        else
+            fail=$((fail + 1)); echo "  FAIL  $s $fmt --dither: over $lim/255 from $src, or the same as undithered ($e)"
+        fi
+    done
+done
+f=scenes/showpiece.nff
+for fmt in rgb888 l8; do
+    "$RT" $f -o "$OUT/blur-src-$fmt.ppm" --size 128x128 --format $fmt --quiet 2>/dev/null
+done
+for case in rgb565:rgb888 l4:l8; do
+    fmt=${case%%:*} src=${case#*:}
+    "$RT" $f -o "$OUT/blur-$fmt.ppm" --size 128x128 --format $fmt --quiet 2>/dev/null
+    "$RT" $f -o "$OUT/blur-$fmt-dither.ppm" --size 128x128 --format $fmt --dither --quiet 2>/dev/null
+    plain=$("$RT" compare "$OUT/blur-$fmt.ppm" "$OUT/blur-src-$src.ppm" --blur 1 | sed 's/psnr \([^ ]*\) dB.*/\1/')
+    dith=$("$RT" compare "$OUT/blur-$fmt-dither.ppm" "$OUT/blur-src-$src.ppm" --blur 1 | sed 's/psnr \([^ ]*\) dB.*/\1/')
+    if awk -v d="$dith" -v p="$plain" 'BEGIN { exit !(d >= p + 5) }'; then
+        pass=$((pass + 1)); echo "  ok    showpiece $fmt, blurred 1 px, vs $src: $plain dB undithered, $dith dB dithered"
+    else
+        fail=$((fail + 1)); echo "  FAIL  showpiece $fmt, blurred 1 px, vs $src: $plain dB undithered, $dith dB dithered (want +5 dB)"
+    fi
+done
 echo "format-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -197,6 +197,16 @@ static int render_usage_error(const char *fmt, const char *arg)
     return host_usage_error("rt", RENDER_HELP, fmt, arg);
 }
 
+/* arg as a count 1..hi: 0 with *out set, or the usage error for --name */
+static int count_arg(const char *name, const char *arg, long hi, long *out)
+{
+    if (parse_uint(arg, 1, hi, out))
+        return 0;
+    char msg[96];
+    snprintf(msg, sizeof msg, "--%s: expected a number from 1 to %ld, got '%%s'", name, hi);
+    return render_usage_error(msg, arg);
+}
+
 static int print_version(void)
 {
     printf("rt %s\n", RT_VERSION_STRING);
@@ -307,11 +317,9 @@ static int cmd_render(int argc, char **argv)
         }
         case OPT_SPP: {
             long n;
-            if (!parse_uint(optarg, 1, RT_AA_MAX_SPP, &n)) {
-                char msg[96];
-                snprintf(msg, sizeof msg, "--spp: expected a number from 1 to %d, got '%%s'", RT_AA_MAX_SPP);
-                return render_usage_error(msg, optarg);
-            }
+            int st = count_arg("spp", optarg, RT_AA_MAX_SPP, &n);
+            if (st != 0)
+                return st;
             opts.spp = (uint8_t)n;
             break;
         }
@@ -324,11 +332,9 @@ static int cmd_render(int argc, char **argv)
         }
         case OPT_THREADS: {
             long n;
-            if (!parse_uint(optarg, 1, RT_MAX_WORKERS, &n)) {
-                char msg[96];
-                snprintf(msg, sizeof msg, "--threads: expected a number from 1 to %d, got '%%s'", RT_MAX_WORKERS);
-                return render_usage_error(msg, optarg);
-            }
+            int st = count_arg("threads", optarg, RT_MAX_WORKERS, &n);
+            if (st != 0)
+                return st;
             threads = (unsigned)n;
             break;
         }
