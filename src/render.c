@@ -218,13 +218,24 @@ static real_t spread(real_t a, real_t b, real_t c, real_t d)
     return hi - lo;
 }
 
-/* Corner (x, y) of grid g (n a side) whose top left is cell corner (i, j). */
-static const colour_t *aa_corner(struct rt_worker *wk, colour_t *g, unsigned n, int32_t i, int32_t j, unsigned x,
-                                 unsigned y)
+/* One pixel's cell corners: its upper and lower edges are in the corner
+ * rows, the 2^levels - 1 rows between in `mid` (2^levels + 1 each). */
+typedef struct {
+    colour_t *top, *bottom, *mid;
+    unsigned sub;  /* cells a side */
+    int32_t i, j;  /* the camera's sample index of the top left corner */
+    bool dirty;    /* a corner of mid traced since mid was last cleared */
+} aa_grid_t;
+
+/* Corner (x, y) of the pixel, traced if it is not yet. */
+static const colour_t *aa_corner(struct rt_worker *wk, aa_grid_t *p, unsigned x, unsigned y)
 {
-    colour_t *c = &g[y * n + x];
-    if (c->x < 0)
-        *c = aa_sample(wk, i + (int32_t)x, j + (int32_t)y);
+    bool edge = y == 0 || y == p->sub;
+    colour_t *c = y == 0 ? &p->top[x] : y == p->sub ? &p->bottom[x] : &p->mid[(y - 1) * (p->sub + 1) + x];
+    if (c->x < 0) {
+        *c = aa_sample(wk, p->i + (int32_t)x, p->j + (int32_t)y);
+        p->dirty |= !edge;
+    }
     return c;
 }
 
@@ -243,12 +254,12 @@ static bool spread_over(colour_t a, colour_t b, colour_t c, colour_t d, real_t t
  * bilinear: a gradient, not an edge), when it counts as the mean of
  * corners and centre. Squares wait on a small stack (three siblings a
  * level), so no recursion adds to trace_ray's frames. */
-static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j, unsigned levels)
+static colour_t aa_pixel(struct rt_worker *wk, aa_grid_t *g, unsigned levels)
 {
     struct {
         uint8_t x, y, level;
     } todo[3 * RT_AA_MAX_LEVELS + 1];
-    unsigned n_todo = 1, sub = 1u << levels, n = sub + 1;
+    unsigned n_todo = 1, sub = 1u << levels;
     todo[0].x = todo[0].y = todo[0].level = 0;
     colour_t sum = v3(0, 0, 0);
     while (n_todo > 0) {
@@ -257,11 +268,11 @@ static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j
         unsigned half = size / 2;
         const colour_t *c[4];
         for (unsigned k = 0; k < 4; k++)
-            c[k] = aa_corner(wk, g, n, i, j, x + (k & 1u) * size, y + (k >> 1) * size);
+            c[k] = aa_corner(wk, g, x + (k & 1u) * size, y + (k >> 1) * size);
         colour_t corners = v3_add(v3_add(*c[0], *c[1]), v3_add(*c[2], *c[3])); /* 4 times their mean */
         real_t limit = wk->aa_threshold * ((int32_t)1 << (2 * level));
         if (level < levels && spread_over(*c[0], *c[1], *c[2], *c[3], limit)) {
-            colour_t m4 = v3_scale(*aa_corner(wk, g, n, i, j, x + half, y + half), r_from_int(4));
+            colour_t m4 = v3_scale(*aa_corner(wk, g, x + half, y + half), r_from_int(4));
             colour_t off = v3_sub(m4, corners); /* 4 (centre - mean) */
             real_t near = 2 * limit;            /* 4 (limit / 2) */
             if (r_abs(off.x) > near || r_abs(off.y) > near || r_abs(off.z) > near) {
@@ -284,29 +295,30 @@ static colour_t aa_pixel(struct rt_worker *wk, colour_t *g, int32_t i, int32_t j
 }
 
 /* Line y, adaptive: rows[0] holds the cell corners on the line's upper
- * edge, rows[1] gets those of its lower edge; a pixel's left edge is its
- * left neighbour's right one. */
+ * edge, rows[1] gets those of its lower edge (traced once, shared by the
+ * pixels above and below); a pixel's left edge is its left neighbour's
+ * right one, and its inner corners are cleared only when some were
+ * traced. */
 static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
     struct rt_worker *wk = ctx->worker;
     unsigned levels = ctx->aa_levels, sub = 1u << levels, n = sub + 1;
-    colour_t *above = ctx->rows[0], *below = ctx->rows[1], *g = ctx->cells;
+    colour_t *above = ctx->rows[0], *below = ctx->rows[1];
+    aa_grid_t g = { .mid = ctx->cells, .sub = sub, .j = (int32_t)y << levels, .dirty = true };
     aa_corner_row(wk, (int32_t)(y + 1) << levels, ctx->x0, ctx->w, levels, below);
     for (uint16_t x = 0; x < ctx->w; x++) {
-        colour_t *top = above + x * sub, *bottom = below + x * sub;
-        for (unsigned r = 1; r < sub; r++) {
-            g[r * n] = x > 0 ? g[r * n + sub] : v3(NOT_TRACED, 0, 0);
-            for (unsigned k = 1; k <= sub; k++)
-                g[r * n + k].x = NOT_TRACED;
+        for (unsigned r = 0; r + 1 < sub; r++)
+            g.mid[r * n] = x > 0 ? g.mid[r * n + sub] : v3(NOT_TRACED, 0, 0);
+        if (g.dirty) {
+            for (unsigned r = 0; r + 1 < sub; r++)
+                for (unsigned k = 1; k <= sub; k++)
+                    g.mid[r * n + k].x = NOT_TRACED;
+            g.dirty = false;
         }
-        for (unsigned k = 0; k <= sub; k++) {
-            g[k] = top[k];
-            g[sub * n + k] = bottom[k];
-        }
-        colour_t c = aa_pixel(wk, g, (int32_t)(ctx->x0 + x) << levels, (int32_t)y << levels, levels);
-        for (unsigned k = 0; k <= sub; k++)
-            bottom[k] = g[sub * n + k]; /* for the line below */
-        put_pixel(line, x, ctx->sink->format, c, dither_at(ctx, ctx->x0 + x, y));
+        g.top = above + x * sub;
+        g.bottom = below + x * sub;
+        g.i = (int32_t)(ctx->x0 + x) << levels;
+        put_pixel(line, x, ctx->sink->format, aa_pixel(wk, &g, levels), dither_at(ctx, ctx->x0 + x, y));
     }
     ctx->rows[1] = ctx->rows[0];
     ctx->rows[0] = below;

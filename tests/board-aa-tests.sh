@@ -55,29 +55,29 @@ same_as_host "tetra-2-spp2" 64x64 tetra-2 "SPP=2" "--spp 2"
 same_as_host "rings-1-aa2_20-rgb565" 47x31 rings-1 "AA=2,20 FORMAT=rgb565" "--aa 2,20 --format rgb565"
 
 # two cores
-n=balls-2-an521
-if fw $n BOARD=mps2-an521 SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=3 &&
-   fw $n-1core BOARD=mps2-an521 CORES=1 SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=3; then
-    "$RT" scenes/spd/balls-2.nff -o "$OUT/$n-host.png" --fixed --size 64x64 --depth 5 --aa 3 --quiet
-    if "$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0 >/dev/null &&
-       "$RT" compare "$OUT/$n-board.png" "$OUT/$n-1core-board.png" --max-error 0 >/dev/null; then
-        ok "mps2-an521, two cores, AA=3: == one core == host; critical path $(value critical_path_instructions_per_pixel "$OUT/$n.report") vs one core $(value instructions_per_pixel "$OUT/$n-1core.report") instructions/pixel"
+two=balls-2-an521 one=balls-2-an521-1core
+if fw $two BOARD=mps2-an521 SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=3 &&
+   fw $one BOARD=mps2-an521 CORES=1 SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=3; then
+    "$RT" scenes/spd/balls-2.nff -o "$OUT/$two-host.png" --fixed --size 64x64 --depth 5 --aa 3 --quiet
+    if "$RT" compare "$OUT/$two-board.png" "$OUT/$two-host.png" --max-error 0 >/dev/null &&
+       "$RT" compare "$OUT/$two-board.png" "$OUT/$one-board.png" --max-error 0 >/dev/null; then
+        ok "mps2-an521, two cores, AA=3: == one core == host; critical path $(value critical_path_instructions_per_pixel "$OUT/$two.report") vs one core $(value instructions_per_pixel "$OUT/$one.report") instructions/pixel"
     else
         bad "mps2-an521 AA=3: two cores, one core and host differ"
     fi
 else
-    bad "mps2-an521 AA=3: build or run failed: $(tail -2 "$OUT/$n.report")"
+    bad "mps2-an521 AA=3: build or run failed: $(tail -2 "$OUT/$two.report")"
 fi
 
 # pruning
 d0=$(make -s print-fwdir SCENE=scenes/spd/balls-2.nff SIZE=64x64)
 d1=$(make -s print-fwdir SCENE=scenes/spd/balls-2.nff SIZE=64x64 AA=3)
 make -s -j2 firmware SCENE=scenes/spd/balls-2.nff SIZE=64x64 >"$OUT/prune.build" 2>&1
-if ! arm-none-eabi-nm "$d0/fixed.elf" | grep -q ' camera_init_cells$' &&
-   arm-none-eabi-nm "$d1/fixed.elf" | grep -q ' camera_init_cells$'; then
-    ok "firmware without AA links no anti-aliasing (camera_init_cells absent; present with AA=3)"
+if ! arm-none-eabi-nm "$d0/fixed.elf" | grep -q ' rt_camera_init_cells$' &&
+   arm-none-eabi-nm "$d1/fixed.elf" | grep -q ' rt_camera_init_cells$'; then
+    ok "firmware without AA links no anti-aliasing (rt_camera_init_cells absent; present with AA=3)"
 else
-    bad "pruning: camera_init_cells linked without AA, or missing with it"
+    bad "pruning: rt_camera_init_cells linked without AA, or missing with it"
 fi
 
 # cost at 128x128

@@ -247,7 +247,7 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     size_t band_bytes = RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1) * (job.split ? 1 : ONE_CALL_LINES);
     size_t scratch_w = vp.w ? vp.w : RT_MAX_WIDTH, sub = (size_t)1 << (opts->aa_levels & 15u);
     size_t scratch_bytes = opts->spd          ? 2 * (scratch_w + 1) * 3 * sizeof(double)
-                           : opts->aa_levels ? (2 * (scratch_w * sub + 1) + (sub + 1) * (sub + 1)) * 3 * sizeof(double)
+                           : opts->aa_levels ? (2 * (scratch_w * sub + 1) + sub * sub - 1) * 3 * sizeof(double)
                                              : 0;
     bool ok = t != NULL && job.runs != NULL && (img->rgb || !valid);
     for (unsigned i = 0; ok && i < threads; i++) {
