@@ -4,9 +4,7 @@
 #include "rt_error.h"
 #include "rt_render.h"
 
-/* The camera with half spans of 1 / (2 sub) pixel, sample (i, j) at
- * offsets (2i - cx, 2j - cy) of them. */
-static const char *camera_setup(camera_t *c, const view_t *view, int32_t span, int32_t sub, int32_t cx, int32_t cy)
+RT_COLD const char *camera_setup(camera_t *c, const view_t *view, int32_t span, int32_t sub, int32_t cx, int32_t cy)
 {
     vec3_t fwd = v3_sub(view->at, view->from);
     if (fwd.x == 0 && fwd.y == 0 && fwd.z == 0)
@@ -35,20 +33,6 @@ static const char *camera_setup(camera_t *c, const view_t *view, int32_t span, i
     }
     c->half_span = r_wmul_real(half_step, dist);
     return 0;
-}
-
-RT_COLD const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
-{
-    return camera_setup(c, view, (nx > ny ? nx : ny) - 1, 1, nx - 1, ny - 1);
-}
-
-/* Pixel centres are samples of the w x h camera: pixel i's centre is
- * 2i - (w - 1) of its half spans, (2i - (w - 1)) sub of the cells' half
- * spans, and its corners sub cells to either side: corner cell i lies at
- * 2i - sub w. */
-RT_COLD const char *camera_init_cells(camera_t *c, const view_t *view, int32_t w, int32_t h, int32_t sub)
-{
-    return camera_setup(c, view, (w > h ? w : h) - 1, sub, sub * w, sub * h);
 }
 
 RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)

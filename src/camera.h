@@ -19,15 +19,28 @@ typedef struct {
                                * spans from T's reference point */
 } camera_t;
 
-/* NULL, or why the view cannot make a camera of nx x ny samples (the
- * model's X x Y). Rays start at the eye. */
-const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny);
+/* NULL, or why the view cannot make a camera (rays start at the eye) whose
+ * sample (i, j) lies 2i - cx, 2j - cy half spans from the view's centre,
+ * a half span being 1 / (2 sub) of the spacing of span + 1 samples across
+ * the field of view. */
+const char *camera_setup(camera_t *c, const view_t *view, int32_t span, int32_t sub, int32_t cx, int32_t cy);
+
+/* A camera of nx x ny samples (the model's X x Y grid). */
+static inline const char *camera_init(camera_t *c, const view_t *view, int32_t nx, int32_t ny)
+{
+    return camera_setup(c, view, (nx > ny ? nx : ny) - 1, 1, nx - 1, ny - 1);
+}
 
 /* The same view for a frame of w x h pixels, each split into sub x sub
  * cells: sample (i, j) is the cell corner i / sub, j / sub pixels from the
  * frame's top left pixel corner (the pixel-area grid of
- * docs/shading-model.md). */
-const char *camera_init_cells(camera_t *c, const view_t *view, int32_t w, int32_t h, int32_t sub);
+ * docs/shading-model.md). Pixel i's centre is 2i - (w - 1) of the pixel
+ * camera's half spans, so (2i - (w - 1)) sub of the cells', and its left
+ * corner sub of them before: corner i sub lies at 2 i sub - sub w. */
+static inline const char *camera_init_cells(camera_t *c, const view_t *view, int32_t w, int32_t h, int32_t sub)
+{
+    return camera_setup(c, view, (w > h ? w : h) - 1, sub, sub * w, sub * h);
+}
 
 /* Start eye rays where they reach the sphere around the box [min, max]
  * (the scene's bounds), if the eye is outside it. */

@@ -390,12 +390,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     }
     ctx->pitch = pitch;
     ctx->band_lines = band_lines;
-#if !RT_USE_AA
-    if (opts->aa_levels || opts->spp > 1) {
-        rt_error_set(err, 0, "anti-aliasing is not compiled in (RT_USE_AA = 0)");
+    /* modes left out of this build (one message: the board leaves both out) */
+    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1))) {
+        rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA)");
         return -1;
     }
-#else
+#if RT_USE_AA
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
     if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
@@ -424,12 +424,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
     }
 #endif
-#if !RT_USE_SPD
-    if (opts->spd) {
-        rt_error_set(err, 0, "SPD mode is not compiled in (RT_USE_SPD = 0)");
-        return -1;
-    }
-#else
+#if RT_USE_SPD
     ctx->spd = opts->spd;
     if (opts->spd) {
         if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(vp.w)) {

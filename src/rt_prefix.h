@@ -13,8 +13,7 @@
 
 #define bvh_build                rt_bvh_build
 #define bvh_tree_stats           rt_bvh_tree_stats
-#define camera_init              rt_camera_init
-#define camera_init_cells        rt_camera_init_cells
+#define camera_setup             rt_camera_setup
 #define camera_ray               rt_camera_ray
 #define camera_start_at_bounds   rt_camera_start_at_bounds
 #define cone_init                rt_cone_init

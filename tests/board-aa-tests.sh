@@ -7,8 +7,9 @@
 #    cell loop adds about 400 bytes under trace_ray: 2,380 on the showpiece);
 #  - mps2-an521, both cores (bands of one line, corner rows traced again
 #    for each): AA=3 byte-identical to the host and to one core;
-#  - pruning: firmware without AA links none of it (camera_init_cells,
-#    the cell grid's camera, is absent), with AA it does;
+#  - pruning: firmware without AA links none of it (render.c's sampler
+#    aa_sample is absent), with AA it does;
+#  - firmware without AA: code within 0.5% of what it was before;
 #  - the cost at 128x128 (instructions per pixel under -icount shift=0,
 #    deterministic): AA=3 over one sample <= 4.0 on teapot-1 and the
 #    showpiece; balls-2 and rings-1, whose edge samples meet their
@@ -73,12 +74,27 @@ fi
 d0=$(make -s print-fwdir SCENE=scenes/spd/balls-2.nff SIZE=64x64)
 d1=$(make -s print-fwdir SCENE=scenes/spd/balls-2.nff SIZE=64x64 AA=3)
 make -s -j2 firmware SCENE=scenes/spd/balls-2.nff SIZE=64x64 >"$OUT/prune.build" 2>&1
-if ! arm-none-eabi-nm "$d0/fixed.elf" | grep -q ' rt_camera_init_cells$' &&
-   arm-none-eabi-nm "$d1/fixed.elf" | grep -q ' rt_camera_init_cells$'; then
-    ok "firmware without AA links no anti-aliasing (rt_camera_init_cells absent; present with AA=3)"
+if ! arm-none-eabi-nm "$d0/fixed.elf" | grep -q ' aa_sample$' &&
+   arm-none-eabi-nm "$d1/fixed.elf" | grep -q ' aa_sample$'; then
+    ok "firmware without AA links no anti-aliasing (its sampler aa_sample absent; present with AA=3)"
 else
-    bad "pruning: rt_camera_init_cells linked without AA, or missing with it"
+    bad "pruning: aa_sample linked without AA, or missing with it"
 fi
+
+# code without AA: within 0.5% of the firmware before anti-aliasing and
+# dithering existed (balls-2 64x64: 15,281 bytes; the showpiece 128x128:
+# 20,273; text, vectors and exidx: the scene tables are data)
+code_of() { arm-none-eabi-size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
+make -s -j2 firmware SCENE=scenes/showpiece.nff SIZE=128x128 >>"$OUT/prune.build" 2>&1
+for case in "$d0:15281" "$(make -s print-fwdir SCENE=scenes/showpiece.nff SIZE=128x128):20273"; do
+    dir=${case%:*} before=${case##*:}
+    c=$(code_of "$dir/fixed.elf")
+    if [ -n "$c" ] && [ $((c * 1000)) -le $((before * 1005)) ]; then
+        ok "$(basename "$dir") without AA: code $c bytes, $((c - before)) more than before AA ($before; limit +0.5%)"
+    else
+        bad "$(basename "$dir") without AA: code ${c:-?} bytes, over $before + 0.5%"
+    fi
+done
 
 # cost at 128x128
 for case in teapot-1:4.0 showpiece:4.0 balls-2:6.5 rings-1:6.5; do

@@ -87,13 +87,17 @@ int main(void)
     uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
 #if BOARD_CORES == 1
     sink_init(&sink, BOARD_FORMAT, band, sizeof band);
-    sink.dither = BOARD_DITHER;
+#if BOARD_DITHER
+    sink.dither = true;
+#endif
     uint64_t t0 = port_icount_read();
     int rc = rt_render(sc, &opts, &sink, &st, &err);
     uint64_t instr = port_icount_read() - t0 - sink_io_instructions();
 #else
     sink_init(&sink, BOARD_FORMAT, 0, 0);
-    sink.dither = BOARD_DITHER;
+#if BOARD_DITHER
+    sink.dither = true;
+#endif
     static bands_report_t rep;
     int rc = bands_render(sc, &opts, &sink, &rep, &err);
     uint64_t instr = 0; /* every core's render: the work, as one core counts it */
