@@ -45,6 +45,7 @@ BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
 BOARD_RUN_AA := 3
+BOARD_RUN_DITHER := 0
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
 $(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
@@ -86,11 +87,14 @@ endif
 # none of it (RT_USE_AA=0). make run renders with RUN_AA (Makefile).
 # make run without AA or SPP renders with the board's BOARD_RUN_AA (3
 # levels unless its board.mk says otherwise: the 16 KiB boards render one
-# sample).
+# sample), and without DITHER with its BOARD_RUN_DITHER (the OLED's 1).
 comma := ,
 ifneq ($(filter run,$(MAKECMDGOALS)),)
 ifeq ($(origin AA)$(origin SPP),undefinedundefined)
 AA := $(BOARD_RUN_AA)
+endif
+ifeq ($(origin DITHER),undefined)
+DITHER := $(BOARD_RUN_DITHER)
 endif
 endif
 AA ?= 0
@@ -223,17 +227,24 @@ board-run:
 	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
 
 RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 1,$(SPP)),--spp $(SPP))
-RUN_AREA = out/$(NAME)-area$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
+# the pixel-area image in the colours the format keeps: 8-bit grey for l8
+# and l4, 8-bit RGB for the others (so the figure includes the format's
+# own rounding, and dithering's effect on it)
+RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
+RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
+RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
 run: deps-board
-	$(MAKE) build/host/rt $(FW_ELF) AA=$(AA) SPP=$(SPP)
+	$(MAKE) build/host/rt $(FW_ELF) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER)
 	@mkdir -p out
-	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
-	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))) vs $(RUN_REF_IS) with the same samples (the number format): '
+	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
+	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))$(if $(RUN_DITHER), $(RUN_DITHER))) vs $(RUN_REF_IS) with the same samples (the number format): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
-	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --format $(FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board vs the pixel-area image (rt --double --spp 16: what a viewer sees): '
+	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board vs the pixel-area image (rt --double --spp 16, $(RUN_AREA_FORMAT): what a viewer sees): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA)
+	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
+	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1
 	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=3 anti-aliases))"
 
 size: $(FW_ELF)

@@ -26,3 +26,5 @@ FW_FORMAT      := l4
 ifeq ($(origin SIZE),file)
 SIZE := 128x64
 endif
+# 16 grey levels: make run dithers (DITHER=0 rounds to nearest)
+BOARD_RUN_DITHER := 1
