@@ -27,7 +27,11 @@ sizes() { # set name, entry points, flags
         END { printf "%-34s %8d %12d\n", n, code, ram }'
 }
 printf '%-34s %8s %12s\n' "feature set (Cortex-M3, -Os)" "code" "static RAM"
-sizes spd-features rt_render -DRT_USE_OBJECTS=0
-sizes all-solids rt_render
-sizes spd-features-no-refraction rt_render -DRT_USE_OBJECTS=0 -DRT_USE_REFRACTION=0 -DRT_USE_PATCHES=0 -DRT_USE_CONES=0
-sizes all-solids+nff-reader "rt_render rt_nff_load"
+# without anti-aliasing and dithering, then with them (the defaults)
+NO_AA="-DRT_USE_AA=0 -DRT_USE_DITHER=0"
+sizes spd-features rt_render -DRT_USE_OBJECTS=0 $NO_AA
+sizes all-solids rt_render $NO_AA
+sizes spd-features-no-refraction rt_render -DRT_USE_OBJECTS=0 -DRT_USE_REFRACTION=0 -DRT_USE_PATCHES=0 -DRT_USE_CONES=0 $NO_AA
+sizes all-solids+nff-reader "rt_render rt_nff_load" $NO_AA
+sizes spd-features+aa+dither rt_render -DRT_USE_OBJECTS=0
+sizes all-solids+aa+dither rt_render
