@@ -245,9 +245,8 @@ static bool spread_over(colour_t a, colour_t b, colour_t c, colour_t d, real_t t
     return spread(a.x, b.x, c.x, d.x) > t || spread(a.y, b.y, c.y, d.y) > t || spread(a.z, b.z, c.z, d.z) > t;
 }
 
-/* Pixel (i, j) of an adaptive frame from its grid g of (2^levels + 1)^2
- * cell corners, traced as they are first needed (docs/shading-model.md,
- * "Anti-aliasing"). A square whose corners spread over the threshold
+/* The pixel of grid g, its cell corners traced as they are first needed
+ * (docs/shading-model.md, "Adaptive anti-aliasing"). A square whose corners spread over the threshold
  * (times 4 a level: a square's share of the pixel is 4 times smaller)
  * gets its centre traced; it is split in four unless the centre lies
  * within half that of the corners' mean (the colour is close to
