@@ -245,7 +245,7 @@ run: deps-board
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA)
 	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1
-	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=3 anti-aliases))"
+	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))"
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
