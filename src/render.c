@@ -12,25 +12,19 @@
 #define PIXEL_FORMAT(f) (f)
 #endif
 
-#if RT_USE_DITHER
-/* A 4x4 Bayer matrix: pixel (x, y) rounds up from (2 m + 1) / 32 of a
- * quantisation step, m = bayer4[y % 4][x % 4]; its mean is one half, the
- * threshold of rounding to nearest. */
-static const uint8_t bayer4[4][4] = { { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 } };
-/* 8-bit v at n levels above 0, rounding up from d / 32 of a step */
-static RT_INLINE unsigned dither_channel(unsigned v, unsigned n, unsigned d) { return (v * n * 32u + 255u * d) / (255u * 32u); }
-#endif
+/* Rounding to one of n + 1 levels: 8-bit v rounds up from d / 32 of a
+ * step. d = 16 is rounding to nearest (exactly (v n + 127) / 255: the
+ * format's own rounding), other d dither (dither_at). */
+#define ROUND_NEAREST 16u
+static RT_INLINE unsigned round_at(unsigned v, unsigned n, unsigned d) { return (v * n * 32u + 255u * d) / (255u * 32u); }
 
-/* Pixel x of a line in format f: the one packer of every format (rt_fb.h).
- * d: 0, or the dither threshold 1..31 (in 1/32 of a step) of the pixel. */
+/* Pixel x of a line in format f: the one packer of every format (rt_fb.h),
+ * rounding at threshold d (ROUND_NEAREST, or dither_at's). */
 static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, colour_t c, unsigned d)
 {
     unsigned r = r_to_u8(c.x), g = r_to_u8(c.y), b = r_to_u8(c.z);
     unsigned w, l;
     uint8_t *px;
-#if !RT_USE_DITHER
-    (void)d;
-#endif
     switch (PIXEL_FORMAT(f)) {
     case RT_FB_RGB888:
         px = line + 3u * x;
@@ -48,12 +42,7 @@ static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, col
     case RT_FB_RGB565:
     case RT_FB_RGB565BE:
         px = line + 2u * x;
-#if RT_USE_DITHER
-        if (d)
-            w = dither_channel(r, 31, d) << 11 | dither_channel(g, 63, d) << 5 | dither_channel(b, 31, d);
-        else
-#endif
-            w = ((r * 31u + 127u) / 255u) << 11 | ((g * 63u + 127u) / 255u) << 5 | ((b * 31u + 127u) / 255u);
+        w = round_at(r, 31, d) << 11 | round_at(g, 63, d) << 5 | round_at(b, 31, d);
         if (PIXEL_FORMAT(f) == RT_FB_RGB565BE)
             w = (w >> 8 | w << 8) & 0xFFFFu;
         px[0] = (uint8_t)w;
@@ -61,16 +50,12 @@ static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, col
         break;
     default: /* RT_FB_L8, RT_FB_L4 */
         l = 77u * r + 150u * g + 29u * b; /* luma times 256 */
-#if RT_USE_DITHER
-        if (d)
-            l = PIXEL_FORMAT(f) == RT_FB_L8 ? (l + 8u * d) >> 8 : (l * 15u * 32u + 65280u * d) / (65280u * 32u);
-        else
-#endif
-        {
-            l = (l + 128u) >> 8;
-            if (PIXEL_FORMAT(f) == RT_FB_L4)
-                l = (l * 15u + 127u) / 255u;
-        }
+        if (PIXEL_FORMAT(f) == RT_FB_L8)
+            l = (l + 8u * d) >> 8;
+        else if (d == ROUND_NEAREST) /* L4: L8 rounded to 0..15 */
+            l = round_at((l + 128u) >> 8, 15, d);
+        else /* dithered from the exact luma */
+            l = (l * 15u * 32u + 65280u * d) / (65280u * 32u);
         if (PIXEL_FORMAT(f) == RT_FB_L8) {
             line[x] = (uint8_t)l;
         } else {
@@ -82,14 +67,21 @@ static RT_INLINE void put_pixel(uint8_t *line, uint16_t x, rt_fb_format_t f, col
     }
 }
 
-/* The dither threshold of frame pixel (x, y) for ctx's sink: 0 when off. */
+#if RT_USE_DITHER
+/* A 4x4 Bayer matrix: pixel (x, y) rounds up from (2 m + 1) / 32 of a
+ * step, m = bayer4[y % 4][x % 4]; its mean is one half, the threshold of
+ * rounding to nearest. */
+static const uint8_t bayer4[4][4] = { { 0, 8, 2, 10 }, { 12, 4, 14, 6 }, { 3, 11, 1, 9 }, { 15, 7, 13, 5 } };
+#endif
+
+/* The rounding threshold of frame pixel (x, y) for ctx's sink. */
 static RT_INLINE unsigned dither_at(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
 #if RT_USE_DITHER
-    return ctx->sink->dither ? 2u * bayer4[y & 3u][x & 3u] + 1u : 0u;
+    return ctx->sink->dither ? 2u * bayer4[y & 3u][x & 3u] + 1u : ROUND_NEAREST;
 #else
     (void)ctx, (void)x, (void)y;
-    return 0;
+    return ROUND_NEAREST;
 #endif
 }
 
@@ -201,9 +193,8 @@ static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
  * corners traced, the others not yet. */
 static void aa_corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, unsigned levels, colour_t *row)
 {
-    uint32_t sub = 1u << levels;
     for (uint32_t i = 0; i <= (uint32_t)w << levels; i++)
-        row[i].x = (i % sub) != 0 ? NOT_TRACED : 0;
+        row[i].x = NOT_TRACED;
     for (uint32_t i = 0; i <= w; i++)
         row[i << levels] = aa_sample(wk, (int32_t)(x0 + i) << levels, j);
 }
@@ -230,11 +221,10 @@ typedef struct {
 /* Corner (x, y) of the pixel, traced if it is not yet. */
 static const colour_t *aa_corner(struct rt_worker *wk, aa_grid_t *p, unsigned x, unsigned y)
 {
-    bool edge = y == 0 || y == p->sub;
     colour_t *c = y == 0 ? &p->top[x] : y == p->sub ? &p->bottom[x] : &p->mid[(y - 1) * (p->sub + 1) + x];
     if (c->x < 0) {
         *c = aa_sample(wk, p->i + (int32_t)x, p->j + (int32_t)y);
-        p->dirty |= !edge;
+        p->dirty |= y != 0 && y != p->sub;
     }
     return c;
 }

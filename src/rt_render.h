@@ -73,12 +73,15 @@ typedef struct {
     uint8_t worker;
 } rt_render_opts_t;
 
-#define RT_RENDER_SPD_SCRATCH(width) (2 * ((size_t)(width) + 1) * 3 * RT_REAL_BYTES)
-/* Adaptive anti-aliasing: two rows of cell-corner colours, and the rows
- * inside one pixel (on the M3, 128 pixels wide: 12,492 bytes at 2 levels,
- * 25,356 at 3). */
-#define RT_RENDER_AA_SCRATCH(width, levels)                                                      \
-    ((2 * (((size_t)(width) << (levels)) + 1) + ((size_t)1 << (2 * (levels))) - 1) * 3 * RT_REAL_BYTES)
+/* Scratch sizes in colours (three scalars each) and in bytes. SPD mode:
+ * two rows of corner colours. Adaptive anti-aliasing: two rows of
+ * cell-corner colours, and the rows inside one pixel (on the M3, 128
+ * pixels wide: 12,492 bytes at 2 levels, 25,356 at 3). */
+#define RT_RENDER_SPD_COLOURS(width) (2 * ((size_t)(width) + 1))
+#define RT_RENDER_AA_COLOURS(width, levels) \
+    (2 * (((size_t)(width) << (levels)) + 1) + ((size_t)1 << (2 * (levels))) - 1)
+#define RT_RENDER_SPD_SCRATCH(width) (RT_RENDER_SPD_COLOURS(width) * 3 * RT_REAL_BYTES)
+#define RT_RENDER_AA_SCRATCH(width, levels) (RT_RENDER_AA_COLOURS(width, levels) * 3 * RT_REAL_BYTES)
 
 
 /* Another viewpoint for scene sc: 0, or -1 with *err set when a position

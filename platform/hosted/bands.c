@@ -241,14 +241,15 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
     for (unsigned i = 0; job.runs && i < threads; i++)
         job.runs[i] = (run_t){ (unsigned)((uint64_t)vp.h * i / threads), (unsigned)((uint64_t)vp.h * (i + 1) / threads) };
     /* each thread: one line in the format (every step is flushed), and
-     * for SPD mode two rows of corner colours, for adaptive anti-aliasing
-     * RT_RENDER_AA_SCRATCH's rows and grid (sized for the widest real_t,
-     * double) */
+     * the scratch of SPD mode or adaptive anti-aliasing (rt_render.h),
+     * sized for the widest real_t, double */
     size_t band_bytes = RT_FB_LINE_BYTES(format, vp.w ? vp.w : 1) * (job.split ? 1 : ONE_CALL_LINES);
-    size_t scratch_w = vp.w ? vp.w : RT_MAX_WIDTH, sub = (size_t)1 << (opts->aa_levels & 15u);
-    size_t scratch_bytes = opts->spd          ? 2 * (scratch_w + 1) * 3 * sizeof(double)
-                           : opts->aa_levels ? (2 * (scratch_w * sub + 1) + sub * sub - 1) * 3 * sizeof(double)
-                                             : 0;
+    size_t scratch_w = vp.w ? vp.w : RT_MAX_WIDTH;
+    size_t colours = opts->spd ? RT_RENDER_SPD_COLOURS(scratch_w)
+                     : opts->aa_levels && opts->aa_levels <= RT_AA_MAX_LEVELS /* (the core refuses more) */
+                         ? RT_RENDER_AA_COLOURS(scratch_w, opts->aa_levels)
+                         : 0;
+    size_t scratch_bytes = colours * 3 * sizeof(double);
     bool ok = t != NULL && job.runs != NULL && (img->rgb || !valid);
     for (unsigned i = 0; ok && i < threads; i++) {
         t[i].job = &job;
