@@ -33,7 +33,7 @@ target="balls-2 rings-1 teapot-1 showpiece"
 others="balls-1 gears-1 rings-2 tetra-1 tetra-2 teapot-2 boxes csg quadrics torus transforms"
 for s in $target $others; do
     if ! "$RT_FAST" "$(spd_path $s)" -o "$OUT/$s-ref.png" --double --spp 16 --size $SIZE --quiet 2>"$OUT/$s.err"; then
-        fail=$((fail + 1)); printf '  FAIL  %-28s reference render failed: %s\n' "$s" "$(cat "$OUT/$s.err")"
+        bad "$s: reference render failed: $(cat "$OUT/$s.err")"
     fi
 done
 
@@ -53,7 +53,7 @@ if ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/ref_tracer.c -lm
             --psnr-min 70
     done
 else
-    fail=$((fail + 1)); echo "  FAIL  ref_tracer does not compile"
+    bad "ref_tracer does not compile"
 fi
 
 # adaptive, fixed build, against the reference; and one sample, for the gain
@@ -67,12 +67,12 @@ for s in $target $others; do
         one=$("$RT" compare "$OUT/$s-one.png" "$OUT/$s-ref.png" | sed 's/psnr \([^ ]*\) dB.*/\1/')
         aa=$("$RT" compare "$OUT/$s-aa.png" "$OUT/$s-ref.png" | sed 's/psnr \([^ ]*\) dB.*/\1/')
         if awk -v a="$aa" -v o="$one" 'BEGIN { exit !(a >= o + 8) }'; then
-            pass=$((pass + 1)); printf '  ok    %-28s one sample %s dB -> --aa 3 %s dB\n' "$s: the gain" "$one" "$aa"
+            ok "$s: the gain: one sample $one dB -> --aa 3 $aa dB"
         else
-            fail=$((fail + 1)); printf '  FAIL  %-28s one sample %s dB, --aa 3 %s dB (want >= 8 dB more)\n' "$s: the gain" "$one" "$aa"
+            bad "$s: the gain: one sample $one dB, --aa 3 $aa dB (want >= 8 dB more)"
         fi
     else
-        fail=$((fail + 1)); printf '  FAIL  %-28s render failed: %s\n' "$s" "$(cat "$OUT/$s.err")"
+        bad "$s: render failed: $(cat "$OUT/$s.err")"
     fi
 done
 
@@ -95,9 +95,9 @@ expect_bad() { # NAME MESSAGE ARGS...
     got=$("$RT" scenes/spd/tetra-1.nff -o "$OUT/bad.png" --size 8x8 "$@" 2>&1 >/dev/null); status=$?
     case "$got" in *"$want"*) matched=1 ;; *) matched=0 ;; esac
     if [ $status -eq 2 ] && [ $matched -eq 1 ] && [ ! -e "$OUT/bad.png" ]; then
-        pass=$((pass + 1)); printf '  ok    %-28s %s\n' "$name" "$(echo "$got" | head -1)"
+        ok "$name: $(echo "$got" | head -1)"
     else
-        fail=$((fail + 1)); printf '  FAIL  %-28s status %s, %s (want *%s*)\n' "$name" "$status" "$got" "$want"
+        bad "$name: status $status, $got (want *$want*)"
     fi
 }
 for v in 0 5 x 3,0 3,256 3, ,8 3,8,1 ""; do
@@ -109,7 +109,6 @@ done
 expect_bad "--aa with --spd" "choose one of SPD mode, adaptive and uniform anti-aliasing" --aa 2 --spd
 expect_bad "--aa with --spp" "choose one of SPD mode, adaptive and uniform anti-aliasing" --aa 2 --spp 2
 "$RT" --help | grep -q -- "--aa L\[,T\]" && "$RT" --help | grep -q -- "--spp N" &&
-    { pass=$((pass + 1)); echo "  ok    --help names --aa and --spp"; } ||
-    { fail=$((fail + 1)); echo "  FAIL  --help does not name --aa and --spp"; }
+    ok "--help names --aa and --spp" || bad "--help does not name --aa and --spp"
 echo "aa-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

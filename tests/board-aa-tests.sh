@@ -19,9 +19,7 @@
 RT=${1:-build/host/rt}
 OUT=build/test-board-aa
 mkdir -p "$OUT"
-pass=0 fail=0
-ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
-bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
+. tests/check.sh
 scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes/$1.nff; }
 # fw NAME [make variables]: build and run (image $OUT/NAME-board.png, report $OUT/NAME.report)
 fw() {

@@ -10,3 +10,6 @@ check() {
         fail=$((fail + 1)); printf '  FAIL  %-28s %s\n' "$name" "$out"
     fi
 }
+# ok MESSAGE, bad MESSAGE: count a check decided by the script itself.
+ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
+bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
