@@ -187,7 +187,7 @@ const char *bvh_build(scene_store_t *st)
     scene_t *sc = &st->scene;
     uint32_t n = 0;
 #define RT_LIST_KIND(type, table, cap, KIND, name, use) \
-    for (uint32_t i = 0; i < sc->n_##table; i++) \
+    for (uint32_t i = 0; i < sc->n_##table && !RT_PRIM_UNBOUNDED(PRIM_##KIND); i++) \
         st->bvh_prims[n++] = PRIM_REF(PRIM_##KIND, i);
     RT_PRIM_KINDS(RT_LIST_KIND)
 #undef RT_LIST_KIND

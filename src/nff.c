@@ -16,6 +16,7 @@
 #include "nff_lex.h"
 #include "nff_scene.h"
 #include "nff_solids.h"
+#include "nff_surfaces.h"
 
 /* ---- entities --------------------------------------------------------- */
 
@@ -103,6 +104,7 @@ static bool read_material(reader_t *r)
         return lex_fail(&r->lx, r->lx.tok_line, "f: Phong exponent must be from 0 to 524287");
     if (!lex_real(&r->lx, "f", &m.t) || !lex_real(&r->lx, "f", &m.ior))
         return false;
+    m.texture = TEXTURE_NONE;
     if (m.t > 0 && m.ior <= 0)
         return lex_fail(&r->lx, r->lx.tok_line, "f: index of refraction must be positive");
     r->have_material = true;
@@ -113,7 +115,7 @@ static bool read_material(reader_t *r)
         const material_t *o = &r->st->materials[i];
         if (o->colour.x == m.colour.x && o->colour.y == m.colour.y && o->colour.z == m.colour.z &&
             o->kd == m.kd && o->ks == m.ks && o->shine == m.shine && o->t == m.t &&
-            o->ior == m.ior) {
+            o->ior == m.ior && o->texture == m.texture) {
             r->material = (uint16_t)i;
             r->have_material = true;
             return true;
@@ -271,6 +273,10 @@ static const keyword_t keywords[] = {
     { "hyperboloid2", rd_hyperboloid2, SOLID_AFTER_VIEW, true },
     { "quadcone", rd_quadcone, SOLID_AFTER_VIEW, true },
     { "quadcylinder", rd_quadcylinder, SOLID_AFTER_VIEW, true },
+    { "plane", rd_plane, AFTER_VIEW, false },
+    { "checker", rd_checker, AFTER_VIEW, true },
+    { "marble", rd_marble, AFTER_VIEW, true },
+    { "sky", rd_sky, ANY_TIME, false },
 };
 
 static bool read_entity(reader_t *r)
@@ -281,7 +287,7 @@ static bool read_entity(reader_t *r)
     while (k < end && !lex_is(lx, k->word))
         k++;
     if (k == end)
-        return lex_fail_tok(lx, "", "unknown entity (expected v, b, l, f, c, s, p, pp, a solid or a block)");
+        return lex_fail_tok(lx, "", "unknown entity (expected v, b, l, f, c, s, p, pp, plane, sky, a texture, a solid or a block)");
     if (r->n_blocks && !k->in_blocks) {
         rt_error_set(lx->err, lx->tok_line, "'");
         rt_error_append(lx->err, k->word);

@@ -29,6 +29,7 @@
 
 #include "cone.h"
 #include "object.h"
+#include "plane.h"
 #include "polygon.h"
 #include "sphere.h"
 
@@ -36,11 +37,16 @@
     X(sphere_t,  spheres,  RT_MAX_SPHERES,  SPHERE,  sphere,  RT_USE_SPHERES) \
     X(cone_t,    cones,    RT_MAX_CONES,    CONE,    cone,    RT_USE_CONES) \
     X(polygon_t, polygons, RT_MAX_POLYGONS, POLYGON, polygon, RT_USE_POLYGONS) \
-    X(object_t,  objects,  RT_MAX_OBJECTS,  OBJECT,  object,  RT_USE_OBJECTS)
+    X(object_t,  objects,  RT_MAX_OBJECTS,  OBJECT,  object,  RT_USE_OBJECTS) \
+    X(plane_t,   planes,   RT_MAX_PLANES,   PLANE,   plane,   RT_USE_PLANES)
 
 #define RT_PRIM_ENUM(type, table, cap, KIND, name, use) PRIM_##KIND,
 enum prim_kind { RT_PRIM_KINDS(RT_PRIM_ENUM) PRIM_KIND_COUNT };
 #undef RT_PRIM_ENUM
+
+/* Kinds with no bounding box (infinite planes): left out of the BVH and
+ * tested before it, on every ray (scene_hit.c). */
+#define RT_PRIM_UNBOUNDED(kind) ((kind) == PRIM_PLANE)
 
 /* Every kind's capacity together: the BVH's primitive list. */
 #define RT_PRIM_CAPACITY(type, table, cap, KIND, name, use) + (cap)

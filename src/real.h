@@ -85,6 +85,15 @@ static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return w / n; }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return w * a; }
 static inline int32_t r_floor_int(real_t a) { return (int32_t)R_FN(floor)(a); }
+/* floor(w), and w - floor(w) in [0, 1) to *frac; |w| < 2^23. No libm
+ * call: the render's (textures) */
+static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
+{
+    int32_t i = (int32_t)w; /* toward zero */
+    i -= (real_t)i > w;
+    *frac = w - (real_t)i;
+    return i;
+}
 static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
 /* the next value above a (a > 0) */
 static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
@@ -222,6 +231,11 @@ static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
+static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
+{
+    *frac = (fx_t)((w >> FX_FRAC_BITS) & (FX_ONE - 1)); /* rounded down, as the floor */
+    return (int32_t)(w >> (2 * FX_FRAC_BITS));
+}
 static inline real_t r_add_sat(real_t a, real_t b) { return fx_add_sat(a, b); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }

@@ -333,7 +333,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 {
     uint16_t w = opts->width ? opts->width : sc->width;
     uint16_t h = opts->height ? opts->height : sc->height;
-    int depth = opts->max_depth ? opts->max_depth : RT_MAX_DEPTH;
+    int depth = opts->max_depth ? opts->max_depth : RT_DEFAULT_DEPTH;
     if (opts->worker >= RT_MAX_WORKERS) { /* before ctx is touched: rt_render's is a worker's */
         rt_error_set(err, 0, "worker exceeds RT_MAX_WORKERS - 1 = ");
         rt_error_append_int(err, RT_MAX_WORKERS - 1);
@@ -444,7 +444,8 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, why);
         return -1;
     }
-    if (sc->n_bvh_nodes > 0)
+    /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
+    if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
         camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
     wk->tr = (tracer_t){ sc, depth, &wk->scratch, opts->spd,
                          r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)), wk->last_blocker, wk->terms };

@@ -71,6 +71,10 @@
 #ifndef RT_MAX_DEPTH
 #define RT_MAX_DEPTH 5
 #endif
+/* The depth when the options ask for none (rt_render_opts_t.max_depth 0). */
+#ifndef RT_DEFAULT_DEPTH
+#define RT_DEFAULT_DEPTH (RT_MAX_DEPTH < 5 ? RT_MAX_DEPTH : 5)
+#endif
 
 /* Object tables. */
 #ifndef RT_MAX_SPHERES
@@ -100,6 +104,9 @@
  * evaluation carries at most RT_CSG_MAX_SPANS inside-spans per node and
  * nests at most RT_CSG_MAX_DEPTH deep; the reader rejects trees that could
  * need more. */
+#ifndef RT_MAX_TEXTURES          /* checker and marble definitions */
+#define RT_MAX_TEXTURES 8
+#endif
 #ifndef RT_MAX_SHAPES
 #define RT_MAX_SHAPES 64
 #endif
@@ -108,6 +115,9 @@
 #endif
 #ifndef RT_MAX_CSG_NODES
 #define RT_MAX_CSG_NODES 32
+#endif
+#ifndef RT_MAX_PLANES            /* infinite planes: tested on every ray */
+#define RT_MAX_PLANES 4
 #endif
 #ifndef RT_MAX_OBJECTS
 #define RT_MAX_OBJECTS 64
@@ -164,11 +174,24 @@
 #ifndef RT_USE_POLYGONS
 #define RT_USE_POLYGONS 1
 #endif
+#ifndef RT_USE_PLANES
+#define RT_USE_PLANES 1
+#endif
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1
 #endif
 #ifndef RT_USE_CONCAVE              /* polygons that are not convex (even-odd) */
 #define RT_USE_CONCAVE 1
+#endif
+#ifndef RT_USE_CHECKER              /* the textures (texture.c) */
+#define RT_USE_CHECKER 1
+#endif
+#ifndef RT_USE_MARBLE
+#define RT_USE_MARBLE 1
+#endif
+#define RT_USE_TEXTURES (RT_USE_CHECKER || RT_USE_MARBLE)
+#ifndef RT_USE_SKY                  /* a sky (by direction) instead of a background colour */
+#define RT_USE_SKY 1
 #endif
 #ifndef RT_USE_SHADOWS
 #define RT_USE_SHADOWS 1
@@ -275,6 +298,9 @@
 #endif
 #if !(RT_MAX_DEPTH >= 1 && RT_MAX_DEPTH <= 16)
 #error "RT_MAX_DEPTH out of 1..16"
+#endif
+#if !(RT_DEFAULT_DEPTH >= 1 && RT_DEFAULT_DEPTH <= RT_MAX_DEPTH)
+#error "RT_DEFAULT_DEPTH out of 1..RT_MAX_DEPTH"
 #endif
 #if !(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24)
 #error "FX_FRAC_BITS out of 8..24"

@@ -41,7 +41,7 @@ typedef struct {
      * whole frame (SPD mode included); the sink's areas are in frame
      * coordinates and its buffer lines hold the viewport's columns. */
     rt_viewport_t viewport;
-    uint8_t max_depth;      /* 0: RT_MAX_DEPTH */
+    uint8_t max_depth;      /* 0: RT_DEFAULT_DEPTH */
     /* Adaptive depth: a child ray whose share of the pixel (product of
      * Ks and T along its path) is below adaptive_milli / 1000 is not
      * traced. 0 = off (the default). */

@@ -24,8 +24,37 @@
     X(real_t, ks, ) \
     X(real_t, t, ) \
     X(real_t, ior, ) \
-    X(shine_t, shine, )
+    X(shine_t, shine, ) \
+    X(uint16_t, texture, ) /* C varies over the surface: textures[texture], or TEXTURE_NONE */
 typedef struct { FIELDS_material_t(RT_DECLARE_FIELD) } material_t;
+
+/* A procedural colour, a function of the world position (texture.c):
+ *   checker  a where the sum of floor(p_i / size) over the axes in `axes`
+ *            (bit i: axis i) is even, b where it is odd
+ *   marble   a to b across stripes along x, bent by gradient noise of
+ *            strength `amount` (docs/shading-model.md gives the formula)
+ * inv_size is 1 / size, size being a length in the scene's scale. */
+enum texture_kind { TEXTURE_CHECKER, TEXTURE_MARBLE };
+#define TEXTURE_NONE 0xFFFFu
+#define FIELDS_texture_t(X) \
+    X(colour_t, a, ) \
+    X(colour_t, b, ) \
+    X(real_t, inv_size, ) \
+    X(real_t, amount, ) \
+    X(uint8_t, kind, ) /* enum texture_kind */ \
+    X(uint8_t, axes, )
+typedef struct { FIELDS_texture_t(RT_DECLARE_FIELD) } texture_t;
+
+/* The sky: what a ray that meets nothing sees, by its direction D:
+ * zenith + (horizon - zenith) (1 - max(0, D . up))^exponent; with `on`
+ * 0 it is the background colour. */
+#define FIELDS_sky_t(X) \
+    X(colour_t, horizon, ) \
+    X(colour_t, zenith, ) \
+    X(vec3_t, up, ) /* unit */ \
+    X(shine_t, exponent, ) \
+    X(uint8_t, on, )
+typedef struct { FIELDS_sky_t(RT_DECLARE_FIELD) } sky_t;
 
 #define FIELDS_light_t(X) \
     X(vec3_t, pos, ) \
@@ -110,6 +139,7 @@ typedef struct { FIELDS_view_t(RT_DECLARE_FIELD) } view_t;
  * X(element type, scene_t member, capacity). */
 #define RT_SCENE_TABLES(X) \
     X(material_t, materials, RT_MAX_MATERIALS) \
+    X(texture_t, textures, RT_MAX_TEXTURES) \
     X(light_t, lights, RT_MAX_LIGHTS) \
     X(vec3_t, vertices, RT_MAX_VERTICES)  /* the polygons' vertex pool */ \
     X(vec3_t, normals, RT_MAX_VERTICES)   /* per-vertex normals of patches (unit) */ \
@@ -123,6 +153,7 @@ typedef struct { FIELDS_view_t(RT_DECLARE_FIELD) } view_t;
 #define FIELDS_scene_t(X) \
     X(view_t, view, ) \
     X(colour_t, background, ) \
+    X(sky_t, sky, )                /* replaces the background when on */ \
     X(uint16_t, width, )           /* the file's resolution */ \
     X(uint16_t, height, ) \
     X(real_t, light_intensity, )   /* I = sqrt(n) / (2 n) */ \

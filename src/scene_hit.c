@@ -138,17 +138,56 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
     *second = right_first ? node + 1 : n->index;
 }
 
+/* The unbounded kinds (planes), every one of them: before the BVH, so
+ * their nearest hit limits the traversal. Their kinds come last in the
+ * table order, so a tie with a bounded primitive goes to that one. */
+static RT_INLINE bool unbounded_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h,
+                                        ray_scratch_t *w)
+{
+    bool found = false;
+#if RT_USE_PLANES
+    for (uint32_t i = 0; i < sc->n_planes; i++) {
+        if (hit_prim(sc, PRIM_REF(PRIM_PLANE, i), r, tmin, &h->t, w, h)) {
+            h->kind = PRIM_PLANE;
+            h->index = i;
+            h->leaf = RT_NO_LEAF;
+            found = true;
+        }
+    }
+#else
+    (void)sc, (void)r, (void)tmin, (void)h, (void)w;
+#endif
+    return found;
+}
+
+static RT_INLINE bool unbounded_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
+                                         prim_ref_t *last_blocker, ray_scratch_t *w)
+{
+#if RT_USE_PLANES
+    for (uint32_t i = 0; i < sc->n_planes; i++) {
+        real_t t = tmax;
+        if (hit_prim(sc, PRIM_REF(PRIM_PLANE, i), r, tmin, &t, w, 0)) {
+            *last_blocker = PRIM_REF(PRIM_PLANE, i);
+            return true;
+        }
+    }
+#else
+    (void)sc, (void)r, (void)tmin, (void)tmax, (void)last_blocker, (void)w;
+#endif
+    return false;
+}
+
 bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
+    bool found = unbounded_nearest(sc, r, tmin, h, w);
     if (!enter_root(sc, &s, r, tmin, h->t))
-        return false;
+        return found;
     bvh_stack_t *stack = w->nearest_stack; /* neither traversal re-enters itself */
     unsigned sp = 0;
     uint32_t node = 0, visited = 0; /* counted here, added once */
     uint32_t path = r->leaf;          /* while on the way down to it */
-    bool found = false;
     for (;;) {
         const bvh_node_t *n = &nodes[node];
         visited++;
@@ -210,6 +249,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     slab_ray_t *s = &w->any_slab;
     real_t t = tmax;
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
+        return true;
+    if (unbounded_occluded(sc, r, tmin, tmax, last_blocker, w))
         return true;
     if (!enter_root(sc, s, r, tmin, tmax))
         return false;

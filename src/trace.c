@@ -3,6 +3,7 @@
 
 #include "prims.h"
 #include "scene_hit.h"
+#include "texture.h"
 
 typedef struct {
     vec3_t point;
@@ -96,6 +97,13 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     real_t I = sc->light_intensity;
     (void)ray; /* only the lights' shares look at it */
     material_terms_t *t = &tr->terms[depth - 1];
+#if RT_USE_TEXTURES
+    if (m->texture != TEXTURE_NONE) { /* C at this point: nothing to cache */
+        t->material = 0;
+        t->kdc = colour_scale(texture_colour(&sc->textures[m->texture], s->point), m->kd);
+        t->ambient = colour_scale(t->kdc, I);
+    } else
+#endif
     if (t->material != m) {
         t->material = m;
         t->kdc = colour_scale(m->colour, m->kd);
@@ -193,13 +201,24 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
 }
 #endif
 
+/* What a ray that meets nothing sees. */
+static colour_t background(const scene_t *sc, const ray_t *ray)
+{
+#if RT_USE_SKY
+    if (sc->sky.on)
+        return sky_colour(&sc->sky, ray->dir);
+#endif
+    (void)ray;
+    return sc->background;
+}
+
 /* The ray helpers above are not inlined: their temporaries stay out of
  * this frame, which the recursion repeats RT_MAX_DEPTH times. */
 colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
 {
     surface_t s;
     if (!find_surface(tr, ray, &s))
-        return tr->scene->background;
+        return background(tr->scene, ray);
     if (depth == 1)
         tr->scratch->stats.eye_hits++;
 

@@ -4,7 +4,11 @@
  * shares no code with src/ and favours obviousness over speed: no
  * acceleration structure, every ray tests every primitive.
  *
- *   ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N]
+ *   ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F]
+ *
+ * --far F: the half side of the far cube that ends planes (the model
+ * derives it from the reader's scale: F = 2^(9 - scene_scale_log2) of
+ * `rt --stats`); without it planes go on for ever.
  *
  * Exit status: 0 success, 1 output failure, 2 bad scene or usage.
  * Scene errors read "file:line: message". The environment variable
@@ -12,6 +16,7 @@
  * to check that images do not depend on it.
  */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,9 +41,18 @@ static double comp(Vec a, int i) { return i == 0 ? a.x : i == 1 ? a.y : a.z; }
 
 /* ---- scene ------------------------------------------------------------ */
 
-typedef struct { Vec c; double kd, ks, shine, t, ior; } Material;
+enum { TEX_NONE, TEX_CHECKER, TEX_MARBLE };
 
-enum { SPHERE, CONE, POLYGON };
+typedef struct {
+    Vec c;
+    double kd, ks, shine, t, ior;
+    int tex;           /* TEX_*: then C depends on the hit point */
+    double size, amount;
+    Vec ca, cb;        /* the texture's two colours */
+    int axes;          /* checker: bit i, axis i counts */
+} Material;
+
+enum { SPHERE, CONE, POLYGON, PLANE };
 
 typedef struct {
     int kind;
@@ -47,8 +61,8 @@ typedef struct {
     double r;        /* sphere radius; cone base radius */
     Vec axis;        /* cone: unit axis base -> apex */
     double h, k;     /* cone: height, radius change per unit height */
-    Vec ng;          /* polygon: unit normal from the first three vertices */
-    double d;        /* polygon: plane ng . x = d */
+    Vec ng;          /* polygon, plane: unit normal (a polygon's from its first three vertices) */
+    double d;        /* polygon, plane: the plane ng . x = d */
     int ax0, ax1;    /* polygon: the two axes it is projected onto */
     size_t first, n; /* polygon: verts[first .. first+n) */
     int patch;       /* polygon: unit vertex normals in norms[] */
@@ -72,6 +86,10 @@ static int resx, resy, have_view;
 static double extent;             /* largest absolute coordinate */
 static double eps_offset, eps_t;  /* derived from extent, see main() */
 static int max_depth = 5;
+static double far_cube = INFINITY;  /* --far */
+static int sky_on;
+static Vec sky_horizon, sky_zenith, sky_up;
+static double sky_exp;
 
 static void *grow(void *p, size_t *cap, size_t need, size_t size)
 {
@@ -321,10 +339,11 @@ static void read_polygon(Reader *r, int line, int patch, const Material *m)
 static void read_scene(const char *name)
 {
     Reader r;
-    Material m = {{0, 0, 0}, 0, 0, 0, 0, 0};
+    Material m;
     int have_material = 0;
     FILE *f = fopen(name, "rb");
     size_t n = 0, cap = 0, got;
+    memset(&m, 0, sizeof m);
     if (!f) {
         fprintf(stderr, "%s: cannot open\n", name);
         exit(2);
@@ -379,9 +398,55 @@ static void read_scene(const char *name)
             m.shine = number(&r, "f");
             m.t = number(&r, "f");
             m.ior = number(&r, "f");
+            m.tex = TEX_NONE;
             if (m.t > 0 && m.ior <= 0)
                 fail(&r, t.line, "f: index of refraction must be positive");
             have_material = 1;
+        } else if (is(t, "checker") || is(t, "marble")) {
+            if (!have_material)
+                fail(&r, t.line, is(t, "checker") ? "checker before any 'f' material line"
+                                                  : "marble before any 'f' material line");
+            m.tex = is(t, "checker") ? TEX_CHECKER : TEX_MARBLE;
+            m.size = number(&r, "texture");
+            m.ca = vector(&r, "texture");
+            m.cb = vector(&r, "texture");
+            if (!(m.size > 0))
+                fail(&r, t.line, "texture: size must be positive");
+            if (m.tex == TEX_MARBLE) {
+                m.amount = number(&r, "marble");
+            } else {
+                Tok a = peek(&r);
+                static const char *names[] = { "x", "y", "xy", "z", "xz", "yz", "xyz" };
+                int k;
+                m.axes = 7;
+                if (a.len && a.line == r.last_line && !numeric(a)) {
+                    next(&r);
+                    for (k = 0; k < 7 && !is(a, names[k]); k++)
+                        ;
+                    if (k == 7)
+                        fail(&r, a.line, "checker: bad axes");
+                    m.axes = k + 1;
+                }
+            }
+        } else if (is(t, "sky")) {
+            sky_horizon = vector(&r, "sky");
+            sky_zenith = vector(&r, "sky");
+            sky_up = norm(vector(&r, "sky"));
+            sky_exp = number(&r, "sky");
+            sky_on = 1;
+        } else if (is(t, "plane")) {
+            Prim *p;
+            Vec pt, nv;
+            if (!have_material)
+                fail(&r, t.line, "plane before any 'f' material line");
+            pt = vector(&r, "plane");
+            nv = vector(&r, "plane");
+            if (len(nv) == 0)
+                fail(&r, t.line, "plane normal is zero");
+            p = new_prim(PLANE, &m);
+            p->ng = norm(nv);
+            p->d = dot(p->ng, pt);
+            see(pt, 0);
         } else if (is(t, "s") || is(t, "c") || is(t, "p") || is(t, "pp")) {
             if (!have_material) {
                 char buf[80];
@@ -472,6 +537,15 @@ static double hit(const Prim *p, Vec o, Vec d, double tmax)
             if (t[i] > eps_t && t[i] < best && y >= 0 && y <= p->h)
                 best = t[i];
         }
+    } else if (p->kind == PLANE) {
+        double dn = dot(p->ng, d), th;
+        Vec P;
+        if (dn == 0)
+            return tmax;
+        th = (p->d - dot(p->ng, o)) / dn;
+        P = add(o, mul(d, th));
+        if (th > eps_t && th < tmax && fabs(P.x) < far_cube && fabs(P.y) < far_cube && fabs(P.z) < far_cube)
+            best = th;
     } else {
         double dn = dot(p->ng, d), th, px, py;
         size_t j;
@@ -562,6 +636,64 @@ static Vec normal_at(const Prim *p, Vec P, Vec *ng)
     return *ng;
 }
 
+/* ---- textures and the sky --------------------------------------------- */
+
+static unsigned lattice(long i, long j, long k)
+{
+    uint32_t n = (uint32_t)i * 0x8da6b343u + (uint32_t)j * 0xd8163841u + (uint32_t)k * 0xcb1ab31fu;
+    n ^= n >> 15;
+    n *= 0x2c1b3c6du;
+    n ^= n >> 12;
+    return n >> 28;
+}
+
+static double smooth(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
+
+static double noise(Vec q)
+{
+    double c[3] = { floor(q.x), floor(q.y), floor(q.z) };
+    double u[3] = { q.x - c[0], q.y - c[1], q.z - c[2] }, sum = 0;
+    int e;
+    for (e = 0; e < 8; e++) {
+        int ex = e & 1, ey = (e >> 1) & 1, ez = e >> 2;
+        unsigned h = lattice((long)c[0] + ex, (long)c[1] + ey, (long)c[2] + ez);
+        double x = u[0] - ex, y = u[1] - ey, z = u[2] - ez;
+        double a = h < 8 ? x : y, b = h < 4 ? y : (h == 12 || h == 14) ? x : z;
+        double g = ((h & 1) ? -a : a) + ((h & 2) ? -b : b);
+        double wx = ex ? smooth(u[0]) : 1 - smooth(u[0]);
+        double wy = ey ? smooth(u[1]) : 1 - smooth(u[1]);
+        double wz = ez ? smooth(u[2]) : 1 - smooth(u[2]);
+        sum += wx * wy * wz * g;
+    }
+    return sum;
+}
+
+/* C at P */
+static Vec colour_at(const Material *m, Vec P)
+{
+    if (m->tex == TEX_CHECKER) {
+        long n = 0;
+        int i;
+        for (i = 0; i < 3; i++)
+            if (m->axes >> i & 1)
+                n += (long)floor(comp(P, i) / m->size);
+        return n % 2 ? m->cb : m->ca;
+    }
+    if (m->tex == TEX_MARBLE) {
+        Vec q = mul(P, 1 / m->size);
+        double w = q.x + m->amount * (noise(q) + noise(mul(q, 2)) / 2), f = w - floor(w);
+        return add(m->ca, mul(sub(m->cb, m->ca), fabs(2 * f - 1)));
+    }
+    return m->c;
+}
+
+static Vec missed(Vec d)
+{
+    if (!sky_on)
+        return bg;
+    return add(sky_zenith, mul(sub(sky_horizon, sky_zenith), pow(1 - fmax(0, dot(d, sky_up)), sky_exp)));
+}
+
 /* ---- shading ---------------------------------------------------------- */
 
 /* Snell's law about n (n . d < 0); 0 on total internal reflection. */
@@ -580,11 +712,11 @@ static Vec trace(Vec o, Vec d, int depth)
     long h = nearest(o, d, INFINITY, 0, &t);
     const Prim *p;
     const Material *m;
-    Vec P, ng, ngo, n, col, out;
+    Vec P, ng, ngo, n, col, out, C;
     size_t i;
     int entering;
     if (h < 0)
-        return bg;
+        return missed(d);
     p = &prims[h];
     m = &p->m;
     P = add(o, mul(d, t));
@@ -595,7 +727,8 @@ static Vec trace(Vec o, Vec d, int depth)
         n = mul(n, -1);
     /* secondary rays on the side they leave, clear of the surface */
     out = add(P, mul(ngo, eps_offset));
-    col = mul(m->c, I * m->kd);
+    C = colour_at(m, P);
+    col = mul(C, I * m->kd);
     for (i = 0; i < nlights; i++) {
         Vec L = norm(sub(lights[i].pos, P)), toward = sub(lights[i].pos, out), R;
         double nl = dot(n, L), dist = len(toward), rv, spec = 0, dummy;
@@ -609,7 +742,7 @@ static Vec trace(Vec o, Vec d, int depth)
         rv = -dot(R, d);
         if (m->ks != 0 && rv > 0)
             spec = m->ks * pow(rv, m->shine);
-        col = add(col, mul(vmul(lights[i].col, add(mul(m->c, m->kd * nl), vec(spec, spec, spec))), I));
+        col = add(col, mul(vmul(lights[i].col, add(mul(C, m->kd * nl), vec(spec, spec, spec))), I));
     }
     if (depth < max_depth) {
         if (m->ks > 0) {
@@ -651,7 +784,7 @@ static unsigned char byte(double c)
 
 static void usage(void)
 {
-    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N]\n", stderr);
+    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F]\n", stderr);
     exit(2);
 }
 
@@ -689,6 +822,10 @@ int main(int argc, char **argv)
         } else if (!strcmp(argv[i], "--depth") && i + 1 < argc) {
             max_depth = (int)whole(argv[++i], &end, 1, 100);
             if (*end)
+                usage();
+        } else if (!strcmp(argv[i], "--far") && i + 1 < argc) {
+            far_cube = strtod(argv[++i], &end);
+            if (*end || !(far_cube > 0))
                 usage();
         } else if (!strcmp(argv[i], "--spp") && i + 1 < argc) {
             spp = whole(argv[++i], &end, 1, 64);

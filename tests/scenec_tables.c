@@ -66,6 +66,7 @@ static void differ(const char *table, uint32_t row, const char *field)
     }
 #define DEFINE_CMP_PRIM(type, table, cap, KIND, name, use) DEFINE_CMP(type)
 DEFINE_CMP(material_t)
+DEFINE_CMP(texture_t)
 DEFINE_CMP(light_t)
 DEFINE_CMP(xform_t)
 DEFINE_CMP(shape_t)

@@ -81,13 +81,15 @@ static void emit_double(FILE *f, const void *v)
 static void emit_prim_ref_t(FILE *f, const void *v) { fprintf(f, "0x%08" PRIx32 "u", *(const prim_ref_t *)v); }
 static void emit_vec3_t(FILE *f, const void *v);
 static void emit_view_t(FILE *f, const void *v);
+static void emit_sky_t(FILE *f, const void *v);
 
 /* The emitter of a field type: real_t, real_wide_t and shine_t are
  * int32_t, int64_t and uint32_t in the fixed build, all float (double)
  * in the float (double) build; colour_t is vec3_t. */
 #define EMITTER(type) \
     _Generic((type){ 0 }, int32_t: emit_i32, uint32_t: emit_u32, uint16_t: emit_u16, uint8_t: emit_u8, \
-             int64_t: emit_i64, float: emit_float, double: emit_double, vec3_t: emit_vec3_t, view_t: emit_view_t)
+             int64_t: emit_i64, float: emit_float, double: emit_double, vec3_t: emit_vec3_t, view_t: emit_view_t, \
+             sky_t: emit_sky_t)
 
 static void emit_vec3_t(FILE *f, const void *v)
 {
@@ -146,6 +148,8 @@ DEFINE_EMIT_STRUCT(shape_t)
 DEFINE_EMIT_STRUCT(csg_node_t)
 DEFINE_EMIT_STRUCT(bvh_node_t)
 DEFINE_EMIT_STRUCT(view_t)
+DEFINE_EMIT_STRUCT(sky_t)
+DEFINE_EMIT_STRUCT(texture_t)
 RT_PRIM_KINDS(DEFINE_EMIT_PRIM)
 
 /* ---- tables and the scene ------------------------------------------------ */
@@ -220,6 +224,11 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
         reflection |= sc->materials[i].ks > 0 || sc->materials[i].t > 0;
         specular |= sc->materials[i].ks > 0 && sc->n_lights > 0;
     }
+    bool checker = false, marble = false;
+    for (uint32_t i = 0; i < sc->n_textures; i++) {
+        checker |= sc->textures[i].kind == TEXTURE_CHECKER;
+        marble |= sc->textures[i].kind == TEXTURE_MARBLE;
+    }
     for (uint32_t i = 0; i < sc->n_polygons; i++) {
         patches |= sc->polygons[i].normals != POLY_NO_NORMALS;
         concave |= sc->polygons[i].normals == POLY_NO_NORMALS && !sc->polygons[i].convex;
@@ -249,6 +258,9 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
         RT_PRIM_KINDS(USE_OF_KIND)
         { "patches", patches },
         { "concave", concave },
+        { "checker", checker },
+        { "marble", marble },
+        { "sky", sc->sky.on != 0 },
         { "shadows", sc->n_lights > 0 },
         { "specular", specular },
         { "reflection", reflection },

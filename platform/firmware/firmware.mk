@@ -113,7 +113,7 @@ SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
-            $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) \
+            $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than

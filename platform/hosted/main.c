@@ -151,7 +151,7 @@ static void print_usage(void)
     for (size_t i = 0; i < N_BACKENDS && used < sizeof lines; i++)
         used += (size_t)snprintf(lines + used, sizeof lines - used, "  --%-17s %s\n", backends[i].name,
                                  backends[i].what);
-    printf(usage_text, lines, RT_MAX_DEPTH, RT_MAX_DEPTH, format_list, RT_AA_THRESHOLD, RT_AA_MAX_LEVELS, RT_AA_MAX_SPP,
+    printf(usage_text, lines, RT_MAX_DEPTH, RT_DEFAULT_DEPTH, format_list, RT_AA_THRESHOLD, RT_AA_MAX_LEVELS, RT_AA_MAX_SPP,
            RT_MAX_WORKERS, bands_default_threads());
 }
 

@@ -1,0 +1,119 @@
+/*
+ * nff_surfaces.c - planes, textures and the sky (layers: nff_lex.h):
+ *
+ *   plane px py pz nx ny nz               through p, facing n, infinite
+ *   checker size r g b r g b [axes]       axes: x y z xy xz yz or xyz (default)
+ *   marble size r g b r g b amount
+ *   sky hr hg hb zr zg zb ux uy uz exponent
+ *
+ * A texture line gives the current material (the last f) a texture: the
+ * primitives after it take the textured material. Plain NFF never uses
+ * these words.
+ */
+#include "nff_surfaces.h"
+
+#include "geometry.h"
+
+bool rd_plane(reader_t *r)
+{
+    scene_t *sc = &r->st->scene;
+    uint32_t line = r->lx.tok_line;
+    vec3_t p, n;
+    if (!rd_need_material(r, "plane") ||
+        (!r->measuring && !CHECK_ROOM(r, sc->n_planes, RT_MAX_PLANES, "planes")) || !rd_pos3(r, "plane", &p) ||
+        !lex_vec3(&r->lx, "plane", &n))
+        return false;
+    if (r->measuring)
+        return true;
+    const char *why = plane_init(&r->st->planes[sc->n_planes], p, n, r->material);
+    if (why)
+        return lex_fail(&r->lx, line, why);
+    sc->n_planes++;
+    return true;
+}
+
+/* size r g b r g b: the part both textures share. */
+static bool texture_common(reader_t *r, const char *what, texture_t *tx)
+{
+    real_t size;
+    if (!rd_need_material(r, what) || !rd_pos(r, what, &size) || !lex_vec3(&r->lx, what, &tx->a) ||
+        !lex_vec3(&r->lx, what, &tx->b))
+        return false;
+    if (r->measuring)
+        return true;
+    /* 1 / size within range in every build (the fixed one needs it) */
+    if (size < R_RATIO(1, 1024)) {
+        rt_error_set(r->lx.err, r->lx.tok_line, what);
+        rt_error_append(r->lx.err, ": size must be positive, at least 2^-10 in the scene's scale (rt --stats: scale_log2)");
+        return false;
+    }
+    tx->inv_size = r_div(R_ONE, size);
+    return true;
+}
+
+/* The current material with texture tx: a new material, current from now. */
+static bool add_textured(reader_t *r, const texture_t *tx)
+{
+    scene_t *sc = &r->st->scene;
+    if (r->measuring)
+        return true;
+    if (!CHECK_ROOM(r, sc->n_textures, RT_MAX_TEXTURES, "textures") ||
+        !CHECK_ROOM(r, sc->n_materials, RT_MAX_MATERIALS, "materials"))
+        return false;
+    r->st->textures[sc->n_textures] = *tx;
+    material_t m = r->st->materials[r->material];
+    m.texture = (uint16_t)sc->n_textures++;
+    r->st->materials[sc->n_materials] = m;
+    r->material = (uint16_t)sc->n_materials++;
+    return true;
+}
+
+bool rd_checker(reader_t *r)
+{
+    texture_t tx = { .kind = TEXTURE_CHECKER, .axes = 7 };
+    if (!texture_common(r, "checker", &tx))
+        return false;
+    bool more;
+    if (!lex_next_on_line(&r->lx, &more))
+        return false;
+    if (more) {
+        static const char *const names[] = { "x", "y", "xy", "z", "xz", "yz", "xyz" };
+        unsigned i = 0;
+        while (i < 7 && !lex_is(&r->lx, names[i]))
+            i++;
+        if (i == 7)
+            return lex_fail_tok(&r->lx, "checker", ": axes must be x, y, z, xy, xz, yz or xyz");
+        tx.axes = (uint8_t)(i + 1);
+    }
+    return add_textured(r, &tx);
+}
+
+bool rd_marble(reader_t *r)
+{
+    texture_t tx = { .kind = TEXTURE_MARBLE };
+    if (!texture_common(r, "marble", &tx) || !lex_real(&r->lx, "marble", &tx.amount))
+        return false;
+    if (tx.amount < 0 || tx.amount > r_from_int(16))
+        return lex_fail(&r->lx, r->lx.tok_line, "marble: amount must be from 0 to 16");
+    return add_textured(r, &tx);
+}
+
+bool rd_sky(reader_t *r)
+{
+    sky_t *sky = &r->st->scene.sky;
+    uint32_t line = r->lx.tok_line;
+    if (sky->on)
+        return lex_fail(&r->lx, line, "sky: a second sky");
+    decimal_t d;
+    vec3_t up;
+    if (!lex_vec3(&r->lx, "sky", &sky->horizon) || !lex_vec3(&r->lx, "sky", &sky->zenith) ||
+        !lex_vec3(&r->lx, "sky", &up) || !lex_decimal(&r->lx, "sky", &d))
+        return false;
+    if (!shine_from_decimal(d.neg, d.mant, d.exp10, &sky->exponent) || sky->exponent == 0)
+        return lex_fail(&r->lx, r->lx.tok_line, "sky: exponent must be above 0 and at most 524287");
+    sky->up = v3_unit(up);
+    if (sky->up.x == 0 && sky->up.y == 0 && sky->up.z == 0)
+        return lex_fail(&r->lx, line, "sky: up direction is zero");
+    sky->on = !r->measuring;
+    return true;
+}

@@ -1,0 +1,41 @@
+/* plane.c - the infinite plane. */
+#include "geometry.h"
+
+const char *plane_init(plane_t *pl, vec3_t point, vec3_t normal, uint16_t material)
+{
+    pl->normal = v3_unit(normal);
+    pl->offset = v3_dot(pl->normal, point);
+    pl->material = material;
+    return pl->normal.x == 0 && pl->normal.y == 0 && pl->normal.z == 0 ? "plane normal is zero" : 0;
+}
+
+/* The far cube's half side: hits beyond it are not part of the scene. */
+#define PLANE_FAR r_from_int((int32_t)1 << RT_FAR_EXTENT_LOG2)
+
+bool ray_hit_plane(const plane_t *pl, const ray_t *r, real_t tmin, real_t *t)
+{
+    /* t = (offset - N.O) / (N.D), compared as products before the
+     * division: a ray almost parallel to the plane meets it far beyond
+     * the range, and its quotient would overflow */
+    real_t den = v3_dot(pl->normal, r->dir);
+    real_t num = pl->offset - v3_dot(pl->normal, r->origin);
+    if (den < 0) {
+        den = -den;
+        num = -num;
+    }
+    if (num <= 0 || r_to_wide(num) >= r_wmul(*t, den) || r_to_wide(num) <= r_wmul(tmin, den))
+        return false;
+    real_t t0 = r_div(num, den);
+    if (t0 <= tmin || t0 >= *t)
+        return false;
+    /* the hit point, exact in the wide type (it may lie beyond the range) */
+    const real_wide_t far = r_to_wide(PLANE_FAR);
+    const real_t o[3] = { r->origin.x, r->origin.y, r->origin.z }, d[3] = { r->dir.x, r->dir.y, r->dir.z };
+    for (unsigned a = 0; a < 3; a++) {
+        real_wide_t p = r_to_wide(o[a]) + r_wmul(t0, d[a]);
+        if (p >= far || p <= -far)
+            return false;
+    }
+    *t = t0;
+    return true;
+}
