@@ -44,7 +44,7 @@ static bool texture_common(reader_t *r, const char *what, texture_t *tx)
     /* 1 / size within range in every build (the fixed one needs it) */
     if (size < R_RATIO(1, 1024)) {
         rt_error_set(r->lx.err, r->lx.tok_line, what);
-        rt_error_append(r->lx.err, ": size must be positive, at least 2^-10 in the scene's scale (rt --stats: scale_log2)");
+        rt_error_append(r->lx.err, ": size must be positive, at least 2^-10 in the scene's scale (rt --stats: scene_scale_log2)");
         return false;
     }
     tx->inv_size = r_div(R_ONE, size);

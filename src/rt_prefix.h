@@ -13,8 +13,8 @@
 
 #define bvh_build                rt_bvh_build
 #define bvh_tree_stats           rt_bvh_tree_stats
-#define camera_setup             rt_camera_setup
 #define camera_ray               rt_camera_ray
+#define camera_setup             rt_camera_setup
 #define camera_start_at_bounds   rt_camera_start_at_bounds
 #define cone_init                rt_cone_init
 #define cone_normal              rt_cone_normal
@@ -50,6 +50,7 @@
 #define lex_vec3                 rt_lex_vec3
 #define nff_read                 rt_nff_read
 #define object_prim_surface      rt_object_prim_surface
+#define plane_init               rt_plane_init
 #define polygon_init             rt_polygon_init
 #define polygon_is_flat          rt_polygon_is_flat
 #define polygon_shading_normal   rt_polygon_shading_normal
@@ -59,18 +60,22 @@
 #define r_pow_float              rt_r_pow_float
 #define ray_hit_cone             rt_ray_hit_cone
 #define ray_hit_object           rt_ray_hit_object
+#define ray_hit_plane            rt_ray_hit_plane
 #define ray_hit_polygon          rt_ray_hit_polygon
 #define ray_hit_sphere           rt_ray_hit_sphere
 #define rd_blocks_closed         rt_rd_blocks_closed
 #define rd_box                   rt_rd_box
+#define rd_checker               rt_rd_checker
 #define rd_difference_block      rt_rd_difference_block
 #define rd_ellipsoid             rt_rd_ellipsoid
 #define rd_end_block             rt_rd_end_block
 #define rd_hyperboloid           rt_rd_hyperboloid
 #define rd_hyperboloid2          rt_rd_hyperboloid2
 #define rd_intersection_block    rt_rd_intersection_block
+#define rd_marble                rt_rd_marble
 #define rd_need_material         rt_rd_need_material
 #define rd_paraboloid            rt_rd_paraboloid
+#define rd_plane                 rt_rd_plane
 #define rd_pos                   rt_rd_pos
 #define rd_pos3                  rt_rd_pos3
 #define rd_quadcone              rt_rd_quadcone
@@ -78,6 +83,7 @@
 #define rd_quadric               rt_rd_quadric
 #define rd_rotate                rt_rd_rotate
 #define rd_scale                 rt_rd_scale
+#define rd_sky                   rt_rd_sky
 #define rd_sphere_solid          rt_rd_sphere_solid
 #define rd_top_block             rt_rd_top_block
 #define rd_torus                 rt_rd_torus
@@ -95,11 +101,13 @@
 #define shape_spans              rt_shape_spans
 #define shape_world_box          rt_shape_world_box
 #define shine_from_decimal       rt_shine_from_decimal
+#define sky_colour               rt_sky_colour
 #define solid_depth              rt_solid_depth
 #define solid_max_spans          rt_solid_max_spans
 #define spans_push               rt_spans_push
 #define sphere_init              rt_sphere_init
 #define sphere_normal            rt_sphere_normal
+#define texture_colour           rt_texture_colour
 #define trace_ray                rt_trace_ray
 #define xform_identity           rt_xform_identity
 #define xform_mat_vec            rt_xform_mat_vec

@@ -3,7 +3,9 @@
 #  - the board's image is byte-identical to the hosted fixed build's, for
 #    every SPD size-1 scene and the size-2 scenes, at 64x64, depth 5;
 #  - the fixed firmware links no heap and no soft-float helper;
-#  - the demo scenes of scenes/ (solids, transforms, CSG) likewise;
+#  - the demo scenes of scenes/ (solids, transforms, CSG, textures) and
+#    the benchmark scenes of scenes/bench likewise;
+#  - plane, texture and sky code is pruned from firmware that lacks them;
 #  - footprint budgets of the default scene (showpiece, 128x128, depth 5);
 #  - a scene over a capacity fails to build with a clear message.
 RT=${1:-build/host/rt}
@@ -23,9 +25,9 @@ fw() {
 }
 
 echo "board tests: QEMU mps2-an385 against the hosted fixed build"
-scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes/$1.nff; }
+scene_file() { for d in scenes/spd scenes/bench scenes; do [ -f $d/$1.nff ] && echo $d/$1.nff && return; done; }
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2 \
-         quadrics torus boxes transforms csg showpiece; do
+         quadrics torus boxes transforms csg showpiece textures card picolib whitted; do
     d=$(fwdir $s 64x64)
     if ! make -s -j2 firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
         bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
@@ -64,6 +66,16 @@ for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
         bad "$s: pruned and unpruned firmware differ or failed"
     fi
 done
+
+# Textures, planes and the sky are pruned from firmware for a scene
+# without them (balls-2), and linked for one with them (textures).
+syms() { arm-none-eabi-nm "$(fwdir $1 64x64)/fixed.elf" | awk '{ print $NF }' | grep -E '^rt_(texture_colour|ray_hit_plane|sky_colour)$' | sort | tr '\n' ' '; }
+none=$(syms balls-2) all=$(syms textures)
+if [ -z "$none" ] && [ "$all" = "rt_ray_hit_plane rt_sky_colour rt_texture_colour " ]; then
+    ok "pruning: balls-2 links no plane, texture or sky code; textures links $all"
+else
+    bad "pruning: balls-2 links '$none'; textures links '$all'"
+fi
 
 # Code budget of a firmware with the SPD features only (balls-2: spheres,
 # one polygon, shadows, reflection, specular), scene tables excluded.

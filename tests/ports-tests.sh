@@ -1,6 +1,7 @@
 #!/bin/sh
 # Every board and backend (platform/*/board.mk, BOARD_BACKENDS) at 32x32,
-# depth 5, on SPD balls-2 (the full matrix is make bench's):
+# depth 5, on SPD balls-2, and in the fixed and float backends on the
+# benchmark scenes of scenes/bench (the full matrix is make bench's):
 #  - identity: the board's image is byte-identical to the host build of
 #    the same backend (rt --fixed / --float) in the board's pixel format,
 #    and the core's counters in its report equal rt --stats;
@@ -27,7 +28,11 @@ echo "ports: every board and backend against the host"
 for b in $(ls platform/*/board.mk | cut -d/ -f2); do
     eval "$(make -s board-info BOARD=$b SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5)"
     for be in $backends; do
-        for s in scenes/spd/balls-2.nff; do
+        # the benchmark scenes (planes, textures, the sky) in the backends
+        # a user would run: fixed and float
+        scenes=scenes/spd/balls-2.nff
+        [ $be = double ] || scenes="$scenes scenes/bench/card.nff scenes/bench/picolib.nff scenes/bench/whitted.nff"
+        for s in $scenes; do
             t0=$(date +%s)
             n=$b-$be-$(basename $s .nff)
             vars="BOARD=$b BACKEND=$be SCENE=$s SIZE=32x32 DEPTH=5"
