@@ -138,6 +138,53 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
     *second = right_first ? node + 1 : n->index;
 }
 
+/* Every primitive in table order, each kind's test called directly (no
+ * reference or dispatch per primitive): the reference the traversal is
+ * tested against, and the whole search when the tree is one leaf (a few
+ * primitives: it holds them all in table order, and needs no box test).
+ * Ties go to the earlier, as in the traversal. */
+#define FLAT_TEST(KIND, table, name, use, t, hit) \
+    prim_ref_t ref = PRIM_REF(PRIM_##KIND, i); \
+    bool self = ref == r->from; \
+    if (self && !r->from_far) \
+        continue; /* leaving its outside, or a plane */ \
+    w->stats.prim_tests[PRIM_##KIND]++; \
+    if (name##_prim_hit(sc, &sc->table[i], r, tmin, t, self, w, hit))
+
+RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
+{
+    bool found = false;
+#define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
+    for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
+        FLAT_TEST(KIND, table, name, use, &h->t, h) { \
+            h->kind = PRIM_##KIND; \
+            h->index = i; \
+            h->leaf = RT_PRIM_UNBOUNDED(PRIM_##KIND) ? RT_NO_LEAF : 0; \
+            found = true; \
+        } \
+    }
+    RT_PRIM_KINDS(RT_FLAT_NEAREST)
+#undef RT_FLAT_NEAREST
+    return found;
+}
+
+RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
+                                    prim_ref_t *last_blocker, ray_scratch_t *w)
+{
+#define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
+    for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
+        real_t t = tmax; \
+        FLAT_TEST(KIND, table, name, use, &t, 0) { \
+            *last_blocker = ref; \
+            return true; \
+        } \
+    }
+    RT_PRIM_KINDS(RT_FLAT_ANY)
+#undef RT_FLAT_ANY
+    *last_blocker = PRIM_NONE;
+    return false;
+}
+
 /* The unbounded kinds (planes), every one of them: before the BVH, so
  * their nearest hit limits the traversal. Their kinds come last in the
  * table order, so a tie with a bounded primitive goes to that one. */
@@ -181,6 +228,8 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
+    if (sc->n_bvh_nodes <= 1)
+        return flat_nearest(sc, r, tmin, h, w);
     bool found = unbounded_nearest(sc, r, tmin, h, w);
     if (!enter_root(sc, &s, r, tmin, h->t))
         return found;
@@ -250,6 +299,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     real_t t = tmax;
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;
+    if (sc->n_bvh_nodes <= 1)
+        return flat_occluded(sc, r, tmin, tmax, last_blocker, w);
     if (unbounded_occluded(sc, r, tmin, tmax, last_blocker, w))
         return true;
     if (!enter_root(sc, s, r, tmin, tmax))
@@ -297,16 +348,5 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
-    bool found = false;
-#define RT_BRUTE_KIND(type, table, cap, KIND, name, use) \
-    for (uint32_t i = 0; i < sc->n_##table; i++) { \
-        if (hit_prim(sc, PRIM_REF(PRIM_##KIND, i), r, tmin, &h->t, w, h)) { \
-            h->kind = PRIM_##KIND; \
-            h->index = i; \
-            found = true; \
-        } \
-    }
-    RT_PRIM_KINDS(RT_BRUTE_KIND)
-#undef RT_BRUTE_KIND
-    return found;
+    return flat_nearest(sc, r, tmin, h, w);
 }

@@ -417,7 +417,7 @@ static void test_unit3(void)
 
 static void test_pow(void)
 {
-    static const double shines[] = { 1, 3.0827, 4.81884, 10, 100, 1000, 10000, 100000 };
+    static const double shines[] = { 1, 3.0827, 4.81884, 10, 100, 1000, 10000, 100000, 2, 4, 8, 16, 32, 64, 128 };
     for (unsigned k = 0; k < sizeof shines / sizeof shines[0]; k++) {
         fx_shine_t s = (fx_shine_t)llround(shines[k] * (1 << FX_SHINE_FRAC_BITS));
         double sd = (double)s / (1 << FX_SHINE_FRAC_BITS);
