@@ -17,8 +17,8 @@ bool ray_hit_plane(const plane_t *pl, const ray_t *r, real_t tmin, real_t *t)
     /* t = (offset - N.O) / (N.D), compared as products before the
      * division: a ray almost parallel to the plane meets it far beyond
      * the range, and its quotient would overflow */
-    real_t den = v3_dot(pl->normal, r->dir);
-    real_t num = pl->offset - v3_dot(pl->normal, r->origin);
+    real_t den = v3_dot_in_range(pl->normal, r->dir); /* unit vectors */
+    real_t num = pl->offset - v3_dot_in_range(pl->normal, r->origin); /* |origin| < 2^10 */
     if (den < 0) {
         den = -den;
         num = -num;

@@ -20,8 +20,10 @@ const char *sphere_init(sphere_t *s, vec3_t centre, real_t radius, uint16_t mate
  * test that misses. */
 static RT_HOT bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only)
 {
+    /* |l| < 2^10 (a centre inside the scene, an origin inside the far
+     * extent), so v and v d are inside the range: no saturation tests */
     vec3_t l = v3_sub(s->centre, r->origin);
-    real_t v = v3_dot(l, r->dir); /* distance to the point of closest approach */
+    real_t v = v3_dot_in_range(l, r->dir); /* distance to the point of closest approach */
     /* Early rejection (MIT 6.837): the whole sphere lies beyond the best hit
      * or behind the origin. */
     if (v - s->radius >= *t || v + s->radius <= tmin)
@@ -29,7 +31,7 @@ static RT_HOT bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin
     /* disc = r^2 - |l_perp|^2 from the perpendicular itself: its rounding
      * error scales with the radius, not with the distance (v^2 - |l|^2
      * would cancel catastrophically for a small, far sphere). */
-    vec3_t perp = v3_madd(l, -v, r->dir);
+    vec3_t perp = v3_madd_in_range(l, -v, r->dir);
     real_wide_t disc = s->radius2 - v3_wdot(perp, perp);
     if (disc < 0)
         return false;
@@ -48,7 +50,7 @@ vec3_t sphere_normal(const sphere_t *s, vec3_t p);
 
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
-static inline bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
+static RT_INLINE bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
                                    real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
     (void)sc, (void)w, (void)h;
