@@ -181,6 +181,8 @@ bench: deps
 	python3 bench/cores_bench.py
 	@echo
 	python3 bench/aa_bench.py
+	@echo
+	python3 bench/scenes_bench.py
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt

@@ -1,0 +1,163 @@
+#!/usr/bin/env python3
+"""The community's benchmark scenes on every board and backend, beside the
+published microcontroller figures.
+
+The scenes of scenes/bench (card: the Arduino/RX business-card ray tracer's
+scene, 3 levels; picolib: like the PicoLibSDK RP2040 demo, depth 6;
+whitted: Whitted's 1980 picture, depth 5) are rendered one sample per pixel
+by each board's firmware (one core) and each backend it offers, at SIZE
+(64x64 by default: QEMU's time; the figure per pixel is the frame's mean,
+and --size 320x240 checks it on one board), and this records
+  - instructions per pixel inside the render (QEMU -icount shift=0);
+  - estimated cycles per pixel: the run's instruction mix at 32x32 priced
+    by bench/cycles.py (the core's documented timings; no wait states),
+    as cycles per instruction times the instructions per pixel;
+  - the error against the exact double build at the same samples (the
+    number format's) and against the pixel-area image (rt --double
+    --spp 16: what a viewer sees; one sample per pixel aliases).
+It writes bench/scenes.md and bench/scenes.csv.
+
+  bench/scenes_bench.py [--boards a,b] [--scenes a,b] [--size WxH] [--no-cycles]
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import re
+import sys
+
+sys.dont_write_bytecode = True
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from boards_bench import ROOT, SINK_CALLBACKS, board_info, boards, code_ram, run  # noqa: E402
+
+OUT = os.path.join(ROOT, "build", "bench-scenes")
+SCENES = {"card": 3, "picolib": 6, "whitted": 5}  # scene: its ray-tree depth
+CYCLE_SIZE = "32x32"
+
+# Published times (the README of hirakuni45/RX, RAYTRACER_sample; the RX
+# times include drawing to the panel) and the PicoLibSDK demo's stated 15 s
+# on one RP2040 core at 125 MHz, as cycles per pixel at 320x240.
+PUBLISHED = [
+    ("Renesas RX72N", "single, fsqrt", "card", 240e6, 0.342),
+    ("Renesas RX65N", "single, fsqrt", "card", 120e6, 0.733),
+    ("Renesas RX64M", "single, fsqrt", "card", 120e6, 0.700),
+    ("Renesas RX62N", "single, no fsqrt", "card", 96e6, 1.875),
+    ("STM32F7 (second-hand)", "single", "card", 200e6, 0.620),
+    ("Renesas RX220", "none (soft float)", "card", 32e6, 291.0),
+    ("RP2040, PicoLibSDK", "none (soft float)", "picolib", 125e6, 15.0),
+]
+
+
+def scene_path(scene):
+    return os.path.join("scenes", "bench", scene + ".nff")
+
+
+def measure(board, backend, scene, size):
+    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size,
+            "DEPTH=%d" % SCENES[scene], "CORES=1"]
+    if run(["make", "-s", "-j2", "firmware"] + args, check=False).returncode:
+        return None
+    info = board_info(args)
+    png = os.path.join(OUT, "%s-%s-%s-%s.png" % (board, backend, scene, size))
+    r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
+    m = re.search(r"^instructions_per_pixel (\d+)$", r.stdout, re.M)
+    if r.returncode or not m:
+        return None
+    return {"ipp": int(m.group(1)), "png": png, "info": info}
+
+
+def reference(scene, size, fmt, spp):
+    ref = os.path.join(OUT, "ref-%s-%s-%s-spp%d.png" % (scene, size, fmt, spp))
+    if not os.path.exists(ref):
+        run(["build/host/rt", scene_path(scene), "-o", ref, "--double", "--size", size, "--depth",
+             str(SCENES[scene]), "--format", fmt, "--spp", str(spp), "--quiet"])
+    return ref
+
+
+def error(png, ref):
+    line = run(["build/host/rt", "compare", png, ref], check=False).stdout
+    m = re.search(r"psnr (\S+) dB\s+max-error (\d+)\s+over2 \S+\s+over8 (\S+)%", line)
+    return m.group(1), int(m.group(2)), m.group(3)
+
+
+def cpi(board, backend, scene):
+    m = measure(board, backend, scene, CYCLE_SIZE)
+    if not m:
+        return None
+    js = os.path.join(OUT, "cycles-%s-%s-%s.json" % (board, backend, scene))
+    elf = m["info"]["elf"]
+    syms = run([m["info"]["cross"] + "nm", elf]).stdout.split()
+    sink = [a for n in SINK_CALLBACKS if n in syms for a in ("--exclude-symbol", n)]
+    r = run([sys.executable, "bench/cycles.py", elf, "--machine", board, "--from-symbol", "rt_render", "--top", "0",
+             "--json", js] + sink, check=False)
+    if r.returncode or not os.path.exists(js):
+        return None
+    with open(js) as f:
+        d = json.load(f)
+    return d["cycles"]["typ"] / d["instructions"]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--boards", default="")
+    ap.add_argument("--scenes", default="")
+    ap.add_argument("--size", default="64x64")
+    ap.add_argument("--no-cycles", action="store_true")
+    a = ap.parse_args()
+    os.makedirs(OUT, exist_ok=True)
+    run(["make", "-s", "build/host/rt"])
+    rows = []
+    for b in (a.boards.split(",") if a.boards else boards()):
+        for be in board_info(["BOARD=" + b])["backends"].split():
+            for s in (a.scenes.split(",") if a.scenes else list(SCENES)):
+                m = measure(b, be, s, a.size)
+                if not m:
+                    print("%-12s %-7s %-8s failed" % (b, be, s), flush=True)
+                    rows.append({"board": b, "backend": be, "scene": s})
+                    continue
+                fmt = m["info"]["format"]
+                psnr, maxerr, _ = error(m["png"], reference(s, a.size, fmt, 1))
+                apsnr, _, aover8 = error(m["png"], reference(s, a.size, fmt, 16))
+                c = None if a.no_cycles else cpi(b, be, s)
+                code, ram = code_ram(m["info"]["cross"], m["info"]["elf"])
+                fpu = "hard" if be == "float" and "float-abi=hard" in m["info"]["fpu"] else "-"
+                row = {"board": b, "backend": be, "fpu": fpu, "scene": s,
+                       "depth": SCENES[s], "size": a.size, "ipp": m["ipp"],
+                       "cpi": "%.3f" % c if c else "", "cpp": round(m["ipp"] * c) if c else "",
+                       "psnr": psnr, "max_error": maxerr, "area_psnr": apsnr, "area_over8": aover8,
+                       "code": code, "ram": ram}
+                rows.append(row)
+                print("%-12s %-7s %-8s %7d instr/px %7s cycles/px  %6s dB exact  %6s dB area" % (
+                    b, be, s, m["ipp"], row["cpp"], psnr, apsnr), flush=True)
+    keys = ["board", "backend", "fpu", "scene", "depth", "size", "ipp", "cpi", "cpp", "psnr", "max_error",
+            "area_psnr", "area_over8", "code", "ram"]
+    with open(os.path.join(ROOT, "bench", "scenes.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in keys})
+    with open(os.path.join(ROOT, "bench", "scenes.md"), "w") as f:
+        f.write("# The benchmark scenes on every board (bench/scenes_bench.py)\n\n")
+        f.write("One sample per pixel, %s, one core; instructions per pixel inside the render\n"
+                "(QEMU -icount shift=0); cycles estimated from the instruction mix of a 32x32\n"
+                "render priced with the core's documented timings (bench/cycles.py: no flash\n"
+                "wait states); PSNR against the exact double build at the same samples and\n"
+                "against the pixel-area image (rt --double --spp 16).\n\n" % a.size)
+        f.write("Published figures, cycles per pixel at 320x240 (time x clock / 76,800):\n\n")
+        f.write("| chip | FPU | scene | clock | time | cycles/px |\n|---|---|---|---|---|---|\n")
+        for chip, fpu, s, hz, t in PUBLISHED:
+            f.write("| %s | %s | %s | %g MHz | %g s | %s |\n" % (chip, fpu, s, hz / 1e6, t,
+                                                                  format(round(t * hz / 76800), ",")))
+        f.write("\n| board | backend | FPU | scene | depth | instr/px | CPI | est. cycles/px | "
+                "PSNR exact (dB) | max error | PSNR pixel area (dB) | > 8/255 vs area | code (B) |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            f.write("| %s |\n" % " | ".join(str(r.get(k, "failed" if k == "ipp" else "")) for k in
+                                          ["board", "backend", "fpu", "scene", "depth", "ipp", "cpi", "cpp", "psnr",
+                                           "max_error", "area_psnr", "area_over8", "code"]))
+    print("wrote bench/scenes.md and bench/scenes.csv")
+
+
+if __name__ == "__main__":
+    main()
