@@ -146,22 +146,31 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
 #define FLAT_TEST(KIND, table, name, use, t, hit) \
     prim_ref_t ref = PRIM_REF(PRIM_##KIND, i); \
     bool self = ref == r->from; \
-    if (self && !r->from_far) \
-        continue; /* leaving its outside, or a plane */ \
-    w->stats.prim_tests[PRIM_##KIND]++; \
+    if (self && !r->from_far) { \
+        skipped++; /* leaving its outside, or a plane */ \
+        continue; \
+    } \
     if (name##_prim_hit(sc, &sc->table[i], r, tmin, t, self, w, hit))
+/* the tests of a kind's loop, counted once (64-bit counters) */
+#define FLAT_COUNT(KIND, table, use) \
+    if ((use) && sc->n_##table) \
+        w->stats.prim_tests[PRIM_##KIND] += sc->n_##table - skipped;
 
 RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
     bool found = false;
 #define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
-    for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
-        FLAT_TEST(KIND, table, name, use, &h->t, h) { \
-            h->kind = PRIM_##KIND; \
-            h->index = i; \
-            h->leaf = RT_PRIM_UNBOUNDED(PRIM_##KIND) ? RT_NO_LEAF : 0; \
-            found = true; \
+    { \
+        uint32_t skipped = 0; \
+        for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
+            FLAT_TEST(KIND, table, name, use, &h->t, h) { \
+                h->kind = PRIM_##KIND; \
+                h->index = i; \
+                h->leaf = RT_PRIM_UNBOUNDED(PRIM_##KIND) ? RT_NO_LEAF : 0; \
+                found = true; \
+            } \
         } \
+        FLAT_COUNT(KIND, table, use) \
     }
     RT_PRIM_KINDS(RT_FLAT_NEAREST)
 #undef RT_FLAT_NEAREST
@@ -172,12 +181,17 @@ RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *r, real_t 
                                     prim_ref_t *last_blocker, ray_scratch_t *w)
 {
 #define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
-    for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
-        real_t t = tmax; \
-        FLAT_TEST(KIND, table, name, use, &t, 0) { \
-            *last_blocker = ref; \
-            return true; \
+    { \
+        uint32_t skipped = 0; \
+        for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
+            real_t t = tmax; \
+            FLAT_TEST(KIND, table, name, use, &t, 0) { \
+                w->stats.prim_tests[PRIM_##KIND] += i + 1 - skipped; \
+                *last_blocker = ref; \
+                return true; \
+            } \
         } \
+        FLAT_COUNT(KIND, table, use) \
     }
     RT_PRIM_KINDS(RT_FLAT_ANY)
 #undef RT_FLAT_ANY
