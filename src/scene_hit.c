@@ -156,8 +156,9 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
     if ((use) && sc->n_##table) \
         w->stats.prim_tests[PRIM_##KIND] += sc->n_##table - skipped;
 
-RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w)
+RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
+    const ray_t copy = *ray, *r = &copy; /* a local: hit writes cannot alias it, so it stays in registers */
     bool found = false;
 #define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
     { \
@@ -177,9 +178,10 @@ RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *r, real_t t
     return found;
 }
 
-RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
+RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
                                     prim_ref_t *last_blocker, ray_scratch_t *w)
 {
+    const ray_t copy = *ray, *r = &copy; /* as in flat_nearest */
 #define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
