@@ -95,9 +95,11 @@ def error(scene, png, fmt, size):
 def cpi(board, backend, scene):
     """Cycles per instruction inside rt_render (sink excluded) of a CYCLE_SIZE render."""
     m = measure(board, backend, scene, CYCLE_SIZE)
-    if not m:
-        return None
-    js = os.path.join(OUT, "cycles-%s-%s-%s.json" % (board, backend, scene))
+    return cpi_of(m, board, os.path.join(OUT, "cycles-%s-%s-%s.json" % (board, backend, scene))) if m else None
+
+
+def cpi_of(m, board, js):
+    """Cycles per instruction of the render measure() ran (its ELF), the figures to js."""
     elf = m["info"]["elf"]
     # the display sink's callbacks are counted apart, as the firmware does
     syms = run([m["info"]["cross"] + "nm", elf]).stdout.split()

@@ -21,7 +21,6 @@ It writes bench/scenes.md and bench/scenes.csv.
 """
 import argparse
 import csv
-import json
 import math
 import os
 import re
@@ -29,7 +28,7 @@ import sys
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from boards_bench import ROOT, SINK_CALLBACKS, board_info, boards, code_ram, run  # noqa: E402
+from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, run  # noqa: E402
 
 OUT = os.path.join(ROOT, "build", "bench-scenes")
 SCENES = {"card": 3, "picolib": 6, "whitted": 5}  # scene: its ray-tree depth
@@ -83,19 +82,7 @@ def error(png, ref):
 
 def cpi(board, backend, scene):
     m = measure(board, backend, scene, CYCLE_SIZE)
-    if not m:
-        return None
-    js = os.path.join(OUT, "cycles-%s-%s-%s.json" % (board, backend, scene))
-    elf = m["info"]["elf"]
-    syms = run([m["info"]["cross"] + "nm", elf]).stdout.split()
-    sink = [a for n in SINK_CALLBACKS if n in syms for a in ("--exclude-symbol", n)]
-    r = run([sys.executable, "bench/cycles.py", elf, "--machine", board, "--from-symbol", "rt_render", "--top", "0",
-             "--json", js] + sink, check=False)
-    if r.returncode or not os.path.exists(js):
-        return None
-    with open(js) as f:
-        d = json.load(f)
-    return d["cycles"]["typ"] / d["instructions"]
+    return cpi_of(m, board, os.path.join(OUT, "cycles-%s-%s-%s.json" % (board, backend, scene))) if m else None
 
 
 def main():
@@ -149,7 +136,7 @@ def main():
         for chip, fpu, s, hz, t in PUBLISHED:
             f.write("| %s | %s | %s | %g MHz | %g s | %s |\n" % (chip, fpu, s, hz / 1e6, t,
                                                                   format(round(t * hz / 76800), ",")))
-        f.write("\n| board | backend | FPU | scene | depth | instr/px | CPI | est. cycles/px | "
+        f.write("\n| board | backend | float in hardware | scene | depth | instr/px | CPI | est. cycles/px | "
                 "PSNR exact (dB) | max error | PSNR pixel area (dB) | > 8/255 vs area | code (B) |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:

@@ -33,7 +33,8 @@ CAPS="-DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 -DRT_M
 SIZE=64x64
 SCENES="scenes/showpiece.nff scenes/csg.nff scenes/quadrics.nff scenes/torus.nff scenes/boxes.nff
         scenes/transforms.nff scenes/spd/balls-1.nff scenes/spd/gears-1.nff scenes/spd/rings-1.nff
-        scenes/spd/teapot-1.nff scenes/spd/tetra-2.nff"
+        scenes/spd/teapot-1.nff scenes/spd/tetra-2.nff scenes/textures.nff scenes/bench/card.nff
+        scenes/bench/picolib.nff scenes/bench/whitted.nff"
 
 rm -rf "$out"
 mkdir -p "$out"

@@ -22,6 +22,7 @@
 static const char *const scenes[] = {
     "balls-1", "gears-1", "rings-1", "teapot-1", "tetra-1",
     "balls-2", "rings-2", "teapot-2", "tetra-2",
+    "../textures", /* a plane beside the tree, and textured materials */
 };
 
 static char *slurp(const char *path, size_t *len)
