@@ -59,8 +59,11 @@ import cycles  # noqa: E402
 # group, what it holds, name patterns (first match over the list wins)
 GROUPS = [
     ("traversal", "BVH traversal, box tests, the dispatch to primitives",
-     ["scene_nearest*", "scene_occluded", "slab_*", "enter_root", "hit_prim", "bvh_*"]),
-    ("sphere", "ray-sphere intersection", ["ray_hit_sphere"]),
+     ["scene_nearest*", "scene_occluded", "slab_*", "enter_root", "hit_prim", "bvh_*", "unbounded_*"]),
+    ("flat", "a one-leaf scene searched kind by kind, the primitives' tests inline in it",
+     ["flat_nearest", "flat_occluded"]),
+    ("sphere", "ray-sphere intersection", ["ray_hit_sphere", "sphere_prim_hit"]),
+    ("plane", "ray-plane intersection", ["ray_hit_plane"]),
     ("polygon", "ray-polygon and patch intersection, inside tests",
      ["ray_hit_polygon", "even_odd_axis", "inside_*", "edge_fn", "edge_side", "fan_triangle", "project_axis",
       "vertex_before", "is_zero"]),
@@ -73,6 +76,8 @@ GROUPS = [
      ["ray_hit_object", "solid_spans", "csg_*", "object_ray", "box_*", "quadric_*", "torus_*", "safe_div",
       "polish", "bnd", "to_world", "shape_*", "spans_*", "xform_*", "row_dot", "mat_mul", "mat_vec", "first_root",
       "corner_radius"]),
+    ("texture", "textures and the sky", ["texture_colour", "sky_colour", "checker", "marble", "noise",
+                                         "lattice_hash", "gradient_dot", "fade", "lerp", "background"]),
     ("maths", "fixed-point and real operations, vectors, libgcc and soft-float helpers, libm",
      ["fx_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
       "sin_q30", "v3_*", "r_*", "two_*", "split12", "from_bits", "to_bits", "__*", ".udivsi3*",

@@ -177,6 +177,15 @@
 #ifndef RT_USE_PLANES
 #define RT_USE_PLANES 1
 #endif
+/* How a scene is searched: a BVH, or (a tree of one leaf, a few
+ * primitives) every primitive kind by kind. The scene compiler leaves
+ * the other out of a board's firmware. */
+#ifndef RT_USE_BVH
+#define RT_USE_BVH 1
+#endif
+#ifndef RT_USE_FLAT
+#define RT_USE_FLAT 1
+#endif
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1
 #endif
@@ -293,6 +302,9 @@
 #define RT_HOT RT_NOINLINE
 #endif
 
+#if !(RT_USE_BVH || RT_USE_FLAT)
+#error "RT_USE_BVH and RT_USE_FLAT: at least one way to search a scene"
+#endif
 #if !(RT_MAX_WORKERS >= 1 && RT_MAX_WORKERS <= 255)
 #error "RT_MAX_WORKERS out of 1..255"
 #endif

@@ -62,6 +62,7 @@
 #define ray_hit_object           rt_ray_hit_object
 #define ray_hit_plane            rt_ray_hit_plane
 #define ray_hit_polygon          rt_ray_hit_polygon
+#define ray_hit_sphere           rt_ray_hit_sphere
 #define rd_blocks_closed         rt_rd_blocks_closed
 #define rd_box                   rt_rd_box
 #define rd_checker               rt_rd_checker

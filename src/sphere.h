@@ -16,9 +16,12 @@ const char *sphere_init(sphere_t *s, vec3_t centre, real_t radius, uint16_t mate
 
 /* *t holds the nearest hit so far; a hit in (tmin, *t) replaces it and
  * returns true. far_only: the ray starts on this surface going in.
- * Inline where the hot loops run (RT_HOT): the call cost a quarter of a
- * test that misses. */
-static RT_HOT bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only)
+ * ray_hit_sphere is the one out-of-line copy (sphere.c); the search of a
+ * one-leaf scene takes the body inline, where a call cost a quarter of a
+ * test that misses (scene_hit.c). */
+bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only);
+
+static RT_INLINE bool sphere_hit_inline(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, bool far_only)
 {
     /* |l| < 2^10 (a centre inside the scene, an origin inside the far
      * extent), so v and v d are inside the range: no saturation tests */
@@ -50,11 +53,19 @@ vec3_t sphere_normal(const sphere_t *s, vec3_t p);
 
 /* ---- the primitive-kind interface (prim_kinds.h) ---------------------- */
 
-static RT_INLINE bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
+static inline bool sphere_prim_hit(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
                                    real_t *t, bool self, struct ray_scratch *w, hit_t *h)
 {
     (void)sc, (void)w, (void)h;
     return ray_hit_sphere(s, r, tmin, t, self);
+}
+
+/* The same with the test inline. */
+static RT_INLINE bool sphere_prim_hit_inline(const scene_t *sc, const sphere_t *s, const ray_t *r, real_t tmin,
+                                             real_t *t, bool self, struct ray_scratch *w, hit_t *h)
+{
+    (void)sc, (void)w, (void)h;
+    return sphere_hit_inline(s, r, tmin, t, self);
 }
 
 /* Box [lo - pad, hi + pad] around it; returns pad. */

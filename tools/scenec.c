@@ -258,6 +258,8 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
         RT_PRIM_KINDS(USE_OF_KIND)
         { "patches", patches },
         { "concave", concave },
+        { "bvh", sc->n_bvh_nodes > 1 },   /* scene_hit.c: a tree, or one leaf searched flat */
+        { "flat", sc->n_bvh_nodes <= 1 },
         { "checker", checker },
         { "marble", marble },
         { "sky", sc->sky.on != 0 },
