@@ -2,6 +2,7 @@
 #include "rt_render.h"
 
 #include "camera.h"
+#include "scene_hit.h"
 #include "trace.h"
 
 /* RT_FB_ONLY_FORMAT (a build flag, e.g. the board's): the one format the
@@ -444,6 +445,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, why);
         return -1;
     }
+    scene_eye_setup(sc, wk->cam.eye, &wk->scratch);
     /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
     if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
         camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);

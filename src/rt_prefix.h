@@ -92,6 +92,7 @@
 #define rd_union_block           rt_rd_union_block
 #define scene_nearest            rt_scene_nearest
 #define scene_nearest_brute      rt_scene_nearest_brute
+#define scene_eye_setup          rt_scene_eye_setup
 #define scene_occluded           rt_scene_occluded
 #define shape_init_box           rt_shape_init_box
 #define shape_init_quadric       rt_shape_init_quadric

@@ -154,6 +154,52 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
 /* a kind's test: the sphere's inline (a call cost a quarter of a test
  * that misses), the others through their interface */
 #define FLAT_HIT(name, e) _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: name##_prim_hit)
+
+#if RT_USE_FLAT
+void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
+{
+    w->eye_ray = false;
+    w->n_eye_spheres = 0;
+    if (RT_USE_BVH && sc->n_bvh_nodes > 1)
+        return;
+    uint32_t n = sc->n_spheres < RT_FLAT_EYE_SPHERES ? sc->n_spheres : RT_FLAT_EYE_SPHERES;
+    for (uint32_t i = 0; i < n; i++) {
+        const sphere_t *s = &sc->spheres[i];
+        eye_sphere_t *e = &w->eye_spheres[i];
+        e->l = v3_sub(s->centre, eye);
+        real_wide_t l2 = v3_wdot(e->l, e->l);
+        real_t len = r_wsqrt(l2);
+        /* the margin: an eye ray's line passes within 2^-9 of the eye (its
+         * direction and origin are rounded), and v = l . d within |l| 2^-19
+         * of the exact; (|l| + r) 2^-6 + |l|^2 2^-16 + 2^-12 covers both */
+        real_wide_t margin = r_wmul(len + s->radius, R_RATIO(1, 64)) + r_wmul(len, r_mul(len, R_RATIO(1, 65536))) +
+                             r_to_wide(R_RATIO(1, 4096));
+        e->miss2 = l2 - s->radius2 - margin; /* < 0 (never rejects) when the eye is near or inside */
+    }
+    w->n_eye_spheres = n;
+}
+
+/* Whether an eye ray's line through the eye misses sphere i. */
+static RT_INLINE bool sphere_eye_miss(const sphere_t *s, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+{
+    if (!w->eye_ray || i >= w->n_eye_spheres)
+        return false;
+    const eye_sphere_t *e = &w->eye_spheres[i];
+    real_t v = v3_dot_in_range(e->l, r->dir); /* |l| < 2^10 */
+    return v + s->radius <= 0 || r_wmul(v, v) < e->miss2;
+}
+static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)w;
+    return false;
+}
+#define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
+#else
+void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
+{
+    (void)sc, (void)eye, (void)w;
+}
+#endif
 /* the tests of a kind's loop, counted once (64-bit counters) */
 #define FLAT_COUNT(KIND, table, use) \
     if ((use) && sc->n_##table) \
@@ -167,6 +213,8 @@ RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
+            if (FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], r, i, w)) \
+                continue; /* counted as tested */ \
             FLAT_TEST(KIND, table, name, use, &h->t, h) { \
                 h->kind = PRIM_##KIND; \
                 h->index = i; \

@@ -20,6 +20,10 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
                     ray_scratch_t *w);
 
+/* Per frame, for the eye at `eye`: what lets eye rays reject the spheres
+ * of a flat scene early (scratch.h, eye_sphere_t); nothing otherwise. */
+void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w);
+
 /* scene_nearest without the BVH: every primitive, in table order (the
  * reference the traversal is tested against). */
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w);

@@ -32,11 +32,26 @@ typedef struct {
     real_slab_t entry;
 } bvh_stack_t;
 
+/* Every eye ray lies on a line through the eye: per sphere of a flat
+ * scene (scene_hit.c), its centre from the eye and the least squared
+ * length of that line's closest approach to the centre that still
+ * misses the sphere (|l|^2 - r^2, less a margin for rounding), so an eye
+ * ray rejects it with one dot product. */
+typedef struct {
+    vec3_t l;
+    real_wide_t miss2;
+} eye_sphere_t;
+
 typedef struct ray_scratch {
     rt_stats_t stats;                          /* added to the caller's after each step */
     bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH]; /* scene_nearest */
     uint32_t any_stack[RT_BVH_MAX_DEPTH];      /* scene_occluded */
     slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
+#if RT_USE_FLAT
+    bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
+    uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
+    eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
+#endif
 #if RT_USE_OBJECTS
     spans_t csg_spans[RT_CSG_MAX_DEPTH + 1][2]; /* both children, per CSG level */
     spans_t object_spans;                      /* an object's whole span list */

@@ -217,7 +217,14 @@ static colour_t background(const scene_t *sc, const ray_t *ray)
 colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
 {
     surface_t s;
-    if (!find_surface(tr, ray, &s))
+#if RT_USE_FLAT
+    tr->scratch->eye_ray = depth == 1; /* it passes the eye (scene_eye_setup) */
+    bool found = find_surface(tr, ray, &s);
+    tr->scratch->eye_ray = false;
+#else
+    bool found = find_surface(tr, ray, &s);
+#endif
+    if (!found)
         return background(tr->scene, ray);
     if (depth == 1)
         tr->scratch->stats.eye_hits++;
