@@ -85,7 +85,7 @@ GROUPS = [
       "scalbn", "scalbnf", "copysign*"]),
     ("libc", "memcpy, memset (structure copies GCC emits)", ["memcpy", "memset", "memmove", "memcmp"]),
     ("output", "frame set-up and pixel loop, camera rays, pixel packing, band hand-over",
-     ["render*", "camera_*", "wait_flushed", "corner_row", "spd_line", "plain_line", "put_pixel", "flush_band", "add_stats", "stats_add",
+     ["render*", "camera_*", "scene_eye_setup", "wait_flushed", "corner_row", "spd_line", "plain_line", "put_pixel", "flush_band", "add_stats", "stats_add",
       "fb_*",
       # the sink's end of frame: rt_render tail-calls it, so it is no call
       # counted apart (cycles.py warns), and the firmware's count has it too
