@@ -29,9 +29,13 @@ sizes() { # set name, entry points, flags
 printf '%-34s %8s %12s\n' "feature set (Cortex-M3, -Os)" "code" "static RAM"
 # without anti-aliasing and dithering, then with them (the defaults)
 NO_AA="-DRT_USE_AA=0 -DRT_USE_DITHER=0"
-sizes spd-features rt_render -DRT_USE_OBJECTS=0 $NO_AA
-sizes all-solids rt_render $NO_AA
-sizes spd-features-no-refraction rt_render -DRT_USE_OBJECTS=0 -DRT_USE_REFRACTION=0 -DRT_USE_PATCHES=0 -DRT_USE_CONES=0 $NO_AA
-sizes all-solids+nff-reader "rt_render rt_nff_load" $NO_AA
-sizes spd-features+aa+dither rt_render -DRT_USE_OBJECTS=0
-sizes all-solids+aa+dither rt_render
+# planes, textures and the sky: left out of the sets but the last
+NO_SURF="-DRT_USE_PLANES=0 -DRT_USE_CHECKER=0 -DRT_USE_MARBLE=0 -DRT_USE_SKY=0"
+sizes spd-features rt_render -DRT_USE_OBJECTS=0 $NO_AA $NO_SURF
+sizes spd-features-bvh-only rt_render -DRT_USE_OBJECTS=0 -DRT_USE_FLAT=0 $NO_AA $NO_SURF
+sizes all-solids rt_render $NO_AA $NO_SURF
+sizes spd-features-no-refraction rt_render -DRT_USE_OBJECTS=0 -DRT_USE_REFRACTION=0 -DRT_USE_PATCHES=0 -DRT_USE_CONES=0 $NO_AA $NO_SURF
+sizes all-solids+nff-reader "rt_render rt_nff_load" $NO_AA $NO_SURF
+sizes spd-features+aa+dither rt_render -DRT_USE_OBJECTS=0 $NO_SURF
+sizes all-solids+aa+dither rt_render $NO_SURF
+sizes spd-features+planes+textures+sky rt_render -DRT_USE_OBJECTS=0 $NO_AA

@@ -155,6 +155,12 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
  * that misses), the others through their interface */
 #define FLAT_HIT(name, e) _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: name##_prim_hit)
 
+static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)w;
+    return false;
+}
+
 #if RT_USE_FLAT
 void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
 {
@@ -188,17 +194,13 @@ static RT_INLINE bool sphere_eye_miss(const sphere_t *s, const ray_t *r, uint32_
     real_t v = v3_dot_in_range(e->l, r->dir); /* |l| < 2^10 */
     return v + s->radius <= 0 || r_wmul(v, v) < e->miss2;
 }
-static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
-{
-    (void)p, (void)r, (void)i, (void)w;
-    return false;
-}
 #define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
 #else
 void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
 {
     (void)sc, (void)eye, (void)w;
 }
+#define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
 #endif
 /* the tests of a kind's loop, counted once (64-bit counters) */
 #define FLAT_COUNT(KIND, table, use) \
