@@ -168,8 +168,8 @@ void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
     w->n_eye_spheres = 0;
     if (RT_USE_BVH && sc->n_bvh_nodes > 1)
         return;
-    uint32_t n = sc->n_spheres < RT_FLAT_EYE_SPHERES ? sc->n_spheres : RT_FLAT_EYE_SPHERES;
-    for (uint32_t i = 0; i < n; i++) {
+    uint32_t i = 0;
+    for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++) {
         const sphere_t *s = &sc->spheres[i];
         eye_sphere_t *e = &w->eye_spheres[i];
         e->l = v3_sub(s->centre, eye);
@@ -182,7 +182,7 @@ void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
                              r_to_wide(R_RATIO(1, 4096));
         e->miss2 = l2 - s->radius2 - margin; /* < 0 (never rejects) when the eye is near or inside */
     }
-    w->n_eye_spheres = n;
+    w->n_eye_spheres = i;
 }
 
 /* Whether an eye ray's line through the eye misses sphere i. */

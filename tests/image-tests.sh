@@ -1,7 +1,8 @@
 #!/bin/sh
-# Image tests: every SPD size-1 and size-2 scene and every demo scene of
-# scenes/ at 128x128, depth 5. The reference is the exact double build
-# (its tolerances come from double precision, src/tolerance.h); the fixed
+# Image tests: every SPD size-1 and size-2 scene, every demo scene of
+# scenes/ and the benchmark scenes of scenes/bench at 128x128, depth 5.
+# The reference is the exact double build (its tolerances come from
+# double precision, src/tolerance.h); the fixed
 # and the float builds must each reach PSNR >= 50 dB against it with at
 # most 0.25% of pixels off by more than 8/255. The double build with the
 # fixed build's tolerances (--double-ftol) is printed beside them: it
@@ -17,7 +18,7 @@ mkdir -p "$OUT"
 echo "image tests: fixed and float vs the exact double build at $SIZE (PSNR >= $PSNR_MIN dB, <= $OVER8_MAX% of pixels off by > 8/255)"
 for f in scenes/spd/balls-1.nff scenes/spd/gears-1.nff scenes/spd/rings-1.nff scenes/spd/teapot-1.nff \
          scenes/spd/tetra-1.nff scenes/spd/balls-2.nff scenes/spd/rings-2.nff scenes/spd/teapot-2.nff \
-         scenes/spd/tetra-2.nff scenes/*.nff; do
+         scenes/spd/tetra-2.nff scenes/*.nff scenes/bench/*.nff; do
     s=$(basename "$f" .nff)
     ok=1
     for b in double fixed float double-ftol; do
