@@ -262,6 +262,21 @@ static void test_pow_float(void)
         exact_wrong += be->pow_unit(-0.5, exps[e]) != 0;
     }
     CHECK(exact_wrong == 0, "float x^s: x^1 = x, x^0 = 1, 1^s = 1, and 0 for x <= 0 (%ld wrong)", exact_wrong);
+
+    /* s = 2^k, k = 2..6: k squarings, within 2^k 2^-24 relative */
+    double worst_k = 0;
+    int bad_k = 0;
+    for (int k = 2; k <= 6; k++) {
+        double s = (double)(1 << k), w = 0;
+        for (uint32_t u = 0x33800000u; u < 0x3F800000u; u += 1021) {
+            double x = float_of_bits(u), want = pow(x, s), got = be->pow_unit(x, s);
+            if (want >= 0x1p-126 && fabs(got - want) / want > w)
+                w = fabs(got - want) / want;
+        }
+        bad_k += w > s * 0x1p-24;
+        worst_k = w / (s * 0x1p-24) > worst_k ? w / (s * 0x1p-24) : worst_k;
+    }
+    CHECK(bad_k == 0, "float x^(2^k), k = 2..6, by squarings: worst relative error %.2f of 2^k 2^-24", worst_k);
 }
 
 int main(void)
