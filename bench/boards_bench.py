@@ -66,15 +66,17 @@ def code_ram(cross, elf):
     return code, sec.get(".data", 0) + sec.get(".bss", 0)
 
 
-def measure(board, backend, scene, size):
+def measure(board, backend, scene, size, path=None, depth=5, out=OUT):
+    """Build and run the firmware for scene (at path, default the SPD or demo
+    scene of that name): its instructions per pixel, image (in out), facts."""
     # one core on every board (a two-core board's split: bench/cores_bench.py)
-    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size, "DEPTH=5",
-            "CORES=1"]
+    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size,
+            "DEPTH=%d" % depth, "CORES=1"]
     r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
     if r.returncode:
         return None
     info = board_info(args)
-    png = os.path.join(OUT, "%s-%s-%s-%s.png" % (board, backend, scene, size))
+    png = os.path.join(out, "%s-%s-%s-%s.png" % (board, backend, scene, size))
     r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
     m = re.search(r"^instructions_per_pixel (\d+)$", r.stdout, re.M)
     if r.returncode or not m:
@@ -111,6 +113,15 @@ def cpi_of(m, board, js):
     with open(js) as f:
         d = json.load(f)
     return d["cycles"]["typ"] / d["instructions"]
+
+
+def write_csv(path, keys, rows):
+    """rows (dicts) to a CSV file with these columns, missing ones empty."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=keys)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in keys})
 
 
 def main():
@@ -177,11 +188,7 @@ def main():
             r["code_before"] = b.get("code", "")
     keys = ["board", "backend", "scene", "ipp", "ipp_before", "speedup", "cpi", "cpp", "psnr", "psnr_before",
             "max_error", "code", "code_before", "ram"]
-    with open(os.path.join(ROOT, "bench", "boards.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=keys)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: r.get(k, "") for k in keys})
+    write_csv(os.path.join(ROOT, "bench", "boards.csv"), keys, rows)
     with open(os.path.join(ROOT, "bench", "boards.md"), "w") as f:
         f.write("# Boards and backends (bench/boards_bench.py)\n\n")
         f.write("64x64, depth 5; instructions per pixel inside the render (QEMU -icount shift=0);\n"

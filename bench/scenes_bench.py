@@ -20,7 +20,6 @@ It writes bench/scenes.md and bench/scenes.csv.
   bench/scenes_bench.py [--boards a,b] [--scenes a,b] [--size WxH] [--no-cycles]
 """
 import argparse
-import csv
 import math
 import os
 import re
@@ -28,7 +27,8 @@ import sys
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, run  # noqa: E402
+from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, run, write_csv  # noqa: E402
+from boards_bench import measure as boards_measure  # noqa: E402
 
 OUT = os.path.join(ROOT, "build", "bench-scenes")
 SCENES = {"card": 3, "picolib": 6, "whitted": 5}  # scene: its ray-tree depth
@@ -56,17 +56,7 @@ def scene_path(scene):
 
 
 def measure(board, backend, scene, size):
-    args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scene_path(scene), "SIZE=" + size,
-            "DEPTH=%d" % SCENES[scene], "CORES=1"]
-    if run(["make", "-s", "-j2", "firmware"] + args, check=False).returncode:
-        return None
-    info = board_info(args)
-    png = os.path.join(OUT, "%s-%s-%s-%s.png" % (board, backend, scene, size))
-    r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
-    m = re.search(r"^instructions_per_pixel (\d+)$", r.stdout, re.M)
-    if r.returncode or not m:
-        return None
-    return {"ipp": int(m.group(1)), "png": png, "info": info}
+    return boards_measure(board, backend, scene, size, path=scene_path(scene), depth=SCENES[scene], out=OUT)
 
 
 def reference(scene, size, fmt, spp):
@@ -123,11 +113,7 @@ def main():
                     b, be, s, m["ipp"], row["cpp"], psnr, apsnr), flush=True)
     keys = ["board", "backend", "fpu", "scene", "depth", "size", "ipp", "cpi", "cpp", "psnr", "max_error",
             "area_psnr", "area_over8", "code", "ram"]
-    with open(os.path.join(ROOT, "bench", "scenes.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=keys)
-        w.writeheader()
-        for r in rows:
-            w.writerow({k: r.get(k, "") for k in keys})
+    write_csv(os.path.join(ROOT, "bench", "scenes.csv"), keys, rows)
     with open(os.path.join(ROOT, "bench", "scenes.md"), "w") as f:
         f.write("# The benchmark scenes on every board (bench/scenes_bench.py)\n\n")
         f.write("One sample per pixel, %s, one core; instructions per pixel inside the render\n"

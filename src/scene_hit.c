@@ -155,6 +155,13 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
  * that misses), the others through their interface */
 #define FLAT_HIT(name, e) _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: name##_prim_hit)
 
+/* Whether the scene is searched flat: one leaf (or none), where the
+ * build has the flat search; always, where it has no BVH traversal. */
+static RT_INLINE bool searched_flat(const scene_t *sc)
+{
+    return RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1);
+}
+
 static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
 {
     (void)p, (void)r, (void)i, (void)w;
@@ -166,7 +173,7 @@ void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
 {
     w->eye_ray = false;
     w->n_eye_spheres = 0;
-    if (RT_USE_BVH && sc->n_bvh_nodes > 1)
+    if (!searched_flat(sc))
         return;
     uint32_t i = 0;
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++) {
@@ -297,7 +304,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    if (RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1))
+    if (searched_flat(sc))
         return flat_nearest(sc, r, tmin, h, w);
     bool found = unbounded_nearest(sc, r, tmin, h, w);
     if (!enter_root(sc, &s, r, tmin, h->t))
@@ -368,7 +375,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     real_t t = tmax;
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;
-    if (RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1))
+    if (searched_flat(sc))
         return flat_occluded(sc, r, tmin, tmax, last_blocker, w);
     if (unbounded_occluded(sc, r, tmin, tmax, last_blocker, w))
         return true;
