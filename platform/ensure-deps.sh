@@ -6,7 +6,12 @@
 #          BOARD_PACKAGES: cross compiler, QEMU); none named: mps2-an385's
 #   all    (default) every board's packages and the tests' and
 #          benchmarks' tools
+# A board whose emulator is an npm package (platform/pico: rp2040js, run
+# by Node.js) pins it in its folder's package.json and package-lock.json;
+# `npm ci` installs it into that folder's node_modules/ (ignored by git),
+# for `all` and whenever nodejs is among the packages named.
 set -e
+cd "$(dirname "$0")/.."
 mode=${1:-all}
 case $mode in
 board | all) ;;
@@ -16,7 +21,7 @@ esac
 boards="$*"
 [ -n "$boards" ] || boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
 # every board's (platform/*/board.mk, BOARD_PACKAGES)
-[ "$mode" = all ] && boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat"
+[ "$mode" = all ] && boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat nodejs"
 need=""
 command -v cc >/dev/null 2>&1 || need="$need gcc"
 command -v make >/dev/null 2>&1 || need="$need make"
@@ -24,7 +29,16 @@ command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || need="$need zlib1g-dev"
 [ -f /usr/include/png.h ] || need="$need libpng-dev"
 # the boards: cross compilers, newlib (libm for the soft-float comparison), QEMU
+npm_boards=""
 for p in $boards; do
+    if [ "$p" = nodejs ]; then
+        # any Node.js 18 or later with its npm will do (Debian's packages
+        # are nodejs and npm; NodeSource's nodejs brings npm itself)
+        npm_boards=$(ls platform/*/package-lock.json 2>/dev/null | xargs -r -n1 dirname)
+        command -v node >/dev/null 2>&1 || need="$need nodejs"
+        command -v npm >/dev/null 2>&1 || need="$need npm"
+        continue
+    fi
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'ok installed' || need="$need $p"
 done
 if [ "$mode" = all ]; then
@@ -54,3 +68,10 @@ if [ -n "$need" ]; then
     $SUDO apt-get $LOCK update -qq
     DEBIAN_FRONTEND=noninteractive $SUDO apt-get $LOCK install -y -qq $need >/dev/null
 fi
+# the npm packages of those boards, as their lock files pin them
+for d in $npm_boards; do
+    if ! (cd "$d" && npm ls --depth=0 >/dev/null 2>&1); then
+        echo "installing ($mode): npm ci in $d"
+        (cd "$d" && npm ci --no-audit --no-fund --loglevel=error >/dev/null)
+    fi
+done

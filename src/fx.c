@@ -303,7 +303,7 @@ fx_t fx_recip(fx_t b)
  * r / vh 2^15 / v < 1); the remainder is then in [-v, v), an int32. */
 static RT_INLINE uint32_t div_digit15(uint32_t *r, uint32_t x, uint32_t v)
 {
-    uint32_t q = *r / (v >> 15);
+    uint32_t q = RT_UDIV32(*r, v >> 15);
     int32_t t = (int32_t)((*r << 15 | x) - q * v);
     uint32_t over = 0u - ((uint32_t)t >> 31); /* all ones when one over */
     *r = (uint32_t)t + (v & over);
@@ -326,7 +326,7 @@ static inline uint32_t shl_hi(uint32_t hi, uint32_t lo, int s) { return hi << s 
  * 2^30 < (r + 1) 2^s, below the normalised divisor). */
 static RT_INLINE uint64_t div_62_31(uint32_t nt, uint32_t x, uint32_t d)
 {
-    uint32_t qh = nt / d, r = nt - qh * d;
+    uint32_t qh = RT_UDIV32(nt, d), r = nt - qh * d;
     int s = fx_clz32(d) - 1;
     return (uint64_t)qh << 30 | div_tail30(r << s | x >> (30 - s), (x << s) & MASK30, d << s);
 }
@@ -363,7 +363,7 @@ fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
             v = shl_hi(dhi, (uint32_t)d, s) >> 1;
             sh = 32 - s;
         }
-        uint32_t qh = nt / v; /* below 4 */
+        uint32_t qh = RT_UDIV32(nt, v); /* below 4 */
         q = (uint32_t)((uint64_t)(qh << 30 | div_tail30(nt - qh * v, (uint32_t)n >> 1 & MASK30, v)) >> sh);
         for (int64_t rem = (int64_t)(n - fx_umul64x(q, d)); rem < 0; rem += (int64_t)d)
             q--;

@@ -61,6 +61,19 @@
  * headers, which do not see the core's types. */
 #define RT_REAL_BYTES (RT_BACKEND_DOUBLE ? 8 : 4)
 
+/* A port's 32-bit unsigned division, for cores without a divide
+ * instruction, where C's `/` is a libgcc call (ARMv6-M: __aeabi_uidiv,
+ * 40 to 130 cycles). RT_UDIV32(n, d) gives n / d for d != 0, truncated;
+ * RT_UDIV32_HEADER names the header that declares it (the Pico's board.mk
+ * sets both to its SIO divider, platform/pico/sio_div.h). The fixed
+ * layer's 64-bit quotients (fx.c) divide with it. */
+#ifdef RT_UDIV32_HEADER
+#include RT_UDIV32_HEADER
+#endif
+#ifndef RT_UDIV32
+#define RT_UDIV32(n, d) ((n) / (d))
+#endif
+
 /* Faster, less exact square roots, reciprocals and powers (fx.c). */
 #ifndef FX_FAST_MATH
 #define FX_FAST_MATH 0

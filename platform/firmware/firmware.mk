@@ -12,7 +12,9 @@
 #   BOARD_CROSS     the cross toolchain's prefix (arm-none-eabi-)
 #   BOARD_CPU       compiler flags for the core (-mcpu=cortex-m3 -mthumb)
 #   BOARD_FPU       flags of a hard-float build (empty: no FPU)
-#   BOARD_QEMU      QEMU and its machine (qemu-system-arm -M mps2-an385)
+#   BOARD_QEMU      QEMU and its machine (qemu-system-arm -M mps2-an385);
+#                   a board run by another emulator names it here and
+#                   brings its own BOARD_RUN
 #   BOARD_ICOUNT    its -icount option, if not shift=0 (a board with two
 #                   cores: shift=0,sleep=off, which makes the run repeatable);
 #                   make board-run QEMU_ACCEL="-accel tcg,thread=multi" runs
@@ -21,12 +23,14 @@
 #   BOARD_CLOCK_HZ  the core's clock, for the time make run prints
 #   BOARD_BACKENDS  what BACKEND may be (fixed, float, double)
 #   BOARD_SRC       its C files: port_init, port_write, port_icount_*
+#                   (and port_cycles_read, with BOARD_CYCLES := 1)
 #   BOARD_LD        its linker script (MEMORY, then INCLUDE sections.ld)
 # and may set BOARD_SINK (a display sink's C file instead of the UART
 # stream, sink.h) with BOARD_SINK_CALLBACKS (its begin, flush and end
 # functions, for make size's stack bound), BOARD_RUN (a run script instead
 # of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
-# insists on).
+# insists on), BOARD_TAG (a suffix of the build folder for the board's own
+# build choices), BOARD_CYCLES := 1 (the port counts cycles).
 #
 # Each (scene, size, depth, format) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
@@ -40,12 +44,14 @@ $(error BOARD=$(BOARD) is not a board of platform/*/board.mk: $(BOARDS))
 endif
 BOARD_FPU  :=
 BOARD_CORES := 1
+BOARD_CYCLES := 0
 BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
 BOARD_RUN_AA := 3
 BOARD_RUN_DITHER := 0
+BOARD_TAG :=
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
 $(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
@@ -107,14 +113,14 @@ AA_TAG := $(if $(filter-out 0,$(AA_LEVELS)),-aa$(AA_LEVELS)$(if $(filter-out 0,$
 # (the default) links none of it (RT_USE_DITHER=0).
 DITHER ?= 0
 DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))$(BOARD_TAG)
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),
@@ -135,7 +141,7 @@ FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
 
 # The firmware's files: the core, the board-independent firmware, the
 # architecture's reset and exit, the board's own, the display sink.
-FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c \
+FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c platform/firmware/sink_io.c \
               $(if $(filter-out 1,$(CORES)),platform/firmware/bands.c) \
               platform/firmware/libc_min.c $(BOARD_SINK) $(wildcard platform/arch/$(BOARD_ARCH)/*.c) \
               $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)

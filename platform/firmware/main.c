@@ -24,6 +24,9 @@
 #ifndef BOARD_FORMAT
 #define BOARD_FORMAT RT_FB_RGB888
 #endif
+#ifndef BOARD_CYCLES /* the port counts cycles too (port_cycles_read) */
+#define BOARD_CYCLES 0
+#endif
 /* (a BOARD_FORMAT that is not an ID of RT_FB_FORMATS, rt_fb.h, fails to compile here) */
 #ifndef BOARD_ADAPTIVE_MILLI /* adaptive depth threshold in 1/1000; 0 = off */
 #define BOARD_ADAPTIVE_MILLI 0
@@ -90,9 +93,15 @@ int main(void)
 #if BOARD_DITHER
     sink.dither = true;
 #endif
+#if BOARD_CYCLES
+    uint64_t c0 = port_cycles_read();
+#endif
     uint64_t t0 = port_icount_read();
     int rc = rt_render(sc, &opts, &sink, &st, &err);
     uint64_t instr = port_icount_read() - t0 - sink_io_instructions();
+#if BOARD_CYCLES
+    uint64_t cycles = port_cycles_read() - c0 - sink_io_cycles();
+#endif
 #else
     sink_init(&sink, BOARD_FORMAT, 0, 0);
 #if BOARD_DITHER
@@ -113,6 +122,10 @@ int main(void)
     report_value("pixels", pixels);
     report_value("render_instructions", instr);
     report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
+#if BOARD_CYCLES && BOARD_CORES == 1
+    report_value("render_cycles", cycles);
+    report_value("cycles_per_pixel", (cycles + pixels / 2) / pixels);
+#endif
 #if BOARD_CORES > 1
     static const char *const keys[][3] = { { "core0_render_instructions", "core0_wait_instructions", "core0_bands" },
                                            { "core1_render_instructions", "core1_wait_instructions", "core1_bands" } };

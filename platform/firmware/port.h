@@ -34,6 +34,11 @@ void port_write(const void *data, size_t len);
 void port_icount_start(void);
 uint64_t port_icount_read(void);
 
+/* Core cycles since reset, exact (each port says by what): only a board
+ * whose board.mk sets BOARD_CYCLES := 1 provides it, and its report then
+ * gives render_cycles and cycles_per_pixel beside the instructions. */
+uint64_t port_cycles_read(void);
+
 /* Ends the run with this exit status. */
 void port_exit(int status) __attribute__((noreturn));
 

@@ -19,12 +19,17 @@
 #include "rt_fb.h"
 
 /* A sink with one band buffer of `bytes` for whole frames (no viewport,
- * pitch 0). Time inside it is excluded from the render's instruction
- * count (sink_io_instructions). */
+ * pitch 0). Time inside it is excluded from the render's counts. */
 void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t bytes);
 
-/* Instructions spent inside the sink (output and checksums). */
+/* A sink brackets its work (output, checksums, waiting for a transfer)
+ * in these, not nested (sink_io.c); the totals are what main.c takes
+ * from the render's instructions and, on a port that counts them
+ * (BOARD_CYCLES), its cycles. */
+void sink_io_begin(void);
+void sink_io_end(void);
 uint64_t sink_io_instructions(void);
+uint64_t sink_io_cycles(void);
 
 /* 1 when the frame stays on a panel after the run (a board's display
  * sink sets it in BOARD_CFLAGS): the firmware then reports "drawn 1" and

@@ -6,7 +6,6 @@
 
 static uint32_t frame_adler;
 static size_t frame_line_bytes;
-static uint64_t io_instructions;
 
 static uint32_t adler32(uint32_t adler, const uint8_t *p, size_t n)
 {
@@ -36,7 +35,7 @@ static void put_u32(uint8_t *p, uint32_t v)
 
 static int stream_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
-    uint64_t t0 = port_icount_read();
+    sink_io_begin();
     uint8_t hdr[9] = { 'R', 'T', 'F', '1', (uint8_t)s->format };
     put_u16(hdr + 5, w);
     put_u16(hdr + 7, h);
@@ -47,13 +46,13 @@ static int stream_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 #else
     frame_line_bytes = RT_FB_LINE_BYTES(s->format, w);
 #endif
-    io_instructions += port_icount_read() - t0;
+    sink_io_end();
     return 0;
 }
 
 static int stream_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
-    uint64_t t0 = port_icount_read();
+    sink_io_begin();
     uint16_t lines = (uint16_t)(a->y2 - a->y1 + 1);
     size_t n = (size_t)lines * frame_line_bytes;
     uint8_t hdr[5] = { 'B' }, tail[4];
@@ -65,7 +64,7 @@ static int stream_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *p
     port_write(tail, sizeof tail);
     frame_adler = adler32(frame_adler, px, n);
     rt_fb_flush_ready(s); /* UART writes are synchronous */
-    io_instructions += port_icount_read() - t0;
+    sink_io_end();
     return 0;
 }
 
@@ -91,5 +90,3 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
     sink->user = 0;
     sink->flushing = false;
 }
-
-uint64_t sink_io_instructions(void) { return io_instructions; }

@@ -18,6 +18,7 @@
  * Only what QEMU's SSD0323 model acts on is sent; a real panel also needs
  * its power-up sequence (supply, contrast, multiplex, remap).
  */
+#include "../arch/cortex-m/pl022.h"
 #include "port.h"
 #include "sink.h"
 
@@ -33,15 +34,7 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_L4, "the OLED takes l4 pixels (FW_FORM
 
 #define REG(addr) (*(volatile uint32_t *)(addr))
 
-/* SSI0 (PL022) */
-#define SSI0_CR0 REG(0x40008000u)
-#define SSI0_CR1 REG(0x40008004u)
-#define SSI0_DR REG(0x40008008u)
-#define SSI0_SR REG(0x4000800Cu)
-#define SSI0_CPSR REG(0x40008010u)
-#define SSI_SR_TNF (1u << 1) /* transmit FIFO not full */
-#define SSI_SR_RNE (1u << 2) /* receive FIFO not empty */
-#define SSI_SR_BSY (1u << 4)
+#define SSI0 0x40008000u /* a PL022 */
 
 /* GPIO C and D: direction, digital enable, and the data register masked
  * to one pin (address bits 9..2 select the pins a write changes) */
@@ -60,59 +53,46 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_L4, "the OLED takes l4 pixels (FW_FORM
 
 static size_t line_bytes;
 static uint16_t frame_width, frame_height;
-static uint64_t io_instructions;
-
-/* One byte out; returns with the bus idle, so D/C may change after it. */
-static void ssi_send(uint8_t byte)
-{
-    while (!(SSI0_SR & SSI_SR_TNF))
-        ;
-    SSI0_DR = byte;
-    while (SSI0_SR & SSI_SR_BSY)
-        ;
-    while (SSI0_SR & SSI_SR_RNE) /* what came back: a full receive FIFO stalls the transmitter */
-        (void)SSI0_DR;
-}
 
 static void oled_send(uint32_t dc, const uint8_t *p, size_t n)
 {
     OLED_DC = dc;
     for (size_t i = 0; i < n; i++)
-        ssi_send(p[i]);
+        pl022_send(SSI0, p[i]);
 }
 
 static int oled_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     if (s->format != RT_FB_L4 || w > PANEL_WIDTH || h > PANEL_HEIGHT)
         return 1;
-    uint64_t t0 = port_icount_read();
+    sink_io_begin();
     line_bytes = RT_FB_LINE_BYTES(RT_FB_L4, w);
     frame_width = w;
     frame_height = h;
     static const uint8_t on[] = { SSD_DISPLAY_ON };
     oled_send(0, on, sizeof on);
-    io_instructions += port_icount_read() - t0;
+    sink_io_end();
     return 0;
 }
 
 static int oled_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
-    uint64_t t0 = port_icount_read();
+    sink_io_begin();
     const uint8_t window[] = { SSD_COLUMNS, 0, (uint8_t)(line_bytes - 1), SSD_ROWS, (uint8_t)a->y1, (uint8_t)a->y2 };
     oled_send(0, window, sizeof window);
     oled_send(OLED_DC_DATA, px, (size_t)(a->y2 - a->y1 + 1) * line_bytes);
     rt_fb_flush_ready(s); /* the bytes are out */
-    io_instructions += port_icount_read() - t0;
+    sink_io_end();
     return 0;
 }
 
 static int oled_end(rt_fb_sink_t *s)
 {
     (void)s;
-    uint64_t t0 = port_icount_read();
+    sink_io_begin();
     report_value("frame_width", frame_width);
     report_value("frame_height", frame_height);
-    io_instructions += port_icount_read() - t0;
+    sink_io_end();
     return 0;
 }
 
@@ -123,10 +103,10 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
     GPIOD_DIR |= 0x01u;
     GPIOD_DEN |= 0x01u;
     OLED_CS = 0x01u;
-    SSI0_CR1 = 0;        /* disabled while it is set up */
-    SSI0_CPSR = 2;       /* 50 MHz / 2 / (1 + 6) = 3.6 MHz, under the SSD0323's 4 MHz */
-    SSI0_CR0 = 6u << 8 | 3u << 6 | 7u; /* serial clock rate 6, SPI mode 3, 8-bit frames */
-    SSI0_CR1 = 0x02u;    /* enabled, master */
+    PL022_CR1(SSI0) = 0;    /* disabled while it is set up */
+    PL022_CPSR(SSI0) = 2;   /* 50 MHz / 2 / (1 + 6) = 3.6 MHz, under the SSD0323's 4 MHz */
+    PL022_CR0(SSI0) = 6u << 8 | 3u << 6 | 7u; /* serial clock rate 6, SPI mode 3, 8-bit frames */
+    PL022_CR1(SSI0) = 0x02u; /* enabled, master */
     sink->format = format;
     sink->band[0] = band;
     sink->band[1] = 0;
@@ -139,5 +119,3 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
     sink->user = 0;
     sink->flushing = false;
 }
-
-uint64_t sink_io_instructions(void) { return io_instructions; }
