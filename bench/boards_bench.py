@@ -66,22 +66,39 @@ def code_ram(cross, elf):
     return code, sec.get(".data", 0) + sec.get(".bss", 0)
 
 
-def measure(board, backend, scene, size, path=None, depth=5, out=OUT):
+def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""):
     """Build and run the firmware for scene (at path, default the SPD or demo
-    scene of that name): its instructions per pixel, image (in out), facts."""
+    scene of that name), with the board's build variant (make variables,
+    board.mk's BOARD_BENCH_VARIANTS): its instructions per pixel (and cycles
+    per pixel, where the port counts them), image (in out), facts."""
     # one core on every board (a two-core board's split: bench/cores_bench.py)
     args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size,
-            "DEPTH=%d" % depth, "CORES=1"]
+            "DEPTH=%d" % depth, "CORES=1"] + variant.split()
     r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
     if r.returncode:
         return None
     info = board_info(args)
-    png = os.path.join(out, "%s-%s-%s-%s.png" % (board, backend, scene, size))
+    png = os.path.join(out, "%s%s-%s-%s-%s.png" % (board, variant.replace(" ", "").replace("=", ""), backend, scene, size))
     r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
     m = re.search(r"^instructions_per_pixel (\d+)$", r.stdout, re.M)
     if r.returncode or not m:
         return None
-    return {"ipp": int(m.group(1)), "png": png, "info": info, "args": args}
+    c = re.search(r"^cycles_per_pixel (\d+)$", r.stdout, re.M)
+    return {"ipp": int(m.group(1)), "cpp": int(c.group(1)) if c else None, "png": png, "info": info, "args": args}
+
+
+def variants(board):
+    """The board itself, then its build variants (BOARD_BENCH_VARIANTS)."""
+    return [""] + [v.replace(",", " ") for v in board_info(["BOARD=" + board])["variants"].split()]
+
+
+def cycles(m, estimate):
+    """Cycles per instruction and per pixel: the port's count when it has one
+    (its emulator's), else estimate() (bench/cycles.py's pricing)."""
+    if m["cpp"]:
+        return m["cpp"] / m["ipp"], m["cpp"], "counted"
+    c = estimate()
+    return (c, round(m["ipp"] * c), "estimated") if c else (None, "", "")
 
 
 def error(scene, png, fmt, size):
@@ -139,25 +156,26 @@ def main():
     scenes = a.scenes.split(",") if a.scenes else SCENES
     cyc_scenes = [] if a.no_cycles else a.cycles_scenes.split(",")
     rows = []
-    for b in sel_boards:
+    for b, v in [(b, v) for b in sel_boards for v in variants(b)]:
         backends = board_info(["BOARD=" + b])["backends"].split()
+        label = b + (" " + v if v else "")
         for be in backends:
             for s in scenes:
-                m = measure(b, be, s, SIZE)
+                m = measure(b, be, s, SIZE, variant=v)
                 if not m:
-                    print("%-12s %-7s %-10s failed" % (b, be, s), flush=True)
-                    rows.append({"board": b, "backend": be, "scene": s})
+                    print("%-12s %-7s %-10s failed" % (label, be, s), flush=True)
+                    rows.append({"board": label, "backend": be, "scene": s})
                     continue
                 psnr, maxerr = error(s, m["png"], m["info"]["format"], SIZE)
                 code, ram = code_ram(m["info"]["cross"], m["info"]["elf"])
-                c = cpi(b, be, s) if s in cyc_scenes else None
-                row = {"board": b, "backend": be, "scene": s, "ipp": m["ipp"],
-                       "cpi": "%.3f" % c if c else "", "cpp": round(m["ipp"] * c) if c else "",
+                c, cpp, _ = cycles(m, lambda: cpi(b, be, s) if s in cyc_scenes else None)
+                row = {"board": label, "backend": be, "scene": s, "ipp": m["ipp"],
+                       "cpi": "%.3f" % c if c else "", "cpp": cpp,
                        "psnr": "inf" if psnr == math.inf else "%.2f" % psnr, "max_error": maxerr,
                        "code": code, "ram": ram}
                 rows.append(row)
                 print("%-12s %-7s %-10s %8d instr/px %8s cycles/px %8s dB  code %6d  ram %7d" % (
-                    b, be, s, m["ipp"], row["cpp"], row["psnr"], code, ram), flush=True)
+                    label, be, s, m["ipp"], row["cpp"], row["psnr"], code, ram), flush=True)
     if a.update:
         # the rows measured now replace theirs; the others are kept, in order
         with open(os.path.join(ROOT, "bench", "boards.csv")) as f:
@@ -193,7 +211,9 @@ def main():
         f.write("# Boards and backends (bench/boards_bench.py)\n\n")
         f.write("64x64, depth 5; instructions per pixel inside the render (QEMU -icount shift=0);\n"
                 "cycles per pixel estimated from the instruction mix of a 32x32 render priced with\n"
-                "the core's documented timings (bench/cycles.py); PSNR and max error against the\n"
+                "the core's documented timings (bench/cycles.py), except on the pico, whose cycles\n"
+                "are rp2040js's count of the whole render (no flash wait states or XIP cache\n"
+                "modelled); PSNR and max error against the\n"
                 "exact double reference in the board's pixel format; code and static RAM of the ELF.\n\n")
         f.write("\"before\": the same measurement at commit ed5f6d7, before issue 16's cuts\n"
                 "(bench/boards-before.csv); speed-up = instructions before / after.\n\n")

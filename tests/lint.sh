@@ -8,7 +8,7 @@ check() { # check WHAT CPPCHECK-ARGS...
     what=$1
     shift
     out=$(cppcheck --enable=warning,style,performance,portability --std=c11 --quiet --error-exitcode=1 \
-        --inline-suppr --suppress=missingIncludeSystem --max-configs=32 -URT_CONFIG_FILE "$@" 2>&1)
+        --inline-suppr --suppress=missingIncludeSystem --max-configs=32 -URT_CONFIG_FILE -URT_UDIV32_HEADER "$@" 2>&1)
     if [ $? -eq 0 ] && [ -z "$out" ]; then
         pass=$((pass + 1))
         echo "  ok    cppcheck $what: no findings"

@@ -30,7 +30,9 @@
 # functions, for make size's stack bound), BOARD_RUN (a run script instead
 # of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
 # insists on), BOARD_TAG (a suffix of the build folder for the board's own
-# build choices), BOARD_CYCLES := 1 (the port counts cycles).
+# build choices), BOARD_CYCLES := 1 (the port counts cycles),
+# BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
+# one word each, commas for spaces).
 #
 # Each (scene, size, depth, format) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
@@ -52,6 +54,7 @@ BOARD_RUN  := platform/firmware/run.sh
 BOARD_RUN_AA := 3
 BOARD_RUN_DITHER := 0
 BOARD_TAG :=
+BOARD_BENCH_VARIANTS :=
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
 $(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
@@ -278,4 +281,4 @@ print-fwdir:
 
 # the board's facts for scripts: make -s board-info BOARD=..
 board-info:
-	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT) cores=$(BOARD_CORES)"
+	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT) cores=$(BOARD_CORES) variants='$(BOARD_BENCH_VARIANTS)'"

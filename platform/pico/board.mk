@@ -19,6 +19,10 @@ BOARD_LD       := platform/pico/link.ld
 BOARD_RUN      := node platform/pico/run.mjs
 # the emulator counts cycles: the report gives them beside instructions
 BOARD_CYCLES   := 1
+# make run renders one sample a pixel: rp2040js runs 25 to 35 million
+# cycles a second, and the default scene anti-aliased (AA=3) takes about
+# three minutes of the host's time, one sample about forty seconds
+BOARD_RUN_AA   := 0
 # PICO_DISPLAY=st7789 (default): the frame on the panel, rgb565be;
 # uart: the framed stream on UART0, as on the QEMU boards
 PICO_DISPLAY   ?= st7789
@@ -39,6 +43,8 @@ BOARD_CFLAGS   += -DRT_UDIV32_HEADER='"sio_div.h"' -DRT_UDIV32=sio_udiv32 -Iplat
 else ifneq ($(PICO_DIVIDER),0)
 $(error PICO_DIVIDER=$(PICO_DIVIDER): 1 or 0)
 endif
+# make bench measures libgcc's division too
+BOARD_BENCH_VARIANTS := PICO_DIVIDER=0
 # the build folder's name says both choices when they are not the defaults
 BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart)$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)
 ifneq ($(filter profile,$(MAKECMDGOALS)),)

@@ -7,10 +7,11 @@
 //       and PC from the vector table), one core, until the firmware exits
 //       by semihosting (bkpt 0xab). UART0 goes to FIRMWARE.serial, what
 //       SPI0 sends (each byte with the data/command line, GP16) to
-//       FIRMWARE.spi. Prints the report (RT receive --report-only), then
-//       writes OUT.png: from the panel when the report names a frame_width
-//       (the ST7789 sink), else from the UART stream. Then the render's
-//       time at CLOCK_HZ from its cycles, and the host's wall time.
+//       FIRMWARE.spi. Prints the report (RT receive) and writes OUT.png:
+//       from the UART stream when the console opens with a frame (the
+//       stream sink), else from the panel (the ST7789 sink, whose report
+//       gives frame_width and frame_height). Then the render's time at
+//       CLOCK_HZ from its cycles, and the host's wall time.
 //   node run.mjs --panel FIRMWARE.spi W H OUT.stream
 //       Only the panel's decoding: the top left WxH pixels of the panel as
 //       an rgb565be frame in rt's stream format (platform/firmware/sink.h).
@@ -217,7 +218,10 @@ const base = elf.replace(/\.elf$/, '');
 const r = run(elf);
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
-const rep = receive(rt, ['--report-only', `${base}.serial`]);
+// the UART stream sink's frame opens the console; the panel's run has
+// report lines only there
+const streamed = r.serial.subarray(0, 4).toString('latin1') === 'RTF1';
+const rep = receive(rt, streamed ? [`${base}.serial`, '-o', out] : ['--report-only', `${base}.serial`]);
 process.stdout.write(rep.stdout);
 process.stderr.write(rep.stderr);
 if (r.status !== 0) {
@@ -226,19 +230,17 @@ if (r.status !== 0) {
 }
 if (rep.status !== 0) process.exit(rep.status ?? 1);
 const value = (key) => (rep.stdout.match(new RegExp(`^${key} (\\d+)$`, 'm')) ?? [])[1];
-let img;
-if (value('frame_width') !== undefined) {
+if (!streamed) {
+  if (value('frame_width') === undefined) fail(`${base}.serial: neither a frame nor a panel's frame_width in the report`);
   try {
     writeFileSync(`${base}.panel.stream`, panelStream(decodePanel(r.spi), Number(value('frame_width')), Number(value('frame_height'))));
   } catch (e) {
     fail(`${base}.spi: ${e.message}`);
   }
-  img = receive(rt, [`${base}.panel.stream`, '-o', out]);
-} else {
-  img = receive(rt, [`${base}.serial`, '-o', out]);
+  const img = receive(rt, [`${base}.panel.stream`, '-o', out]);
+  process.stderr.write(img.stderr);
+  if (img.status !== 0) process.exit(img.status ?? 1);
 }
-process.stderr.write(img.stderr);
-if (img.status !== 0) process.exit(img.status ?? 1);
 const cycles = value('render_cycles');
 if (hz && cycles !== undefined)
   console.log(`board render time at ${Number(hz) / 1e6} MHz (rp2040js cycles: no flash wait states or XIP cache modelled; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
