@@ -17,7 +17,7 @@
  *   fx_unit3              each component within 1 ulp of the true unit vector
  *   fx_pow_unit(x, s)     within 2 ulp + 1e-7 * s relative of x^s for the
  *                         exact value of x (x itself carries 0.5 ulp); 0.5 ulp
- *                         + 2^-26 for the integers s = 1 .. 64
+ *                         + 2^-26 for s = 1, 2, 4, .., 64
  *   fx_tan_deg_wide       relative error < 3e-7 for 0.5 <= deg <= 89 (the sine
  *                         is Q.30, so small angles carry the most)
  *   fx_from_decimal       correctly rounded (the nearest fx_t, ties away)
