@@ -50,8 +50,8 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
      * and each product is rounded once. |a|, |b| <= max(256, tan_half)
      * and |at| < 513 (camera_init), so up to a lens of 179.8 degrees none
      * needs a saturation test (a wider one would only saturate its edges). */
-    real_t a = r_from_wide_in_range(r_wmul_int(c->half_span, 2 * i - c->cx));
-    real_t b = r_from_wide_in_range(r_wmul_int(c->half_span, 2 * j - c->cy));
+    real_t a = r_from_wide_in_range(c->half_span * (2 * i - c->cx));
+    real_t b = r_from_wide_in_range(c->half_span * (2 * j - c->cy));
     vec3_t t = v3(r_from_wide_in_range(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
                   r_from_wide_in_range(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
                   r_from_wide_in_range(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));

@@ -83,7 +83,6 @@ static inline real_t r_wsqrt(real_wide_t w) { return w > 0 ? R_FN(sqrt)(w) : 0; 
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return a / b; }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return w / a; }
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return w / n; }
-static inline real_wide_t r_wmul_int(real_wide_t w, int32_t n) { return w * n; }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return w * a; }
 static inline int32_t r_floor_int(real_t a) { return (int32_t)R_FN(floor)(a); }
 /* floor(w), and w - floor(w) in [0, 1) to *frac; |w| < 2^23. No libm
@@ -230,9 +229,6 @@ static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
-/* w n, exact while it fits (C's product: on ARMv6-M one 32x32 and one
- * 32x32->32 product instead of libgcc's 64x64 __aeabi_lmul) */
-static inline real_wide_t r_wmul_int(real_wide_t w, int32_t n) { return fx_mul64x(n, w); }
 static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
 static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
