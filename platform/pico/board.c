@@ -7,8 +7,9 @@
  * counts come from a block run.mjs maps at 0x40068000, an APB slot the
  * chip leaves empty: the emulator's instruction and cycle totals, both
  * exact by its timing model (each read costs 3 cycles, as an APB load).
- * On a real Pico those reads fault: there, port_icount_read and
- * port_cycles_read would read SysTick (processor clock, 24 bits) instead.
+ * On a real Pico nothing answers there: a build for the silicon would
+ * count cycles with SysTick (the processor clock, 24 bits, wrapping every
+ * 0.13 s at 125 MHz) and could count no instructions.
  */
 #include "port.h"
 
