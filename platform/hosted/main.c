@@ -192,6 +192,10 @@ static const host_option_need_t render_needs[] = {
 
 #define RENDER_HELP "rt --help"
 
+#define TEXT_OF_(x) #x
+#define TEXT_OF(x) TEXT_OF_(x)
+#define DEPTH_MAX_TEXT TEXT_OF(RT_MAX_DEPTH)
+
 static int render_usage_error(const char *fmt, const char *arg)
 {
     return host_usage_error("rt", RENDER_HELP, fmt, arg);
@@ -265,7 +269,8 @@ static int cmd_render(int argc, char **argv)
         case OPT_DEPTH: {
             long d;
             if (!parse_uint(optarg, 1, RT_MAX_DEPTH, &d))
-                return render_usage_error("--depth: expected 1..RT_MAX_DEPTH, got '%s'", optarg);
+                return render_usage_error("--depth: expected 1.." DEPTH_MAX_TEXT " (RT_MAX_DEPTH: a deeper tree needs "
+                                          "a build with -DRT_MAX_DEPTH=N), got '%s'", optarg);
             opts.max_depth = (uint8_t)d;
             break;
         }
