@@ -88,7 +88,8 @@ def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""
 
 
 def variants(board):
-    """The board itself, then its build variants (BOARD_BENCH_VARIANTS)."""
+    """The board itself, then its build variants (BOARD_BENCH_VARIANTS), which
+    are measured in the board's first backend only."""
     return [""] + [v.replace(",", " ") for v in board_info(["BOARD=" + board])["variants"].split()]
 
 
@@ -159,7 +160,7 @@ def main():
     for b, v in [(b, v) for b in sel_boards for v in variants(b)]:
         backends = board_info(["BOARD=" + b])["backends"].split()
         label = b + (" " + v if v else "")
-        for be in backends:
+        for be in backends[:1] if v else backends:
             for s in scenes:
                 m = measure(b, be, s, SIZE, variant=v)
                 if not m:
