@@ -568,10 +568,27 @@ static int64_t cos_q30(int64_t x)
     return t;
 }
 
+/* deg (Q.F, |deg| < 2^31) times pi/180 in Q.40 (19190098069, 35 bits),
+ * to radians in Q.30, truncated towards zero: the 66-bit product in two
+ * parts, so Q7.24's angles above 28 degrees do not overflow it (they
+ * did: rotations and wide lenses came out wrong). floor((a 2^20 + b) /
+ * 2^(F+10)) = floor((a + floor(b / 2^20)) / 2^(F-10)), so the bits are
+ * the single product's wherever that fitted. */
+static int64_t deg_to_rad_q30(int64_t deg)
+{
+    const uint64_t k = 19190098069u, k_hi = k >> 20, k_lo = k & 0xFFFFFu;
+    uint64_t m = deg < 0 ? 0 - (uint64_t)deg : (uint64_t)deg;
+#if FX_FRAC_BITS >= 10
+    uint64_t q = (m * k_hi + ((m * k_lo) >> 20)) >> (FX_FRAC_BITS - 10);
+#else
+    uint64_t q = (m * k_hi << (10 - FX_FRAC_BITS)) + ((m * k_lo) >> (FX_FRAC_BITS + 10));
+#endif
+    return deg < 0 ? -(int64_t)q : (int64_t)q;
+}
+
 fx_wide_t fx_tan_deg_wide(fx_t deg)
 {
-    /* deg * (pi/180 in Q.40), to radians in Q.30 */
-    int64_t rad = ((int64_t)deg * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
+    int64_t rad = deg_to_rad_q30(deg);
     int64_t s = sin_q30(rad), c = cos_q30(rad);
     if (c <= 0)
         return INT64_MAX;
@@ -592,7 +609,7 @@ void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
         a += full;
     int quadrant = (int)sdiv64(a, (int64_t)90 * FX_ONE);
     int64_t r = a - quadrant * (int64_t)90 * FX_ONE;
-    int64_t rad = (r * 19190098069) / ((int64_t)1 << (FX_FRAC_BITS + 10));
+    int64_t rad = deg_to_rad_q30(r);
     int64_t s = sin_q30(rad), c = cos_q30(rad);
     for (int q = 0; q < quadrant; q++) { /* rotate by 90 degrees */
         int64_t t = s;
