@@ -1,6 +1,6 @@
 /*
- * nff_solids.c - the solids grammar, the scene syntax beyond NFF (README
- * "Solids"); layers: nff_lex.h. Its handlers are entries of nff.c's
+ * nff_solids.c - the solids grammar, the scene syntax beyond NFF (docs/scenes.md,
+ * "Solids beyond NFF"); layers: nff_lex.h. Its handlers are entries of nff.c's
  * keyword table; they use the lexer, the reader state (nff_scene.h) and
  * the solids' set-up (solid.h), never nff.c.
  *

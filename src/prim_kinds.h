@@ -5,7 +5,7 @@
  * enum, the scene's tables and their capacities (scene.h), the count of
  * primitives, the nearest-hit, any-hit, BVH-box and shading dispatch
  * (prims.h), the per-kind test counters (rt_stats.h), and the scene
- * compiler's tables and pruning switches. README, "Adding a primitive",
+ * compiler's tables and pruning switches. docs/embedding.md, "Adding a primitive",
  * gives the route.
  *
  * X(type, table, capacity, KIND, name, compiled_in):

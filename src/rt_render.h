@@ -117,7 +117,7 @@ int rt_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *
  * *stats at the end of each step.
  *
  * Two cores or threads render one frame as bands: each its own viewport
- * of whole lines, its own worker, sink and stats (README, "Two cores").
+ * of whole lines, its own worker, sink and stats (docs/boards.md, "Two cores").
  * Every pixel is the same as in the whole frame. */
 typedef struct {
     rt_fb_sink_t *sink;

@@ -46,6 +46,7 @@ run python3 tests/layers.py "$B/fixed"
 run tests/symbols.sh "$B"
 run tests/config-tests.sh "$B/test-config"
 run tests/hygiene.sh
+run python3 tests/docs-check.py "$B/rt"
 run tests/fuzz-smoke.sh
 echo
 echo "$total_pass passed, $total_fail failed"

@@ -15,7 +15,7 @@
  *      atomic counter. On mps2-an521 with one-line bands its critical path
  *      was 0.5045 / 0.5066 / 0.5018 of one core's instructions on balls-2,
  *      rings-1 and the showpiece at 64x64, against 0.5045 / 0.5109 /
- *      0.5093 interleaved (README, "Two cores").
+ *      0.5093 interleaved (docs/boards.md, "Two cores").
  *
  * Counting. Under QEMU's -icount the cores run one at a time on one host
  * thread, and the instruction counter is one clock for all of them. Each

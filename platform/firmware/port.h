@@ -13,7 +13,7 @@
  *     in platform/arch/<arch>/ as well);
  *   - a linker script that defines MEMORY and includes
  *     platform/firmware/sections.ld (which defines the symbols below);
- *   - board.mk: CPU flags, QEMU command, clock, backends (README,
+ *   - board.mk: CPU flags, QEMU command, clock, backends (docs/boards.md,
  *     "Adding a board").
  * Only platform/ includes this header; the core never does.
  */
