@@ -24,9 +24,6 @@
 #ifndef BOARD_FORMAT
 #define BOARD_FORMAT RT_FB_RGB888
 #endif
-#ifndef BOARD_CYCLES /* the port counts cycles too (port_cycles_read) */
-#define BOARD_CYCLES 0
-#endif
 /* (a BOARD_FORMAT that is not an ID of RT_FB_FORMATS, rt_fb.h, fails to compile here) */
 #ifndef BOARD_ADAPTIVE_MILLI /* adaptive depth threshold in 1/1000; 0 = off */
 #define BOARD_ADAPTIVE_MILLI 0

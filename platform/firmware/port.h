@@ -38,6 +38,9 @@ uint64_t port_icount_read(void);
  * whose board.mk sets BOARD_CYCLES := 1 provides it, and its report then
  * gives render_cycles and cycles_per_pixel beside the instructions. */
 uint64_t port_cycles_read(void);
+#ifndef BOARD_CYCLES /* firmware.mk passes the board's; 0: no cycle counter */
+#define BOARD_CYCLES 0
+#endif
 
 /* Ends the run with this exit status. */
 void port_exit(int status) __attribute__((noreturn));

@@ -3,10 +3,6 @@
 #include "port.h"
 #include "sink.h"
 
-#ifndef BOARD_CYCLES
-#define BOARD_CYCLES 0
-#endif
-
 static uint64_t instr_total, instr_mark;
 #if BOARD_CYCLES
 static uint64_t cycles_total, cycles_mark;
