@@ -110,13 +110,12 @@ $(eval $(call host_rules,asan))
 
 # Numeric configurations for the benchmark: the host tools again, with the
 # fixed backend built with other fraction bits or fast operations.
-CONFIGS = q20 q20fast q16 q16fast q12 q24
+CONFIGS = q20 q20fast q16 q16fast q12
 CFG_q20 =
 CFG_q20fast = -DFX_FAST_MATH=1
 CFG_q16 = -DFX_FRAC_BITS=16
 CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
-CFG_q24 = -DFX_FRAC_BITS=24
 $(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
 
 # ThreadSanitizer build of rt (tests/threads-tests.sh): renders on several

@@ -569,9 +569,8 @@ static int64_t cos_q30(int64_t x)
 }
 
 /* deg (Q.F, |deg| < 2^31) times pi/180 in Q.40 (19190098069, 35 bits),
- * to radians in Q.30, truncated towards zero: the 66-bit product in two
- * parts, so Q7.24's angles above 28 degrees do not overflow it (they
- * did: rotations and wide lenses came out wrong). floor((a 2^20 + b) /
+ * to radians in Q.30, truncated towards zero: the product takes up to
+ * 66 bits, so it is formed in two parts that each fit. floor((a 2^20 + b) /
  * 2^(F+10)) = floor((a + floor(b / 2^20)) / 2^(F-10)), so the bits are
  * the single product's wherever that fitted. */
 static int64_t deg_to_rad_q30(int64_t deg)

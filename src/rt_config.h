@@ -48,7 +48,7 @@
  * (512 in Q11.20; their distances to the scene stay below 2048), so a far
  * camera or light does not take the geometry's fraction bits. */
 #ifndef RT_FAR_EXTENT_LOG2
-#define RT_FAR_EXTENT_LOG2 (FX_FRAC_BITS > 20 ? 29 - FX_FRAC_BITS : 9)
+#define RT_FAR_EXTENT_LOG2 9
 #endif
 #ifndef RT_SCALE_LOG2_MIN              /* keeps >= 8 fraction bits */
 #define RT_SCALE_LOG2_MIN (8 - FX_FRAC_BITS)
@@ -330,8 +330,11 @@
 #if !(RT_DEFAULT_DEPTH >= 1 && RT_DEFAULT_DEPTH <= RT_MAX_DEPTH)
 #error "RT_DEFAULT_DEPTH out of 1..RT_MAX_DEPTH"
 #endif
-#if !(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 24)
-#error "FX_FRAC_BITS out of 8..24"
+/* Above 20 the range (+-2^(11-F+20)) no longer holds the reader's scene
+ * extent squared, nor the far end of an infinite plane: Q7.24 rendered
+ * textures.nff at 11 dB, a silent wrong image. */
+#if !(FX_FRAC_BITS >= 8 && FX_FRAC_BITS <= 20)
+#error "FX_FRAC_BITS out of 8..20"
 #endif
 #if !(RT_FAR_EXTENT_LOG2 >= RT_SCENE_EXTENT_LOG2 && RT_FAR_EXTENT_LOG2 <= 29 - FX_FRAC_BITS)
 #error "RT_FAR_EXTENT_LOG2: at least the scene's extent, and distances must fit the fixed range"

@@ -30,7 +30,7 @@ else
     bad "without RT_CONFIG_FILE the user values still applied"
 fi
 for case in "RT_MAX_DEPTH 99:RT_MAX_DEPTH out of 1..16" "RT_MAX_LIGHTS 0:RT_MAX_LIGHTS out of 1..255" \
-            "FX_FRAC_BITS 30:FX_FRAC_BITS out of 8..24"; do
+            "FX_FRAC_BITS 30:FX_FRAC_BITS out of 8..20"; do
     def=${case%%:*} want=${case#*:}
     echo "#define $def" >"$OUT/bad_config.h"
     if ! cc -std=c11 -Isrc -I"$OUT" -DRT_CONFIG_FILE="\"bad_config.h\"" -c "$OUT/use.c" -o "$OUT/bad.o" \

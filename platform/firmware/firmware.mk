@@ -79,7 +79,7 @@ FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
 PRUNE ?= 1
 # CONFIG picks a numeric configuration of the fixed backend (CFG_* in the
-# Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12, q24.
+# Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12.
 CONFIG ?= q20
 CFG_FLAGS := $(CFG_$(CONFIG))
 # RAM: lines per band buffer (the firmware holds one band; on several
