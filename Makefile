@@ -49,7 +49,7 @@ HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 
 
 WARN      = -std=c11 -Wall -Wextra -Werror
 CORE_SRC  = $(wildcard src/*.c)
-HOST_INC  = -Isrc -Iplatform/hosted
+HOST_INC  = -Iinclude -Isrc -Iplatform/hosted
 
 # Two host variants: optimised, and sanitised (what the tests run).
 host_CFLAGS = -O2 -g
@@ -71,11 +71,11 @@ BACKEND_FLAGS_double_ftol = -DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1
 
 # $(1) variant, $(2) backend id, $(3) backend flags
 define core_rules
-build/$(1)/$(2)/%.o: src/%.c $(wildcard src/*.h) Makefile
+build/$(1)/$(2)/%.o: src/%.c $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Isrc -c $$< -o $$@
+	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Iinclude -Isrc -c $$< -o $$@
 
-build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard src/*.h) Makefile
+build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
 
@@ -90,7 +90,7 @@ endef
 define host_rules
 $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
-build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard src/*.h) Makefile
+build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
@@ -132,14 +132,14 @@ $(eval $(call host_rules,stress))
 # The fixed-point unit test links the fixed scalar layer alone.
 build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
 
 # The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
 # binary search.
 build/asan/test_fx_soft: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Isrc -Itests -o $@ \
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
 	    tests/test_fx.c src/fx.c -lm
 
 NAME := $(basename $(notdir $(SCENE)))
@@ -210,35 +210,35 @@ FUZZ_SECONDS ?= 300
 FUZZ_SMOKE ?= 15
 FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
-build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard src/*.h) Makefile
+build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Isrc -o $@ \
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
 
 # $(1) name, $(2) backend flags: the scene compiler with the firmware's
 # capacities, for the fixed tables and for the float ones (hex floats)
 define fuzz_scenec_rule
 build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
-                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard src/*.h) Makefile
+                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
 	@mkdir -p $$(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Isrc \
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 endef
 $(eval $(call fuzz_scenec_rule,fuzz_scenec,))
 $(eval $(call fuzz_scenec_rule,fuzz_scenec_float,-DRT_BACKEND_FLOAT=1))
 
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
-                         platform/hosted/image.h src/rt_fb.h Makefile
+                         platform/hosted/image.h include/rt_fb.h Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Isrc -Iplatform/hosted -o $@ \
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz
 
 fuzz: deps build/fuzz/$(FUZZER)

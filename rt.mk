@@ -11,11 +11,12 @@
 # Defines:
 #   RT_SRC          the core's C files (freestanding: compile them with
 #                   -ffreestanding, $(RT_CFLAGS))
-#   RT_INC          include folders (src/; the public header is rt.h)
+#   RT_INC          the public headers' folder (include/: rt.h and the rt_*.h it
+#                   includes)
 #   RT_DEFS         -D flags of the configuration: give them to every file
 #                   that includes rt.h, not only the core
 #   RT_CFLAGS       what the core's files need: -std=c11 -ffreestanding,
-#                   the include folders, $(RT_DEFS)
+#                   include/ and src/ (the internal headers), $(RT_DEFS)
 #   RT_SCENEC_SRC   the scene compiler's sources (a HOST program: build it
 #                   with the host cc, $(RT_SCENEC_CFLAGS), the same
 #                   capacities as the target and $(RT_SCENEC_LDLIBS)); its
@@ -32,14 +33,14 @@ RT_BACKEND ?= fixed
 RT_CONFIG_FILE ?=
 
 RT_SRC := $(wildcard $(RT_DIR)/src/*.c)
-RT_INC := $(RT_DIR)/src
+RT_INC := $(RT_DIR)/include
 RT_DEFS := $(if $(filter float,$(RT_BACKEND)),-DRT_BACKEND_FLOAT=1) \
            $(if $(filter double,$(RT_BACKEND)),-DRT_BACKEND_DOUBLE=1) \
            $(if $(RT_CONFIG_FILE),-DRT_CONFIG_FILE='"$(abspath $(RT_CONFIG_FILE))"')
-RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) $(RT_DEFS)
+RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) -I$(RT_DIR)/src $(RT_DEFS)
 
 RT_SCENEC_SRC := $(RT_DIR)/tools/scenec.c $(RT_DIR)/platform/hosted/host_io.c $(RT_SRC)
-RT_SCENEC_CFLAGS := -std=c11 -O2 -ffp-contract=off -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/src \
+RT_SCENEC_CFLAGS := -std=c11 -O2 -ffp-contract=off -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/include -I$(RT_DIR)/src \
                     -I$(RT_DIR)/platform/hosted $(RT_DEFS)
 RT_SCENEC_LDLIBS := -lm
 

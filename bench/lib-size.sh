@@ -9,7 +9,7 @@ OUT=build/lib-size
 mkdir -p "$OUT"
 CC=${ARM_CC:-arm-none-eabi-gcc}
 ARCH="-mcpu=cortex-m3 -mthumb"
-CFLAGS="-std=c11 -ffreestanding -Os -ffunction-sections -fdata-sections -fno-tree-loop-distribute-patterns -Isrc -DRT_USE_SPD=0"
+CFLAGS="-std=c11 -ffreestanding -Os -ffunction-sections -fdata-sections -fno-tree-loop-distribute-patterns -Iinclude -Isrc -DRT_USE_SPD=0"
 sizes() { # set name, entry points, flags
     name=$1 entries=$2
     shift 2

@@ -360,12 +360,12 @@ CFLAGS="-std=c11 -Wall -Wextra -Werror -mcpu=cortex-m0 -mthumb -O2 -ffreestandin
 build_run() {
     o="$W/$1"
     mkdir -p "$o"
-    D="-DFX_MUL64_PARTIAL=$2 -DRANDOM_PAIRS=$RANDOM_PAIRS -I$ROOT/src -I$W"
+    D="-DFX_MUL64_PARTIAL=$2 -DRANDOM_PAIRS=$RANDOM_PAIRS -I$ROOT/include -I$ROOT/src -I$W"
     for f in main ops board; do
         arm-none-eabi-gcc $CFLAGS $D -c "$W/$f.c" -o "$o/$f.o" || return 2
     done
     arm-none-eabi-gcc $CFLAGS $D -c "$ROOT/src/fx.c" -o "$o/fx.o" || return 2
-    arm-none-eabi-gcc $CFLAGS -DFX_MUL64_PARTIAL=0 -I"$ROOT/src" -I"$W" -c "$W/ref.c" -o "$o/ref.o" || return 2
+    arm-none-eabi-gcc $CFLAGS -DFX_MUL64_PARTIAL=0 -I"$ROOT/include" -I"$ROOT/src" -I"$W" -c "$W/ref.c" -o "$o/ref.o" || return 2
     arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb -nostdlib -nostartfiles -T "$W/link.ld" -Wl,--gc-sections \
         -o "$o/fw.elf" "$o"/*.o -lgcc || return 2
     timeout 600 qemu-system-arm -M microbit -nographic -monitor none -semihosting-config enable=on,target=native \
@@ -429,7 +429,7 @@ for cfg in "cortex-m0 0" "cortex-m0 1" "cortex-m0 2" "cortex-m3 0"; do
     mkdir -p "$o"
     for c in "$ROOT"/src/*.c; do
         arm-none-eabi-gcc -std=c11 -Wall -Wextra -Werror -mcpu=$1 -mthumb -O2 -ffreestanding -DRT_USE_SPD=0 \
-            -DFX_MUL64_PARTIAL=$2 -I"$ROOT/src" -c "$c" -o "$o/$(basename "$c" .c).o" || exit 2
+            -DFX_MUL64_PARTIAL=$2 -I"$ROOT/include" -I"$ROOT/src" -c "$c" -o "$o/$(basename "$c" .c).o" || exit 2
     done
     text=$(arm-none-eabi-size -t "$o"/*.o | awk 'END { print $1 }')
     calls=$(for f in "$o"/*.o; do arm-none-eabi-objdump -dr "$f"; done | grep -c 'R_ARM_THM_CALL[[:space:]]*__aeabi_lmul')

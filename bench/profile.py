@@ -104,7 +104,7 @@ KIND_DOC = {
     "frame": "rt_render outside any ray",
     "unclassified": "trace_ray from trace_ray with no helper call before it",
 }
-# firmware counter of each ray kind (src/rt_stats.h)
+# firmware counter of each ray kind (include/rt_stats.h)
 KIND_COUNTER = {"eye": "eye_rays", "reflection": "reflect_rays", "refraction": "refract_rays", "shadow": "shadow_rays"}
 SINK_CALLBACKS = ["stream_begin", "stream_flush", "stream_end", "oled_begin", "oled_flush", "oled_end"]
 CLONE_SUFFIX = re.compile(r"\.(isra|part|constprop|cold|lto_priv|clone|localalias)(\.\d+)*")

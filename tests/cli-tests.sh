@@ -63,7 +63,7 @@ expect_cli "10 MB line" 2 "ten-mb-line.nff:9: s: scene too large for the fixed r
 # Options (getopt_long): help and version on every command, both value
 # forms, '--', errors with a usage hint.
 SCENEC=build/scenec/rt-scenec
-version=$(sed -n 's/^#define RT_VERSION_STRING "\(.*\)"$/\1/p' src/rt_version.h)
+version=$(sed -n 's/^#define RT_VERSION_STRING "\(.*\)"$/\1/p' include/rt_version.h)
 for cmd in "$RT" "$RT compare" "$RT receive" "$SCENEC"; do
     name=$(basename "$(echo "$cmd" | cut -d' ' -f1)")$(echo "$cmd" | sed -n 's/^[^ ]* / /p')
     out=$($cmd --version 2>"$OUT/err"); status=$?

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Pixel format tests: a scene rendered through every framebuffer format
-# (RT_FB_FORMATS, src/rt_fb.h; rt --format) and expanded back to 8-bit RGB
+# (RT_FB_FORMATS, include/rt_fb.h; rt --format) and expanded back to 8-bit RGB
 # must match the RGB888 render within the format's quantisation:
 #   rgb888, xrgb8888   exact
 #   rgb565, rgb565be   R, B within 5/255 and G within 3/255 (half a 5- or

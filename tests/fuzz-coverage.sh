@@ -4,7 +4,7 @@
 set -e
 OUT=build/fuzz-cov
 mkdir -p "$OUT"
-clang -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer -fprofile-instr-generate -fcoverage-mapping -Isrc \
+clang -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=fuzzer -fprofile-instr-generate -fcoverage-mapping -Iinclude -Isrc \
     -o "$OUT/fuzz_cov" tests/fuzz_nff.c src/*.c
 dirs="tests/fuzz-corpus tests/fuzz-found"
 [ -d build/fuzz/corpus-fuzz_nff ] && dirs="$dirs build/fuzz/corpus-fuzz_nff"

@@ -20,13 +20,13 @@ check() { # check WHAT CPPCHECK-ARGS...
 }
 DOUBLE=-DRT_BACKEND_DOUBLE=1 FLOAT=-DRT_BACKEND_FLOAT=1
 
-check "src/ (fixed)" -Isrc src/
-check "src/ (double)" -Isrc $DOUBLE src/
-check "src/ (float)" -Isrc $FLOAT src/
-check "src/ (double, fixed tolerances)" -Isrc $DOUBLE -DRT_TOLERANCES_FIXED=1 src/
+check "src/ (fixed)" -Iinclude -Isrc src/
+check "src/ (double)" -Iinclude -Isrc $DOUBLE src/
+check "src/ (float)" -Iinclude -Isrc $FLOAT src/
+check "src/ (double, fixed tolerances)" -Iinclude -Isrc $DOUBLE -DRT_TOLERANCES_FIXED=1 src/
 
 # The hosted CLI and the scene compiler; backend.c is built once per backend.
-HOSTED="-Isrc -Iplatform/hosted -D_POSIX_C_SOURCE=200809L"
+HOSTED="-Iinclude -Isrc -Iplatform/hosted -D_POSIX_C_SOURCE=200809L"
 check "platform/hosted/ and tools/ (fixed)" $HOSTED -DBACKEND_ID=fixed platform/hosted/ tools/
 check "platform/hosted/backend.c (double)" $HOSTED $DOUBLE -DBACKEND_ID=double platform/hosted/backend.c
 check "platform/hosted/backend.c (float)" $HOSTED $FLOAT -DBACKEND_ID=float platform/hosted/backend.c
@@ -39,7 +39,7 @@ check "tools/ (double)" $HOSTED $DOUBLE tools/
 # The firmware: fixed (make run), double and float (the soft-float
 # comparison builds), and main.c's RGB565 framebuffer.
 # Every board folder and architecture folder with the common firmware.
-BOARD="-Isrc -Iplatform/firmware -DBOARD_WIDTH=64 -DBOARD_HEIGHT=64 -DBOARD_DEPTH=5 -DRT_USE_SPD=0"
+BOARD="-Iinclude -Isrc -Iplatform/firmware -DBOARD_WIDTH=64 -DBOARD_HEIGHT=64 -DBOARD_DEPTH=5 -DRT_USE_SPD=0"
 PORTS="platform/firmware/ platform/arch/ $(ls -d platform/*/ | grep -v -e platform/firmware/ -e platform/arch/ -e platform/hosted/)"
 check "platform/firmware/ and every port (fixed)" $BOARD $PORTS
 check "platform/firmware/main.c (fixed, rgb565)" $BOARD -DBOARD_FORMAT=RT_FB_RGB565 platform/firmware/main.c
@@ -47,8 +47,8 @@ check "platform/firmware/ (double)" $BOARD $DOUBLE platform/firmware/
 check "platform/firmware/ (float)" $BOARD $FLOAT platform/firmware/
 
 # The embedding example (tests/consumer/): main.c sees only rt.h.
-check "tests/consumer/ (host)" -Isrc tests/consumer/main.c tests/consumer/out_host.c
-check "tests/consumer/ (board)" -Isrc -Iplatform/firmware tests/consumer/out_mps2.c
+check "tests/consumer/ (host)" -Iinclude -Isrc tests/consumer/main.c tests/consumer/out_host.c
+check "tests/consumer/ (board)" -Iinclude -Isrc -Iplatform/firmware tests/consumer/out_mps2.c
 
 echo "lint: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -1,6 +1,6 @@
 #!/bin/sh
 # same-counters.sh HOST_STATS BOARD_REPORT [rays]: compares the core's
-# counters (src/rt_stats.h keys) of `rt --stats` with a board's report.
+# counters (include/rt_stats.h keys) of `rt --stats` with a board's report.
 # Prints "N counters equal" and exits 0 when at least 10 keys are shared
 # (5 with `rays`) and all agree; otherwise prints each difference (or the
 # count) and exits 1. `rays`: only the ray counts (eye_rays, eye_hits,

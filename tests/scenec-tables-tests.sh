@@ -43,7 +43,7 @@ for b in float double; do
     flag=-DRT_BACKEND_$(echo $b | tr a-z A-Z)=1
     d="$out/$b"
     mkdir -p "$d"
-    if ! log "$b-scenec" cc $WARN -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $CAPS $flag -Isrc -Iplatform/hosted \
+    if ! log "$b-scenec" cc $WARN -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -Iplatform/hosted \
         -o "$d/rt-scenec" tools/scenec.c platform/hosted/host_io.c src/*.c -lm; then
         bad "$b: rt-scenec does not build"
         continue
@@ -52,7 +52,7 @@ for b in float double; do
     objs=""
     for c in src/*.c; do
         o="$d/core-$(basename "$c" .c).o"
-        log "$b-core" cc $WARN -ffreestanding -O2 -ffp-contract=off $CAPS $flag -Isrc -c "$c" -o "$o" ||
+        log "$b-core" cc $WARN -ffreestanding -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -c "$c" -o "$o" ||
             bad "$b: $c does not compile"
         objs="$objs $o"
     done
@@ -66,7 +66,7 @@ for b in float double; do
         fi
         grep -q "^#if !RT_BACKEND_$(echo $b | tr a-z A-Z)\( \|\$\)" "$d/$name.c" ||
             bad "$b, $name: the tables do not refuse another backend"
-        if ! log "$b-$name-build" cc $WARN -O2 -ffp-contract=off $CAPS $flag -D_POSIX_C_SOURCE=200809L -Isrc \
+        if ! log "$b-$name-build" cc $WARN -O2 -ffp-contract=off $CAPS $flag -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc \
             -o "$d/$name" tests/scenec_tables.c "$d/$name.c" $objs -lm; then
             bad "$b, $name: scene_data.c or the harness does not compile with -Werror"
             continue
@@ -112,7 +112,7 @@ if command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/n
         elf="$d/$name.elf"
         if ! log "m4f-$name" arm-none-eabi-gcc $WARN $M4 -O2 -ffreestanding -fno-math-errno -ffp-contract=off \
             -ffunction-sections -fdata-sections -DRT_BACKEND_FLOAT=1 -DRT_USE_SPD=0 -DTABLES_BOARD=1 \
-            -Isrc -Iplatform/firmware -nostdlib -nostartfiles -Wl,--gc-sections \
+            -Iinclude -Isrc -Iplatform/firmware -nostdlib -nostartfiles -Wl,--gc-sections \
             -T platform/mps2-an385/link.ld -Lplatform/firmware -o "$elf" \
             tests/scenec_tables.c "$out/float/$name.c" src/*.c $PORT -lgcc; then
             bad "Cortex-M4F, $name: does not build"

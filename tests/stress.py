@@ -210,7 +210,7 @@ def far_camera(text, dist):
 
 def distant():
     # Far lights and cameras: they may lie up to 32 times farther out than
-    # the geometry before it gives up bits (src/rt_config.h).
+    # the geometry before it gives up bits (include/rt_config.h).
     for dist in (100, 1000):
         image_case("lights %d units away (balls-2)" % dist, far_lights(spd("balls-2"), dist), psnr_min=50.0,
                    over8_max=0.25)

@@ -1,4 +1,4 @@
-/* test_hal.c - the framebuffer HAL (src/rt_fb.h, src/rt_render.h) through the
+/* test_hal.c - the framebuffer HAL (include/rt_fb.h, include/rt_render.h) through the
  * fixed and double backends:
  *  - a flush failing on the third band ends the render with its status,
  *    no further flush and no end();

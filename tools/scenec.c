@@ -248,7 +248,7 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
             bs.sah_tests_milli / 1000.0);
     /* RT_USE_<X> (rt_config.h) is set from SCENE_USES_<X> */
     fprintf(f, "/* What the scene uses; with PRUNE=1 the firmware is built with these\n"
-               " * as its RT_USE_* switches (src/rt_config.h). */\n");
+               " * as its RT_USE_* switches (include/rt_config.h). */\n");
     /* a kind's switch is RT_USE_<its table's name> (prim_kinds.h) */
     struct {
         const char *name;

@@ -73,7 +73,7 @@ BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
 
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
-# FORMAT: a name of RT_FB_FORMATS (src/rt_fb.h), lower case: rgb888 -> RT_FB_RGB888.
+# FORMAT: a name of RT_FB_FORMATS (include/rt_fb.h), lower case: rgb888 -> RT_FB_RGB888.
 FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # PRUNE=1 (default): code for primitive kinds and shading features the
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
@@ -124,7 +124,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
-            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Isrc -Iplatform/firmware -I$(FW_DIR)
+            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),
 # errors and counters, the UART sink, and the solids' object-space code
@@ -154,13 +154,13 @@ FW_NAMES = $(CORE_NAMES) $(basename $(notdir $(FW_PORT_SRC)))
 
 # ---- scene compiler (a host tool, with the firmware's capacities) -------
 
-$(SCENEC_DIR)/%.o: src/%.c $(wildcard src/*.h) platform/firmware/firmware.mk
+$(SCENEC_DIR)/%.o: src/%.c $(wildcard include/*.h src/*.h) platform/firmware/firmware.mk
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -c $< -o $@
+	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -c $< -o $@
 
 $(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES)) \
-                         $(wildcard platform/hosted/*.h) $(wildcard src/*.h)
-	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Isrc -Iplatform/hosted -o $@ \
+                         $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h)
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    $(filter %.c %.o,$^)
 
 # ---- firmware ------------------------------------------------------------
@@ -173,13 +173,13 @@ $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scene
 # built for that backend (host cc, -ffp-contract=off as the firmware, libm
 # for the reader's tan/sin/cos/floor): the same bits the host reader makes.
 define scenec_fp
-$(SCENEC_DIR)-$(1)/%.o: src/%.c $(wildcard src/*.h) platform/firmware/firmware.mk
+$(SCENEC_DIR)-$(1)/%.o: src/%.c $(wildcard include/*.h src/*.h) platform/firmware/firmware.mk
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Isrc -c $$< -o $$@
+	$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc -c $$< -o $$@
 
 $(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst %,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_NAMES)) \
-                         $(wildcard platform/hosted/*.h) $(wildcard src/*.h)
-	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Isrc \
+                         $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h)
+	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
 
 $(FW_DIR)/scene_data_$(1).c: $(SCENE) $(SCENEC_DIR)-$(1)/rt-scenec
@@ -191,7 +191,7 @@ $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 
 # $(1) backend, $(2) a folder of sources
 define firmware_objs
-$(FW_DIR)/$(1)/%.o: $(2)/%.c $(wildcard src/*.h platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
+$(FW_DIR)/$(1)/%.o: $(2)/%.c $(wildcard include/*.h src/*.h platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES)),-Os) -c $$< -o $$@
 $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk

@@ -1,6 +1,6 @@
 /*
  * sio_div.h - the RP2040's hardware divider (SIO, one per core) as the
- * core's 32-bit division (RT_UDIV32, src/rt_config.h; board.mk names this
+ * core's 32-bit division (RT_UDIV32, include/rt_config.h; board.mk names this
  * header): the Cortex-M0+ has no divide instruction.
  *
  * Write the dividend and the divisor, and the quotient is valid 8 cycles
