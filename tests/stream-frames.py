@@ -10,7 +10,7 @@ import struct
 import sys
 
 # bits per pixel by format value, from the one list (RT_FB_FORMATS, include/rt_fb.h)
-RT_FB_H = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "src", "rt_fb.h")
+RT_FB_H = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "include", "rt_fb.h")
 FORMAT_BITS = {int(v): int(b) for v, b in re.findall(r'X\(RT_FB_\w+, "\w+", (\d+), (\d+)\)', open(RT_FB_H).read())}
 
 
