@@ -163,7 +163,7 @@ def main():
     ap.add_argument("--quick", action="store_true", help="a subset that runs in about a minute")
     ap.add_argument("--board", default="mps2-an385", help="the board of the instructions-per-pixel column")
     ap.add_argument("--from-csv", action="store_true",
-                    help="measure nothing: rewrite results.md and plot.svg from results.csv's cells "
+                    help="measure nothing: rewrite the results from results.csv's cells "
                          "(after a configuration or scene is dropped from it)")
     args = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
