@@ -48,7 +48,10 @@ HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 
             -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024 -DRT_MAX_WORKERS=64 -DRT_MAX_DEPTH=8
 
 WARN      = -std=c11 -Wall -Wextra -Werror
-CORE_SRC  = $(wildcard src/*.c)
+# The core: src/ and its layer folders (numeric, geometry, reader, tracer).
+CORE_SRC  = $(wildcard src/*.c src/*/*.c)
+CORE_DIRS = $(patsubst %/,%,$(sort $(dir $(CORE_SRC))))
+CORE_H    = $(wildcard include/*.h src/*.h src/*/*.h)
 HOST_INC  = -Iinclude -Isrc -Iplatform/hosted
 
 # Two host variants: optimised, and sanitised (what the tests run).
@@ -71,11 +74,11 @@ BACKEND_FLAGS_double_ftol = -DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1
 
 # $(1) variant, $(2) backend id, $(3) backend flags
 define core_rules
-build/$(1)/$(2)/%.o: src/%.c $(wildcard include/*.h src/*.h) Makefile
+build/$(1)/$(2)/%.o: src/%.c $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Iinclude -Isrc -c $$< -o $$@
 
-build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(wildcard include/*.h src/*.h) Makefile
+build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
 
@@ -90,7 +93,7 @@ endef
 define host_rules
 $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
-build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h) Makefile
+build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
@@ -130,17 +133,17 @@ stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
 # The fixed-point unit test links the fixed scalar layer alone.
-build/asan/test_fx: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
+build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/fx.c -lm
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
 
 # The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
 # binary search.
-build/asan/test_fx_soft: tests/test_fx.c src/fx.c src/fx.h tests/testlib.h Makefile
+build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
-	    tests/test_fx.c src/fx.c -lm
+	    tests/test_fx.c src/numeric/fx.c -lm
 
 NAME := $(basename $(notdir $(SCENE)))
 
@@ -210,15 +213,15 @@ FUZZ_SECONDS ?= 300
 FUZZ_SMOKE ?= 15
 FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
-build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
+build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
+build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
+build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
@@ -227,7 +230,7 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(wildcard include/*.h s
 # capacities, for the fixed tables and for the float ones (hex floats)
 define fuzz_scenec_rule
 build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
-                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(wildcard include/*.h src/*.h) Makefile
+                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm

@@ -32,7 +32,7 @@ endif
 RT_BACKEND ?= fixed
 RT_CONFIG_FILE ?=
 
-RT_SRC := $(wildcard $(RT_DIR)/src/*.c)
+RT_SRC := $(wildcard $(RT_DIR)/src/*.c $(RT_DIR)/src/*/*.c)
 RT_INC := $(RT_DIR)/include
 RT_DEFS := $(if $(filter float,$(RT_BACKEND)),-DRT_BACKEND_FLOAT=1) \
            $(if $(filter double,$(RT_BACKEND)),-DRT_BACKEND_DOUBLE=1) \

@@ -5,7 +5,7 @@
 #
 #   sh bench/m0-mul.sh            (from the repository root; 1 to 3 minutes)
 #
-# Builds one small standalone firmware per path from src/fx.c and the
+# Builds one small standalone firmware per path from src/numeric/fx.c and the
 # headers (nothing of platform/), runs each under
 # qemu-system-arm -M microbit -icount shift=0 and prints:
 #   - a check on the board: fx_mul64, fx_umul64 and fx_mul64x against the
@@ -19,7 +19,7 @@
 #     the same loop without the call: each count includes the call to an
 #     out-of-line wrapper and its return (the "none" row: a wrapper that
 #     only returns). These are instructions, not cycles;
-#   - the .text of every src/*.c for -mcpu=cortex-m0 -O2 -DRT_USE_SPD=0 on
+#   - the .text of every C file of src/ for -mcpu=cortex-m0 -O2 -DRT_USE_SPD=0 on
 #     each path (and for the Cortex-M3, where the default is the plain
 #     product), as arm-none-eabi-size totals of the objects.
 # Exits 1 when a check fails, 2 when a tool is missing or a build fails.
@@ -160,7 +160,7 @@ SECTIONS {
 EOF
 
 cat >"$W/ops.h" <<'EOF'
-#include "vec3.h"
+#include "numeric/vec3.h"
 int64_t op_none(int32_t a, int32_t b);
 int64_t op_mul64(int32_t a, int32_t b);
 uint64_t op_umul64(uint32_t a, uint32_t b);
@@ -364,7 +364,7 @@ build_run() {
     for f in main ops board; do
         arm-none-eabi-gcc $CFLAGS $D -c "$W/$f.c" -o "$o/$f.o" || return 2
     done
-    arm-none-eabi-gcc $CFLAGS $D -c "$ROOT/src/fx.c" -o "$o/fx.o" || return 2
+    arm-none-eabi-gcc $CFLAGS $D -c "$ROOT/src/numeric/fx.c" -o "$o/fx.o" || return 2
     arm-none-eabi-gcc $CFLAGS -DFX_MUL64_PARTIAL=0 -I"$ROOT/include" -I"$ROOT/src" -I"$W" -c "$W/ref.c" -o "$o/ref.o" || return 2
     arm-none-eabi-gcc -mcpu=cortex-m0 -mthumb -nostdlib -nostartfiles -T "$W/link.ld" -Wl,--gc-sections \
         -o "$o/fw.elf" "$o"/*.o -lgcc || return 2
@@ -419,7 +419,7 @@ awk '
     }' W="$W" "$W/p0/out.txt" "$W/p1/out.txt" "$W/p2/out.txt"
 
 echo
-echo "code: .text of all src/*.c (-O2 -DRT_USE_SPD=0, objects, arm-none-eabi-size)"
+echo "code: .text of all C files of src/ (-O2 -DRT_USE_SPD=0, objects, arm-none-eabi-size)"
 echo
 echo "| target | FX_MUL64_PARTIAL | .text (bytes) | calls to __aeabi_lmul |"
 echo "|---|---|---:|---:|"
@@ -427,7 +427,7 @@ for cfg in "cortex-m0 0" "cortex-m0 1" "cortex-m0 2" "cortex-m3 0"; do
     set -- $cfg
     o="$W/size-$1-$2"
     mkdir -p "$o"
-    for c in "$ROOT"/src/*.c; do
+    for c in "$ROOT"/src/*.c "$ROOT"/src/*/*.c; do
         arm-none-eabi-gcc -std=c11 -Wall -Wextra -Werror -mcpu=$1 -mthumb -O2 -ffreestanding -DRT_USE_SPD=0 \
             -DFX_MUL64_PARTIAL=$2 -I"$ROOT/include" -I"$ROOT/src" -c "$c" -o "$o/$(basename "$c" .c).o" || exit 2
     done

@@ -46,7 +46,7 @@ for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra
     else
         bad "$s: board and host fixed differ: $cmp"
     fi
-    # The core's counters (src/stats.h): same keys and values on both.
+    # The core's counters (include/rt_stats.h): same keys and values on both.
     if same=$(sh tests/same-counters.sh "$OUT/$s-host.stats" "$OUT/$s.report"); then
         ok "$s: board report and rt --stats: $same"
     else

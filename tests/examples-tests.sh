@@ -16,7 +16,7 @@ bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 for spec in "lvgl_flush:--size 64x64 --format rgb565be" "zephyr_display:--size 64x64" "tiled:--size 96x80"; do
     name=${spec%%:*} opts=${spec#*:}
     if ! cc -std=c11 -Wall -Wextra -Werror -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
-            -Iinclude -Isrc -Iexamples -o "$OUT/$name" "examples/$name.c" src/*.c -lm 2>"$OUT/$name.build"; then
+            -Iinclude -Isrc -Iexamples -o "$OUT/$name" "examples/$name.c" src/*.c src/*/*.c -lm 2>"$OUT/$name.build"; then
         bad "$name: build failed: $(head -3 "$OUT/$name.build")"
         continue
     fi
@@ -33,7 +33,7 @@ for spec in "lvgl_flush:--size 64x64 --format rgb565be" "zephyr_display:--size 6
 done
 # rt_camera_from_view: another viewpoint for a const scene (tests/camera_view.c).
 if cc -std=c11 -Wall -Wextra -Werror -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
-      -Iinclude -Isrc -o "$OUT/camera_view" tests/camera_view.c src/*.c -lm 2>"$OUT/camera_view.build"; then
+      -Iinclude -Isrc -o "$OUT/camera_view" tests/camera_view.c src/*.c src/*/*.c -lm 2>"$OUT/camera_view.build"; then
     "$OUT/camera_view" >"$OUT/camera_view.log" 2>&1
     st=$?
     while IFS= read -r line; do

@@ -12,7 +12,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
-#include "nff.h"
+#include "reader/nff.h"
 #include "rt_render.h"
 
 static scene_store_t store;

@@ -2,7 +2,7 @@
 # Image tests: every SPD size-1 and size-2 scene, every demo scene of
 # scenes/ and the benchmark scenes of scenes/bench at 128x128, depth 5.
 # The reference is the exact double build (its tolerances come from
-# double precision, src/tolerance.h); the fixed
+# double precision, src/numeric/tolerance.h); the fixed
 # and the float builds must each reach PSNR >= 50 dB against it with at
 # most 0.25% of pixels off by more than 8/255. The double build with the
 # fixed build's tolerances (--double-ftol) is printed beside them: it

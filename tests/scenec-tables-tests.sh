@@ -44,13 +44,13 @@ for b in float double; do
     d="$out/$b"
     mkdir -p "$d"
     if ! log "$b-scenec" cc $WARN -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -Iplatform/hosted \
-        -o "$d/rt-scenec" tools/scenec.c platform/hosted/host_io.c src/*.c -lm; then
+        -o "$d/rt-scenec" tools/scenec.c platform/hosted/host_io.c src/*.c src/*/*.c -lm; then
         bad "$b: rt-scenec does not build"
         continue
     fi
     # the core once, as a library would be
     objs=""
-    for c in src/*.c; do
+    for c in src/*.c src/*/*.c; do
         o="$d/core-$(basename "$c" .c).o"
         log "$b-core" cc $WARN -ffreestanding -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -c "$c" -o "$o" ||
             bad "$b: $c does not compile"
@@ -114,7 +114,7 @@ if command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/n
             -ffunction-sections -fdata-sections -DRT_BACKEND_FLOAT=1 -DRT_USE_SPD=0 -DTABLES_BOARD=1 \
             -Iinclude -Isrc -Iplatform/firmware -nostdlib -nostartfiles -Wl,--gc-sections \
             -T platform/mps2-an385/link.ld -Lplatform/firmware -o "$elf" \
-            tests/scenec_tables.c "$out/float/$name.c" src/*.c $PORT -lgcc; then
+            tests/scenec_tables.c "$out/float/$name.c" src/*.c src/*/*.c $PORT -lgcc; then
             bad "Cortex-M4F, $name: does not build"
             continue
         fi

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "rt_render.h"
-#include "scene.h"
+#include "geometry/scene.h"
 
 #ifndef WIDTH
 #define WIDTH 64
@@ -40,7 +40,7 @@ static int out_write(const void *p, size_t n)
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "nff.h"
+#include "reader/nff.h"
 
 static int out_write(const void *p, size_t n) { return fwrite(p, 1, n, stdout) == n ? 0 : 1; }
 

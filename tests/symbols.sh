@@ -1,13 +1,14 @@
 #!/bin/sh
 # The core's global symbols all carry the library's prefix (rt_ or RT_),
 # so the core links into anyone's firmware without a clash: nm over each
-# backend's objects of src/*.c (default: the hosted builds).
+# backend's objects of the core (src/*.c, src/*/*.c) (default: the hosted builds).
 B=${1:-build/host}
 pass=0 fail=0
 for backend in fixed double float double_ftol; do
     bad="" n=0
-    for c in src/*.c; do
-        o="$B/$backend/$(basename "$c" .c).o"
+    for c in src/*.c src/*/*.c; do
+        o="$B/$backend/${c#src/}"
+        o="${o%.c}.o"
         [ -f "$o" ] || { bad="$bad (missing $o)"; continue; }
         n=$((n + $(nm -g --defined-only "$o" | awk 'NF == 3' | wc -l)))
         bad="$bad$(nm -g --defined-only "$o" | awk -v f="$(basename "$c")" 'NF == 3 && $3 !~ /^(rt_|RT_)/ { printf " %s:%s", f, $3 }')"

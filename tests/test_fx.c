@@ -14,8 +14,8 @@
  * partial products (fx.h, FX_MUL64_PARTIAL), while fx.c, built without
  * the macro, and the reference products below are the plain C product. */
 #define FX_MUL64_PARTIAL 1
-#include "fx.h"
-#include "real.h"
+#include "numeric/fx.h"
+#include "numeric/real.h"
 #include "testlib.h"
 
 static const double ULP = 1.0 / FX_ONE;

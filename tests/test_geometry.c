@@ -12,7 +12,7 @@
  * jumps when the ray is nudged by 1e-3 of the object's size (a silhouette
  * or a rim); those must stay under MAX_MISMATCH of the rays.
  *
- * It also holds the float backend's own power function (src/real_float.c,
+ * It also holds the float backend's own power function (src/numeric/real_float.c,
  * the Phong highlight's x^s) to the accuracy stated there, against double
  * pow over a sweep of x and of exponents 1 ... 524287.
  */
@@ -209,7 +209,7 @@ static void test_camera(void)
 }
 
 /* Relative error bound of the float backend's x^s for results in the
- * normal range (src/real_float.c): 0.54 units in the last place. */
+ * normal range (src/numeric/real_float.c): 0.54 units in the last place. */
 #define POW_FLOAT_REL 6.2e-8
 
 static float float_of_bits(uint32_t u)

@@ -132,7 +132,7 @@ stats_case "balls-2 --float --spd" json 1 $W $H scenes/spd/balls-2.nff --size ${
 stats_case "tetra-2 --spd --viewport 3,20,40,19" text 1 40 19 scenes/spd/tetra-2.nff --size ${W}x$H --spd --viewport 3,20,40,19
 
 # The stress build counts fixed-point saturations in one counter for all
-# threads (an atomic add, src/fx.h): the same total for every N.
+# threads (an atomic add, src/numeric/fx.h): the same total for every N.
 if [ -x "$STRESS" ]; then
     for n in 1 2 3; do
         "$STRESS" scenes/showpiece.nff -o "$OUT/sat.ppm" --size ${W}x$H --quiet --threads $n --stats 2>"$OUT/sat$n.txt"

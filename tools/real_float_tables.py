@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the tables of src/real_float.c (the float backend's x^s).
+"""Prints the tables of src/numeric/real_float.c (the float backend's x^s).
 
 log_table: z in [0.71875, 1.4375) in 32 rows by the top 5 mantissa bits
 above LOG_M0; c = 2 / (lo + hi) of the row, rounded to 12 significant

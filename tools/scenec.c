@@ -30,9 +30,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bvh.h"
+#include "geometry/bvh.h"
 #include "host_io.h" /* beside this file: found without -I */
-#include "nff.h"
+#include "reader/nff.h"
 #include "rt_version.h"
 
 #if defined(RT_TOLERANCES_FIXED) && RT_TOLERANCES_FIXED
@@ -296,7 +296,7 @@ static int scenec_emit(FILE *out, FILE *hdr, const char *src, const scene_t *sc,
     if (text_mode) {
         emit_text(out, text, len);
     } else {
-        fprintf(out, "#include <stdint.h>\n\n#include \"scene.h\"\n\n");
+        fprintf(out, "#include <stdint.h>\n\n#include \"geometry/scene.h\"\n\n");
 #if RT_BACKEND_FIXED
         fprintf(out, "#if !RT_BACKEND_FIXED || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
         fprintf(out, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",

@@ -6,10 +6,10 @@
  */
 #include "board_scene.h"
 #include "port.h"
-#include "camera.h"
+#include "geometry/camera.h"
 #include "sink.h"
-#include "scene_hit.h"
-#include "trace.h"
+#include "geometry/scene_hit.h"
+#include "tracer/trace.h"
 
 #define GRID 32
 

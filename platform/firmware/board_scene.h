@@ -6,7 +6,7 @@
 #define BOARD_SCENE_H
 
 #include "rt_error.h"
-#include "scene.h"
+#include "geometry/scene.h"
 
 /* The scene, or NULL with *err set. */
 const scene_t *board_scene(rt_error_t *err);

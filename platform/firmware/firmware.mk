@@ -148,18 +148,19 @@ FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmw
               $(if $(filter-out 1,$(CORES)),platform/firmware/bands.c) \
               platform/firmware/libc_min.c $(BOARD_SINK) $(wildcard platform/arch/$(BOARD_ARCH)/*.c) \
               $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)
-FW_SRC_DIRS = src platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
-CORE_NAMES = $(notdir $(CORE_SRC:.c=))
+FW_SRC_DIRS = $(CORE_DIRS) platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
+# (the objects are linked by file name, whatever folder a file is in)
+CORE_NAMES = $(sort $(notdir $(CORE_SRC:.c=)))
 FW_NAMES = $(CORE_NAMES) $(basename $(notdir $(FW_PORT_SRC)))
 
 # ---- scene compiler (a host tool, with the firmware's capacities) -------
 
-$(SCENEC_DIR)/%.o: src/%.c $(wildcard include/*.h src/*.h) platform/firmware/firmware.mk
+$(SCENEC_DIR)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
 	@mkdir -p $(@D)
 	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -c $< -o $@
 
-$(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst %,$(SCENEC_DIR)/%.o,$(CORE_NAMES)) \
-                         $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h)
+$(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst src/%.c,$(SCENEC_DIR)/%.o,$(CORE_SRC)) \
+                         $(wildcard platform/hosted/*.h) $(CORE_H)
 	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    $(filter %.c %.o,$^)
 
@@ -173,12 +174,12 @@ $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scene
 # built for that backend (host cc, -ffp-contract=off as the firmware, libm
 # for the reader's tan/sin/cos/floor): the same bits the host reader makes.
 define scenec_fp
-$(SCENEC_DIR)-$(1)/%.o: src/%.c $(wildcard include/*.h src/*.h) platform/firmware/firmware.mk
+$(SCENEC_DIR)-$(1)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
 	@mkdir -p $$(@D)
 	$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc -c $$< -o $$@
 
-$(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst %,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_NAMES)) \
-                         $(wildcard platform/hosted/*.h) $(wildcard include/*.h src/*.h)
+$(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst src/%.c,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_SRC)) \
+                         $(wildcard platform/hosted/*.h) $(CORE_H)
 	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
 
@@ -191,7 +192,7 @@ $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 
 # $(1) backend, $(2) a folder of sources
 define firmware_objs
-$(FW_DIR)/$(1)/%.o: $(2)/%.c $(wildcard include/*.h src/*.h platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
+$(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) $(wildcard platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES)),-Os) -c $$< -o $$@
 $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk

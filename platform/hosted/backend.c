@@ -3,11 +3,11 @@
 
 #include <math.h>
 
-#include "camera.h"
-#include "nff.h"
-#include "prims.h"
-#include "scene_hit.h"
-#include "trace.h"
+#include "geometry/camera.h"
+#include "reader/nff.h"
+#include "geometry/prims.h"
+#include "geometry/scene_hit.h"
+#include "tracer/trace.h"
 
 /* BACKEND_ID (from the Makefile) names this build: rt_backend_<id>. */
 #ifndef BACKEND_ID

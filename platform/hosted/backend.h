@@ -14,7 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "bvh.h"
+#include "geometry/bvh.h"
 #include "rt_fb.h"
 #include "rt_render.h"
 #include "rt_error.h"

@@ -1,8 +1,8 @@
 /* trace.c - the recursive Whitted tracer; recursion depth <= RT_MAX_DEPTH. */
 #include "trace.h"
 
-#include "prims.h"
-#include "scene_hit.h"
+#include "geometry/prims.h"
+#include "geometry/scene_hit.h"
 #include "texture.h"
 
 typedef struct {

@@ -6,7 +6,7 @@
 #ifndef TEXTURE_H
 #define TEXTURE_H
 
-#include "scene.h"
+#include "geometry/scene.h"
 
 /* The colour C of texture tx at point p (in the scene's scale). */
 colour_t texture_colour(const texture_t *tx, vec3_t p);

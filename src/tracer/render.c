@@ -1,8 +1,8 @@
 /* render.c - the frame loop: eye rays per pixel, pixels packed per band. */
 #include "rt_render.h"
 
-#include "camera.h"
-#include "scene_hit.h"
+#include "geometry/camera.h"
+#include "geometry/scene_hit.h"
 #include "trace.h"
 
 /* RT_FB_ONLY_FORMAT (a build flag, e.g. the board's): the one format the

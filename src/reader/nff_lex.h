@@ -20,9 +20,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "real.h"
+#include "numeric/real.h"
 #include "rt_error.h"
-#include "vec3.h"
+#include "numeric/vec3.h"
 
 typedef struct {
     const char *p, *end;

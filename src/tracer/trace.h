@@ -2,8 +2,8 @@
 #ifndef TRACE_H
 #define TRACE_H
 
-#include "geometry.h"
-#include "scratch.h"
+#include "geometry/geometry.h"
+#include "geometry/scratch.h"
 
 /* A material's Kd C and ambient term I Kd C, kept per ray depth: a hit
  * is mostly on the material the same depth of the previous pixel met. */

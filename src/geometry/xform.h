@@ -11,7 +11,7 @@
 #define XFORM_H
 
 #include "scene.h"
-#include "vec3.h"
+#include "numeric/vec3.h"
 
 void xform_identity(xform_t *x);
 void xform_translate(xform_t *x, vec3_t v);

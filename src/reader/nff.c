@@ -10,9 +10,9 @@
 #include "nff.h"
 #include "rt.h"
 
-#include "bvh.h"
-#include "camera.h"
-#include "geometry.h"
+#include "geometry/bvh.h"
+#include "geometry/camera.h"
+#include "geometry/geometry.h"
 #include "nff_lex.h"
 #include "nff_scene.h"
 #include "nff_solids.h"

@@ -16,7 +16,7 @@
 
 #include "prim_kinds.h"
 #include "rt_config.h"
-#include "vec3.h"
+#include "numeric/vec3.h"
 
 #define FIELDS_material_t(X) \
     X(colour_t, colour, ) /* C */ \

@@ -16,7 +16,7 @@
  */
 #include "nff_solids.h"
 
-#include "solid.h"
+#include "geometry/solid.h"
 
 /* ---- building solids ---------------------------------------------------- */
 

@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 #include "rt_error.h"
-#include "scene.h"
+#include "geometry/scene.h"
 
 /* Parses `len` bytes of NFF text into `store`, builds its BVH and points
  * store->scene at its tables. On failure returns false with err->line and err->msg set

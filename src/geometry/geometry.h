@@ -12,6 +12,6 @@
 
 #include "ray.h"
 #include "scene.h"
-#include "tolerance.h"
+#include "numeric/tolerance.h"
 
 #endif

@@ -11,7 +11,7 @@
 #include <stdint.h>
 
 #include "nff_lex.h"
-#include "scene.h"
+#include "geometry/scene.h"
 
 /* An open transform or CSG block. */
 typedef struct {

@@ -10,8 +10,8 @@
 #include <stdbool.h>
 #include <stdint.h>
 
-#include "tolerance.h"
-#include "vec3.h"
+#include "numeric/tolerance.h"
+#include "numeric/vec3.h"
 
 /* The scene (scene.h). Kind headers only pass it on, so an incomplete
  * type is enough for them. */

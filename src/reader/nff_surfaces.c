@@ -12,7 +12,7 @@
  */
 #include "nff_surfaces.h"
 
-#include "geometry.h"
+#include "geometry/geometry.h"
 
 bool rd_plane(reader_t *r)
 {

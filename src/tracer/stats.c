@@ -1,7 +1,7 @@
 /* stats.c - walking the counters of rt_stats.h by key. */
 #include "rt_stats.h"
 
-#include "prim_kinds.h"
+#include "geometry/prim_kinds.h"
 
 #include <stddef.h>
 
