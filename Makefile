@@ -172,11 +172,14 @@ bench: deps
 	@echo
 	python3 bench/threads_bench.py
 	@echo
-	@BOARD=$(BOARD) sh bench/bvh-bench.sh
+	@BOARD=$(BOARD) sh bench/keep.sh bench/bvh.md "BVH and pruning" sh bench/bvh-bench.sh
 	@echo
-	@sh bench/prims-bench.sh
+	@sh bench/keep.sh bench/prims.md "One intersection test per primitive on the board" sh bench/prims-bench.sh
 	@echo
-	@sh bench/lib-size.sh
+	@sh bench/keep.sh bench/lib-size.md "The core's footprint as a library" sh bench/lib-size.sh
+	@echo
+	@sh bench/keep.sh bench/profile.md "Where balls-2's instructions go on mps2-an385 (fixed, 64x64)" \
+	    $(MAKE) -s profile BOARD=mps2-an385 BACKEND=fixed SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5
 	@echo
 	python3 bench/boards_bench.py
 	@echo

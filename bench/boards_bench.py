@@ -19,6 +19,7 @@ bench/cores_bench.py measures its split. It writes bench/boards.md and
 bench/boards.csv.
 
   bench/boards_bench.py [--boards a,b] [--scenes a,b] [--cycles-scenes a,b] [--no-cycles] [--update]
+  bench/boards_bench.py --from-csv
 """
 import argparse
 import csv
@@ -150,10 +151,15 @@ def main():
     ap.add_argument("--no-cycles", action="store_true")
     ap.add_argument("--update", action="store_true",
                     help="re-measure only the selected rows; keep the others of bench/boards.csv")
+    ap.add_argument("--from-csv", action="store_true",
+                    help="measure nothing: rewrite bench/boards.md (and the csv) from bench/boards.csv")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    run(["make", "-s", "build/host/rt"])
-    sel_boards = a.boards.split(",") if a.boards else boards()
+    if a.from_csv:
+        a.update = True
+    else:
+        run(["make", "-s", "build/host/rt"])
+    sel_boards = [] if a.from_csv else a.boards.split(",") if a.boards else boards()
     scenes = a.scenes.split(",") if a.scenes else SCENES
     cyc_scenes = [] if a.no_cycles else a.cycles_scenes.split(",")
     rows = []
@@ -191,22 +197,7 @@ def main():
                 r["ipp"] = int(r["ipp"]) if r.get("ipp") else ""
                 merged.append(r)
         rows = merged + list(fresh.values())
-    # the figures before issue 16's cuts (bench/boards-before.csv: this
-    # script's output at commit ed5f6d7), beside each row
-    before = {}
-    bpath = os.path.join(ROOT, "bench", "boards-before.csv")
-    if os.path.exists(bpath):
-        with open(bpath) as f:
-            before = {(r["board"], r["backend"], r["scene"]): r for r in csv.DictReader(f)}
-    for r in rows:
-        b = before.get((r["board"], r["backend"], r["scene"]))
-        if b and b.get("ipp") and r.get("ipp"):
-            r["ipp_before"] = b["ipp"]
-            r["speedup"] = "%.2f" % (int(b["ipp"]) / r["ipp"])
-            r["psnr_before"] = b.get("psnr", "")
-            r["code_before"] = b.get("code", "")
-    keys = ["board", "backend", "scene", "ipp", "ipp_before", "speedup", "cpi", "cpp", "psnr", "psnr_before",
-            "max_error", "code", "code_before", "ram"]
+    keys = ["board", "backend", "scene", "ipp", "cpi", "cpp", "psnr", "max_error", "code", "ram"]
     write_csv(os.path.join(ROOT, "bench", "boards.csv"), keys, rows)
     with open(os.path.join(ROOT, "bench", "boards.md"), "w") as f:
         f.write("# Boards and backends (bench/boards_bench.py)\n\n")
@@ -216,11 +207,8 @@ def main():
                 "are rp2040js's count of the whole render (no flash wait states or XIP cache\n"
                 "modelled); PSNR and max error against the\n"
                 "exact double reference in the board's pixel format; code and static RAM of the ELF.\n\n")
-        f.write("\"before\": the same measurement at commit ed5f6d7, before issue 16's cuts\n"
-                "(bench/boards-before.csv); speed-up = instructions before / after.\n\n")
-        f.write("| board | backend | scene | instr/px | before | speed-up | CPI | est. cycles/px | PSNR (dB) | "
-                "before | max error | code (B) | before | RAM (B) |\n")
-        f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+        f.write("| board | backend | scene | instr/px | CPI | est. cycles/px | PSNR (dB) | max error | code (B) | RAM (B) |\n")
+        f.write("|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
             f.write("| %s |\n" % " | ".join(str(r.get(k, "failed" if k == "ipp" else "")) for k in keys))
     print("wrote bench/boards.md and bench/boards.csv")

@@ -9,6 +9,14 @@
   - every `make TARGET` the pages name is a target make knows (make -n);
   - every make variable given as VAR=value on a `make ...` line is one the
     Makefile or a board.mk reads;
+  - every measured figure names where it comes from: a paragraph, list
+    item or table (with the paragraph before it) that gives a number in
+    dB, instructions or cycles per pixel or per test, ms, seconds at a
+    clock, a ratio such as 1.9x, or a table with such a column, names a
+    result file of bench/ or the test of tests/ that prints it (a
+    bound such as >= 45 dB is not a figure);
+  - every result file of bench/ the pages name is one `make bench`
+    writes: its name is in the source of a script the bench rule runs;
   - README.md is at most 250 lines.
 
   tests/docs-check.py [RT]
@@ -116,6 +124,45 @@ unknown = sorted(targets - have)
 check(not unknown, "%d make targets the docs name exist%s" % (len(targets), ": unknown " + " ".join(unknown) if unknown else ""))
 check(not bad_vars, "make variables the docs set are read by the Makefile or a board.mk%s" %
       (": unknown " + " ".join(sorted(bad_vars)) if bad_vars else ""))
+
+# figures and their sources
+FIGURE = re.compile(r"(?<![<>=\w.,])(?<![<>=] )(?:\d[\d,]*(?:\.\d+)?\s?(?:dB|ms\b|s at \d|s of\b"
+                    r"|instructions? (?:per|a) (?:pixel|test)|instr/px|cycles (?:per|a) pixel|cycles/px)"
+                    r"|\d+\.\d+(?:x\b|\s?times\b))")  # ratios with a decimal point: 1.9x, 3.7 times
+FIGURE_COLUMN = re.compile(r"dB|PSNR|instr|cycles|\(bytes\)|\(B\)|speed-up|\(s\)|\bms\b")
+SOURCE = re.compile(r"\b(bench/[\w.-]+\.(?:md|csv|svg)|tests/[\w.-]+|[\w-]+\.(?:sh|py|c)\b)")
+
+
+def figure_in(block):
+    if FIGURE.search(block):
+        return True
+    rows = [r for r in block.splitlines() if r.lstrip().startswith("|")]
+    return len(rows) > 2 and bool(FIGURE_COLUMN.search(rows[0])) and any(
+        re.search(r"\|\s*[\d.,]+\s*(\||\()", r) for r in rows[2:])
+
+
+unsourced, named_results = [], set()
+for page in pages:
+    with open(page) as f:
+        text = re.sub(r"```.*?```", "", f.read(), flags=re.S)
+    named_results.update(m for m in re.findall(r"bench/[\w.-]+\.(?:md|csv|svg)", text))
+    blocks = [b for b in re.split(r"\n\s*\n|\n(?=\s*- )", text) if b.strip()]
+    for i, b in enumerate(blocks):
+        if b.lstrip().startswith("#") or not figure_in(b):
+            continue
+        near = b + ("\n" + blocks[i - 1] if b.lstrip().startswith("|") and i else "")
+        if not any(os.path.exists(s) or os.path.exists("tests/" + s) for s in SOURCE.findall(near)):
+            unsourced.append("%s: %s" % (os.path.relpath(page, ROOT), " ".join(b.split())[:90]))
+check(not unsourced, "every measured figure names its bench file or test%s" %
+      ("".join("\n          " + u for u in unsourced) if unsourced else ""))
+# the scripts `make bench` runs (read from the Makefile: make -n would run the sub-makes)
+with open("Makefile") as f:
+    bench_rule = re.search(r"^bench:.*?\n((?:\t.*\n)+)", f.read(), re.M).group(1)
+scripts = set(re.findall(r"bench/[\w.-]+\.(?:py|sh)", bench_rule))
+sources = "".join(open(s).read() for s in scripts if os.path.exists(s)) + bench_rule
+stale = sorted(r for r in named_results if not os.path.exists(r) or os.path.basename(r) not in sources)
+check(scripts and not stale, "%d bench result files the docs name are written by make bench (%d scripts)%s" %
+      (len(named_results), len(scripts), ": not " + " ".join(stale) if stale else ""))
 
 with open("README.md") as f:
     lines = sum(1 for _ in f)
