@@ -5,7 +5,8 @@
 # The text still goes to stdout; the command's exit status is kept.
 out=$1 title=$2
 shift 2
-tmp="$out.tmp"
+mkdir -p build
+tmp=build/keep.$$.tmp
 "$@" >"$tmp"
 rc=$?
 cat "$tmp"
