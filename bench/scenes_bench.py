@@ -143,7 +143,7 @@ def main():
         for chip, fpu, s, hz, t in PUBLISHED:
             f.write("| %s | %s | %s | %g MHz | %g s | %s |\n" % (chip, fpu, s, hz / 1e6, t,
                                                                   format(round(t * hz / 76800), ",")))
-        f.write("\n| board | backend | float in hardware | scene | depth | size | instr/px | CPI | est. cycles/px | "
+        f.write("\n| board | backend | float in hardware | scene | depth | size | instr/px | CPI | cycles/px | cycles | "
                 "PSNR exact (dB) | max error | PSNR pixel area (dB) | > 8/255 vs area | code (B) |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
