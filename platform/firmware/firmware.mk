@@ -31,6 +31,13 @@
 # of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
 # insists on), BOARD_TAG (a suffix of the build folder for the board's own
 # build choices), BOARD_CYCLES := 1 (the port counts cycles),
+# BOARD_INSTR_COUNTER := 0 (the chip has no instruction counter: the
+# runner counts from outside, port.h), BOARD_ARCH_SKIP (files of
+# platform/arch/<arch>/ it replaces, by name without .c: semihost, for a
+# board that ends its run without a debugger), BOARD_RULES (a makefile
+# of its own build steps, included after these), BOARD_OBJS (objects those
+# steps make, linked into every image), BOARD_IMAGES (files those steps
+# make from $(FW_DIR)/<backend>.elf, built with it: what a user flashes),
 # BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
 # one word each, commas for spaces).
 #
@@ -47,6 +54,11 @@ endif
 BOARD_FPU  :=
 BOARD_CORES := 1
 BOARD_CYCLES := 0
+BOARD_INSTR_COUNTER := 1
+BOARD_ARCH_SKIP :=
+BOARD_RULES :=
+BOARD_OBJS :=
+BOARD_IMAGES :=
 BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
@@ -66,6 +78,7 @@ endif
 FW_CC   = $(BOARD_CROSS)gcc
 FW_NM   = $(BOARD_CROSS)nm
 FW_SIZE = $(BOARD_CROSS)size
+FW_OBJCOPY = $(BOARD_CROSS)objcopy
 
 # Flash tables make these limits of the scene compiler, not of RAM.
 BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
@@ -123,7 +136,7 @@ SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (camera.c, render.c: set-up and once per pixel),
@@ -146,7 +159,8 @@ FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
 # architecture's reset and exit, the board's own, the display sink.
 FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c platform/firmware/sink_io.c \
               $(if $(filter-out 1,$(CORES)),platform/firmware/bands.c) \
-              platform/firmware/libc_min.c $(BOARD_SINK) $(wildcard platform/arch/$(BOARD_ARCH)/*.c) \
+              platform/firmware/libc_min.c $(BOARD_SINK) \
+              $(filter-out $(BOARD_ARCH_SKIP:%=platform/arch/$(BOARD_ARCH)/%.c),$(wildcard platform/arch/$(BOARD_ARCH)/*.c)) \
               $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)
 FW_SRC_DIRS = $(CORE_DIRS) platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
 # (the objects are linked by file name, whatever folder a file is in)
@@ -201,9 +215,9 @@ $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk
 endef
 $(foreach b,$(BOARD_BACKENDS),$(foreach d,$(FW_SRC_DIRS) $(FW_DIR),$(eval $(call firmware_objs,$(b),$(d)))))
 
-FW_OBJS_fixed  = $(patsubst %,$(FW_DIR)/fixed/%.o,$(FW_NAMES) scene_flash scene_data)
-FW_OBJS_float  = $(patsubst %,$(FW_DIR)/float/%.o,$(FW_NAMES) scene_flash scene_data_float)
-FW_OBJS_double = $(patsubst %,$(FW_DIR)/double/%.o,$(FW_NAMES) scene_flash scene_data_double)
+FW_OBJS_fixed  = $(patsubst %,$(FW_DIR)/fixed/%.o,$(FW_NAMES) scene_flash scene_data) $(BOARD_OBJS)
+FW_OBJS_float  = $(patsubst %,$(FW_DIR)/float/%.o,$(FW_NAMES) scene_flash scene_data_float) $(BOARD_OBJS)
+FW_OBJS_double = $(patsubst %,$(FW_DIR)/double/%.o,$(FW_NAMES) scene_flash scene_data_double) $(BOARD_OBJS)
 PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fixed/bench_prims.o
 
 # libc and libm only for what a soft-float build needs (newlib's sqrt; a
@@ -221,7 +235,11 @@ $(eval $(call firmware_elf,double,-lm -lc))
 $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
 	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
 
-firmware: $(FW_ELF)
+firmware: $(FW_ELF) $(BOARD_IMAGES)
+
+ifneq ($(BOARD_RULES),)
+include $(BOARD_RULES)
+endif
 
 # ---- running it ------------------------------------------------------------
 
@@ -244,7 +262,7 @@ RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
 RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
 RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
 run: deps-board
-	$(MAKE) build/host/rt $(FW_ELF) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER)
+	$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER)
 	@mkdir -p out
 	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
@@ -256,6 +274,7 @@ run: deps-board
 	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1
 	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))"
+	@$(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && echo "for the board: $(basename $(RUN_OUT))$(suffix $(f))";)
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt

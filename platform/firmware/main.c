@@ -117,8 +117,12 @@ int main(void)
         return 1;
     }
     report_value("pixels", pixels);
+#if BOARD_INSTR_COUNTER
     report_value("render_instructions", instr);
     report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
+#else
+    (void)instr;
+#endif
 #if BOARD_CYCLES && BOARD_CORES == 1
     report_value("render_cycles", cycles);
     report_value("cycles_per_pixel", (cycles + pixels / 2) / pixels);

@@ -8,9 +8,12 @@
  *     passes its result to port_exit() (platform/arch/<arch>/ has one
  *     per architecture, so a board usually writes none);
  *   - port_init(), port_write(): console bytes out, binary-safe;
- *   - port_icount_start(), port_icount_read(): an instruction counter;
- *   - port_exit(): end the run with a status (semihosting under QEMU;
- *     in platform/arch/<arch>/ as well);
+ *   - port_icount_start(), port_icount_read(): an instruction counter
+ *     (unless the chip has none: BOARD_INSTR_COUNTER below);
+ *   - port_exit(): end the run with a status (semihosting under QEMU,
+ *     in platform/arch/<arch>/ as well; a board meant for silicon
+ *     without a debugger brings its own and leaves the arch's out with
+ *     BOARD_ARCH_SKIP in its board.mk);
  *   - a linker script that defines MEMORY and includes
  *     platform/firmware/sections.ld (which defines the symbols below);
  *   - board.mk: CPU flags, QEMU command, clock, backends (docs/boards.md,
@@ -30,9 +33,21 @@ void port_init(void);
 void port_write(const void *data, size_t len);
 
 /* Guest instructions since port_icount_start(), exact under QEMU's
- * -icount shift=0 (each port says how it counts). */
+ * -icount shift=0 (each port says how it counts). A chip with no
+ * instruction counter (the RP2040's Cortex-M0+) sets
+ * BOARD_INSTR_COUNTER := 0 in its board.mk: it then provides neither,
+ * its report gives no instruction counts, and the board's runner counts
+ * them from outside the image (platform/pico/run.mjs). */
+#ifndef BOARD_INSTR_COUNTER /* firmware.mk passes the board's */
+#define BOARD_INSTR_COUNTER 1
+#endif
+#if BOARD_INSTR_COUNTER
 void port_icount_start(void);
 uint64_t port_icount_read(void);
+#else
+static inline void port_icount_start(void) {}
+static inline uint64_t port_icount_read(void) { return 0; }
+#endif
 
 /* Core cycles since reset, exact (each port says by what): only a board
  * whose board.mk sets BOARD_CYCLES := 1 provides it, and its report then

@@ -1,10 +1,14 @@
-# board.mk - Raspberry Pi Pico (RP2040) under rp2040js (Node.js), not
-# QEMU: one Cortex-M0+ at 125 MHz (the second core is not emulated), 2 MiB
-# of flash, 256 KiB of SRAM, no FPU, no divide instruction (the SIO
-# divider instead: PICO_DIVIDER), and an ST7789 320x240 panel on SPI0
-# where the frame goes (st7789.c, by DMA). Report lines go over UART0.
-# run.mjs runs it, with rp2040js pinned in package.json (npm ci, by
-# platform/ensure-deps.sh). Variables: platform/firmware/firmware.mk.
+# board.mk - Raspberry Pi Pico (RP2040): one Cortex-M0+ at 125 MHz from
+# the 12 MHz crystal (the second core is not used), 2 MiB of flash,
+# 264 KiB of SRAM, no FPU, no divide instruction (the SIO divider
+# instead: PICO_DIVIDER), and an ST7789 panel on SPI0 where the frame
+# goes (st7789.c, by DMA). Report lines go over UART0 (GP0, 115200 8N1).
+# The image is for the chip: boot2 (boot2.S) first, code copied to SRAM,
+# clocks and resets brought up in board.c, cycles counted by SysTick,
+# the run ended by sleeping; the build writes <backend>.uf2 beside the
+# ELF (image.mk). run.mjs boots that UF2 under rp2040js the way the chip
+# does (rp2040js pinned in package.json, installed into node_modules/ by
+# npm ci, by platform/ensure-deps.sh). Variables: platform/firmware/firmware.mk.
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m0plus -mthumb
@@ -21,8 +25,16 @@ BOARD_BACKENDS := fixed float
 BOARD_SRC      := platform/pico/board.c
 BOARD_LD       := platform/pico/link.ld
 BOARD_RUN      := node platform/pico/run.mjs
-# the emulator counts cycles: the report gives them beside instructions
+# SysTick counts cycles (board.c); the M0+ has no instruction counter, so
+# run.mjs counts instructions from outside the image; no semihosting: the
+# run ends with the exit status as a report line, then the core sleeps
 BOARD_CYCLES   := 1
+BOARD_INSTR_COUNTER := 0
+BOARD_ARCH_SKIP := semihost
+# boot2 with its CRC, and the UF2 to copy onto the RPI-RP2 drive
+BOARD_RULES    := platform/pico/image.mk
+BOARD_OBJS     := build/board/pico/boot2/boot2_crc.o
+BOARD_IMAGES    = $(FW_DIR)/$(BACKEND).uf2
 # make run renders one sample a pixel: rp2040js runs 25 to 35 million
 # cycles a second, and the default scene anti-aliased (AA=3) takes about
 # three minutes of the host's time, one sample about forty seconds
@@ -30,9 +42,21 @@ BOARD_RUN_AA   := 0
 # PICO_DISPLAY=st7789 (default): the frame on the panel, rgb565be;
 # uart: the framed stream on UART0, as on the QEMU boards
 PICO_DISPLAY   ?= st7789
+# PANEL (st7789): 320x240 (Pimoroni's Pico Display Pack 2.0, default) or
+# 240x240 (the square 1.3" modules); PANEL_FLIP=1 turns the picture by
+# 180 degrees, for a module mounted the other way up (st7789.c)
+PANEL          ?= 320x240
+PANEL_FLIP     ?= 0
 ifeq ($(PICO_DISPLAY),st7789)
+ifeq ($(filter 320x240 240x240,$(PANEL)),)
+$(error PANEL=$(PANEL): 320x240 or 240x240)
+endif
+ifeq ($(filter 0 1,$(PANEL_FLIP)),)
+$(error PANEL_FLIP=$(PANEL_FLIP): 0 or 1)
+endif
 BOARD_SINK     := platform/pico/st7789.c
 BOARD_SINK_CALLBACKS := panel_begin,panel_flush,transfer_wait,panel_end
+BOARD_CFLAGS   += -DPANEL_WIDTH=$(word 1,$(subst x, ,$(PANEL))) -DPANEL_HEIGHT=$(word 2,$(subst x, ,$(PANEL))) -DPANEL_FLIP=$(PANEL_FLIP)
 FW_FORMAT      := rgb565be
 # two band buffers of 4 lines (st7789.c splits the one main.c gives it)
 BAND_LINES     ?= 8
@@ -47,11 +71,19 @@ BOARD_CFLAGS   += -DRT_UDIV32_HEADER='"sio_div.h"' -DRT_UDIV32=sio_udiv32 -Iplat
 else ifneq ($(PICO_DIVIDER),0)
 $(error PICO_DIVIDER=$(PICO_DIVIDER): 1 or 0)
 endif
+# PICO_OMIT=clk_peri: for run.mjs's own tests only, an image that leaves
+# clk_peri stopped, as a chip would run it: the runner must fail it
+PICO_OMIT      ?=
+ifeq ($(PICO_OMIT),clk_peri)
+BOARD_CFLAGS   += -DPICO_OMIT_CLK_PERI=1
+else ifneq ($(PICO_OMIT),)
+$(error PICO_OMIT=$(PICO_OMIT): clk_peri or nothing)
+endif
 # make bench measures libgcc's division too (fixed backend: the divider
 # serves the fixed layer)
 BOARD_BENCH_VARIANTS := PICO_DIVIDER=0
-# the build folder's name says both choices when they are not the defaults
-BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart)$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)
+# the build folder's name says the choices that are not the defaults
+BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart,$(if $(filter-out 320x240,$(PANEL)),-$(PANEL))$(if $(filter 1,$(PANEL_FLIP)),-flip))$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)$(if $(PICO_OMIT),-omit_$(PICO_OMIT))
 ifneq ($(filter profile,$(MAKECMDGOALS)),)
 $(error make profile traces under QEMU, which has no RP2040: BOARD=microbit profiles the same ARMv6-M code)
 endif

@@ -1,33 +1,84 @@
 /*
- * st7789.c - the Pico's display (sink.h): an ST7789 320x240 colour panel
- * on SPI0, RGB565 big-endian (the core's rgb565be bytes go out as
- * rendered), each band sent by DMA while the core renders the next.
+ * st7789.c - the Pico's display (sink.h): an ST7789 colour panel on SPI0,
+ * RGB565 big-endian (the core's rgb565be bytes go out as rendered), each
+ * band sent by DMA while the core renders the next.
  *
- * Pins as on Pimoroni's Pico Display Pack 2.0 (ST7789, 320x240): SPI0
- * SCK GP18, TX GP19, chip select GP17, data/command GP16 (low: command),
- * backlight GP20. Per band: wait for the last transfer, then CASET and
- * RASET (the band's window), RAMWR, and the band's bytes by DMA channel 0
- * paced by SPI0's transmit request. A frame smaller than the panel is
- * drawn at its top left; the sink then reports frame_width and
- * frame_height, which tell run.mjs what part of the panel to take.
+ * Panels (PANEL, PANEL_FLIP in board.mk), set as their makers' own
+ * drivers set them (Pimoroni's, for the Display Pack 2.0 and the 1.3"
+ * 240x240 modules). The controller's memory is 240 columns x 320 rows;
+ * MADCTL says how the window addresses map onto it:
+ *   320x240, upright    MX|MV|ML (0x70): rows and columns exchanged,
+ *                       columns mirrored, a rotation (MV alone would be
+ *                       a transpose: the picture mirrored)
+ *   320x240, flipped    MY|MV|ML (0xb0): the same turned by 180 degrees
+ *   240x240, upright    0: the glass shows memory rows 0..239
+ *   240x240, flipped    MX|MY (0xc0), rows addressed from 80: mirrored
+ *                       rows 80..319 land on memory rows 239..0
  *
- * The init sequence and timings are the controller's datasheet's
- * (software reset, sleep out, 16-bit colour, landscape, inversion on for
- * IPS glass, display on). Written for a real module and checked only
- * against run.mjs's decoder: untested on hardware. A real Pico also needs
- * what the emulator does without: a boot2 stage before the vector table,
- * and clk_sys raised to 125 MHz from the PLL (the delays below count
- * cycles at 125 MHz, so at a slower clock they only grow).
+ * Pins, as on Pimoroni's Pico Display Pack 2.0 (another module: wire it
+ * the same, or change them here): SPI0 SCK GP18, TX GP19, chip select
+ * GP17, data/command GP16 (low: command), backlight GP20 (high: on). The
+ * Display Pack ties the controller's reset to the Pico's RUN line; a
+ * module with a reset pin of its own: set PIN_RESET to its GPIO.
+ *
+ * The SPI: mode 0 (clock idle low, data sampled on the rising edge), 8-bit
+ * frames, 62.5 MHz (clk_peri / 2: the ST7789's 16 ns write cycle). It is
+ * configured and enabled before chip select is first driven low, so the
+ * clock line never moves while the panel listens; chip select then goes
+ * low for each command with its parameters, or each band's pixels, and
+ * high again after, which also resynchronises the panel's serial
+ * interface if a bit was ever lost.
+ *
+ * Start-up, with the datasheet's waits: hardware reset (when wired) or
+ * software reset, 120 ms; sleep out, 120 ms; 16-bit colour, MADCTL,
+ * inversion on (IPS glass, which both modules are, shows inverted colours
+ * without it), normal mode, display on, then the backlight. The panel's
+ * voltage and gamma registers keep their reset values (what Adafruit's
+ * and others' minimal drivers rely on; tuned values are the module
+ * maker's, for contrast, not for geometry). The delays count cycles at
+ * 125 MHz (board.h).
+ *
+ * Per band: wait for the last transfer, then CASET and RASET (the band's
+ * window, with the panel's offset), RAMWR and the band's bytes by DMA
+ * channel 0 paced by SPI0's transmit request; chip select rises when the
+ * transfer is done. A frame smaller than the panel is drawn at its top
+ * left; the sink then reports frame_width and frame_height, which tell
+ * run.mjs what part of the panel to take. A progress line goes to the
+ * UART at each tenth of the frame, and the LED toggles at each band.
+ *
+ * Checked against run.mjs's model of the controller (st7789.mjs), not on
+ * hardware: docs/boards.md, "On a real Pico", says what only a real
+ * module can confirm.
  */
 #include "../arch/cortex-m/pl022.h"
+#include "board.h"
 #include "port.h"
 #include "sink.h"
 
+#ifndef PANEL_WIDTH /* board.mk passes PANEL's */
 #define PANEL_WIDTH 320
 #define PANEL_HEIGHT 240
+#endif
+#ifndef PANEL_FLIP
+#define PANEL_FLIP 0
+#endif
+_Static_assert((PANEL_WIDTH == 320 || PANEL_WIDTH == 240) && PANEL_HEIGHT == 240, "PANEL: 320x240 or 240x240");
+
+/* MADCTL bits */
+#define MADCTL_MY 0x80u /* row addresses bottom to top */
+#define MADCTL_MX 0x40u /* column addresses right to left */
+#define MADCTL_MV 0x20u /* rows and columns exchanged */
+#define MADCTL_ML 0x10u /* refresh bottom to top (no effect on memory) */
+#if PANEL_WIDTH == 320
+#define PANEL_MADCTL (PANEL_FLIP ? MADCTL_MY | MADCTL_MV | MADCTL_ML : MADCTL_MX | MADCTL_MV | MADCTL_ML)
+#define PANEL_ROW_OFFSET 0u
+#else
+#define PANEL_MADCTL (PANEL_FLIP ? MADCTL_MX | MADCTL_MY : 0u)
+#define PANEL_ROW_OFFSET (PANEL_FLIP ? 80u : 0u) /* 320 memory rows, 240 of glass */
+#endif
 
 #if defined(BOARD_WIDTH) && defined(BOARD_HEIGHT)
-_Static_assert(BOARD_WIDTH <= PANEL_WIDTH && BOARD_HEIGHT <= PANEL_HEIGHT, "the frame is larger than the 320x240 panel (SIZE)");
+_Static_assert(BOARD_WIDTH <= PANEL_WIDTH && BOARD_HEIGHT <= PANEL_HEIGHT, "the frame is larger than the panel (SIZE, PANEL)");
 #endif
 #ifdef RT_FB_ONLY_FORMAT
 _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be pixels (FW_FORMAT in board.mk)");
@@ -36,12 +87,6 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 #define REG(addr) (*(volatile uint32_t *)(addr))
 
 #define SPI0 0x4003c000u /* a PL022 */
-#define RESETS_RESET_CLR REG(0x4000f000u)
-#define RESETS_DONE REG(0x4000c008u)
-#define RESET_DMA (1u << 2)
-#define RESET_SPI0 (1u << 16)
-#define CLK_PERI_CTRL REG(0x40008048u)
-#define CLK_PERI_ENABLE (1u << 11) /* auxiliary source 0: clk_sys */
 #define GPIO_CTRL(n) REG(0x40014004u + 8u * (n))
 #define FUNC_SPI 1u
 #define FUNC_SIO 5u
@@ -53,6 +98,7 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 #define PIN_SCK 18u
 #define PIN_TX 19u
 #define PIN_BACKLIGHT 20u
+/* #define PIN_RESET n   -- a module whose reset pin is wired to GPIO n */
 
 /* DMA channel 0 */
 #define DMA_READ_ADDR REG(0x50000000u)
@@ -76,28 +122,43 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 #define ST_RAMWR 0x2Cu
 #define ST_MADCTL 0x36u
 #define ST_COLMOD 0x3Au
-#define MADCTL_LANDSCAPE 0x20u /* MV: rows and columns exchanged, 320 columns */
 #define COLMOD_RGB565 0x55u
 
-static uint16_t frame_width, frame_height;
+#define CYCLES_PER_MS (CLK_SYS_HZ / 1000u)
 
-/* At least `cycles` processor cycles (3 a turn on the M0+). */
-static void delay_cycles(uint32_t cycles)
+static uint16_t frame_width, frame_height, progress_next;
+static uint64_t frame_start;
+
+static void delay_ms(uint32_t ms)
 {
-    for (uint32_t n = cycles / 3u + 1u; n != 0; n--)
-        __asm__ volatile("");
+    uint64_t end = board_cycles() + (uint64_t)ms * CYCLES_PER_MS;
+    while (board_cycles() < end)
+        ;
 }
 
-static void send(uint8_t cmd, const uint8_t *params, unsigned n)
+static void select_panel(void) { SIO_GPIO_OUT_CLR = 1u << PIN_CS; }
+static void release_panel(void) { SIO_GPIO_OUT_SET = 1u << PIN_CS; }
+
+/* A command and its parameters, the panel selected for just these. */
+static void command(uint8_t cmd, const uint8_t *params, unsigned n)
 {
+    select_panel();
     SIO_GPIO_OUT_CLR = 1u << PIN_DC;
     pl022_send(SPI0, cmd);
     SIO_GPIO_OUT_SET = 1u << PIN_DC;
     for (unsigned i = 0; i < n; i++)
         pl022_send(SPI0, params[i]);
+    release_panel();
 }
 
-/* The last band's transfer done and the bus idle: the buffer is free. */
+static void command16x2(uint8_t cmd, unsigned lo, unsigned hi)
+{
+    const uint8_t p[] = { (uint8_t)(lo >> 8), (uint8_t)lo, (uint8_t)(hi >> 8), (uint8_t)hi };
+    command(cmd, p, sizeof p);
+}
+
+/* The last band's transfer done, the bus idle and the panel released:
+ * the buffer is free. */
 static void transfer_wait(rt_fb_sink_t *s)
 {
     sink_io_begin();
@@ -105,6 +166,7 @@ static void transfer_wait(rt_fb_sink_t *s)
         ;
     pl022_idle(SPI0);
     PL022_ICR(SPI0) = 1u; /* what came back overran the receive FIFO */
+    release_panel();
     rt_fb_flush_ready(s);
     sink_io_end();
 }
@@ -115,6 +177,8 @@ static int panel_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
         return 1;
     frame_width = w;
     frame_height = h;
+    progress_next = 0;
+    frame_start = board_cycles();
     return 0;
 }
 
@@ -123,15 +187,21 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     (void)s;
     sink_io_begin();
     /* the other buffer's transfer is done: the core waited for it */
-    const uint8_t cols[] = { (uint8_t)(a->x1 >> 8), (uint8_t)a->x1, (uint8_t)(a->x2 >> 8), (uint8_t)a->x2 };
-    const uint8_t rows[] = { (uint8_t)(a->y1 >> 8), (uint8_t)a->y1, (uint8_t)(a->y2 >> 8), (uint8_t)a->y2 };
-    send(ST_CASET, cols, sizeof cols);
-    send(ST_RASET, rows, sizeof rows);
-    send(ST_RAMWR, 0, 0);
+    command16x2(ST_CASET, a->x1, a->x2);
+    command16x2(ST_RASET, a->y1 + PANEL_ROW_OFFSET, a->y2 + PANEL_ROW_OFFSET);
+    select_panel();
+    SIO_GPIO_OUT_CLR = 1u << PIN_DC;
+    pl022_send(SPI0, ST_RAMWR);
+    SIO_GPIO_OUT_SET = 1u << PIN_DC;
     DMA_READ_ADDR = (uint32_t)(uintptr_t)px;
     DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
     DMA_TRANS_COUNT = (uint32_t)(a->y2 - a->y1 + 1) * (uint32_t)(a->x2 - a->x1 + 1) * 2u;
     DMA_CTRL_TRIG = DMA_EN | DMA_INCR_READ | DMA_CHAIN_TO_SELF | DMA_TREQ_SPI0_TX;
+    board_heartbeat();
+    if (a->y2 + 1u >= progress_next) {
+        report_value("progress_rows", a->y2 + 1u);
+        progress_next = (uint16_t)(a->y2 + 1u + (frame_height + 9u) / 10u);
+    }
     sink_io_end();
     return 0; /* rt_fb_flush_ready() comes from transfer_wait() */
 }
@@ -140,6 +210,9 @@ static int panel_end(rt_fb_sink_t *s)
 {
     (void)s;
     sink_io_begin();
+    /* (the core waited for the last transfer) the board's own time for
+     * the frame, display included */
+    report_value("frame_ms", (board_cycles() - frame_start + CYCLES_PER_MS / 2) / CYCLES_PER_MS);
     report_value("frame_width", frame_width);
     report_value("frame_height", frame_height);
     sink_io_end();
@@ -148,34 +221,41 @@ static int panel_end(rt_fb_sink_t *s)
 
 void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t bytes)
 {
-    RESETS_RESET_CLR = RESET_DMA | RESET_SPI0;
-    while ((RESETS_DONE & (RESET_DMA | RESET_SPI0)) != (RESET_DMA | RESET_SPI0))
-        ;
-    CLK_PERI_CTRL = CLK_PERI_ENABLE;
-    GPIO_CTRL(PIN_SCK) = FUNC_SPI;
-    GPIO_CTRL(PIN_TX) = FUNC_SPI;
+    board_unreset(RESET_DMA | RESET_SPI0, "bring-up: DMA or SPI0 did not leave reset");
+    /* the panel released and the backlight off while the SPI is set up */
+    SIO_GPIO_OUT_SET = 1u << PIN_CS | 1u << PIN_DC;
+    SIO_GPIO_OUT_CLR = 1u << PIN_BACKLIGHT;
+    SIO_GPIO_OE_SET = 1u << PIN_DC | 1u << PIN_CS | 1u << PIN_BACKLIGHT;
     GPIO_CTRL(PIN_DC) = FUNC_SIO;
     GPIO_CTRL(PIN_CS) = FUNC_SIO;
     GPIO_CTRL(PIN_BACKLIGHT) = FUNC_SIO;
-    SIO_GPIO_OUT_SET = 1u << PIN_DC | 1u << PIN_BACKLIGHT;
-    SIO_GPIO_OUT_CLR = 1u << PIN_CS; /* the panel is the bus's only device */
-    SIO_GPIO_OE_SET = 1u << PIN_DC | 1u << PIN_CS | 1u << PIN_BACKLIGHT;
-    PL022_CR1(SPI0) = 0;          /* disabled while it is set up */
-    PL022_CPSR(SPI0) = 2;         /* 125 MHz / 2 = 62.5 MHz, the ST7789's fastest write clock */
-    PL022_CR0(SPI0) = 3u << 6 | 7u; /* SPI mode 3, 8-bit frames */
-    PL022_DMACR(SPI0) = 2u;       /* transmit requests to the DMA */
-    PL022_CR1(SPI0) = 2u;         /* enabled, master */
+    PL022_CR1(SPI0) = 0;  /* disabled while it is set up */
+    PL022_CPSR(SPI0) = 2; /* clk_peri 125 MHz / 2 = 62.5 MHz */
+    PL022_CR0(SPI0) = 7u; /* SPI mode 0 (SPO 0, SPH 0), 8-bit frames */
+    PL022_DMACR(SPI0) = 2u; /* transmit requests to the DMA */
+    PL022_CR1(SPI0) = 2u;   /* enabled, master */
+    GPIO_CTRL(PIN_SCK) = FUNC_SPI; /* the clock idles low from here on */
+    GPIO_CTRL(PIN_TX) = FUNC_SPI;
 
-    static const uint8_t colmod[] = { COLMOD_RGB565 }, madctl[] = { MADCTL_LANDSCAPE };
-    send(ST_SWRESET, 0, 0);
-    delay_cycles(125000u * 120u); /* 120 ms before sleep out */
-    send(ST_SLPOUT, 0, 0);
-    delay_cycles(125000u * 5u);   /* 5 ms before the next command */
-    send(ST_COLMOD, colmod, 1);
-    send(ST_MADCTL, madctl, 1);
-    send(ST_INVON, 0, 0);
-    send(ST_NORON, 0, 0);
-    send(ST_DISPON, 0, 0);
+#ifdef PIN_RESET
+    GPIO_CTRL(PIN_RESET) = FUNC_SIO;
+    SIO_GPIO_OE_SET = 1u << PIN_RESET;
+    SIO_GPIO_OUT_CLR = 1u << PIN_RESET; /* at least 10 us low */
+    delay_ms(1);
+    SIO_GPIO_OUT_SET = 1u << PIN_RESET;
+#else
+    command(ST_SWRESET, 0, 0);
+#endif
+    delay_ms(120); /* reset to sleep out */
+    command(ST_SLPOUT, 0, 0);
+    delay_ms(120); /* sleep out to the next command (5 ms), and to a later sleep in */
+    static const uint8_t colmod[] = { COLMOD_RGB565 }, madctl[] = { PANEL_MADCTL };
+    command(ST_COLMOD, colmod, 1);
+    command(ST_MADCTL, madctl, 1);
+    command(ST_INVON, 0, 0);
+    command(ST_NORON, 0, 0);
+    command(ST_DISPON, 0, 0);
+    SIO_GPIO_OUT_SET = 1u << PIN_BACKLIGHT;
 
     /* two band buffers: the core renders into one while DMA sends the other */
     sink->format = format;

@@ -4,13 +4,20 @@
  *
  * Reset enables the FPU on a hard-float build, in assembly before any C
  * runs (GCC may hoist a VFP load to the top of a C function), copies
- * .data from flash, zeroes .bss and calls main(). The vector table is
- * the architecture's 16 system entries; this firmware uses no interrupts.
+ * what runs from RAM out of flash (the code and the scene's tables on a
+ * board whose link.ld puts them there, and .data), zeroes .bss and calls
+ * main(). Reset itself stays in flash (.text.start), and reaches main()
+ * and port_exit() through registers: from flash they may be further away
+ * than a BL reaches. The vector table is the architecture's 16 system
+ * entries; a board that counts with SysTick defines SysTick_Handler, any
+ * other exception is a fault.
  */
 #include <stdint.h>
 
 #include "port.h"
 
+extern uint32_t __code_start[], __code_end[], __code_load[];
+extern uint32_t __scene_start[], __scene_end[], __scene_load[];
 extern uint32_t __data_start[], __data_end[], __data_load[];
 extern uint32_t __bss_start[], __bss_end[];
 extern uint32_t __stack_top[];
@@ -18,9 +25,10 @@ extern uint32_t __stack_top[];
  * loops below compare pointers within it, which cppcheck cannot know. */
 
 int main(void);
-void Reset_Handler(void);
+void Reset_Handler(void) __attribute__((section(".text.start")));
 void Fault_Handler(void);
-void reset_c(void) __attribute__((noreturn, used));
+void SysTick_Handler(void) __attribute__((weak, alias("Fault_Handler")));
+void reset_c(void) __attribute__((noreturn, used, section(".text.start")));
 
 __attribute__((section(".vectors"), used))
 static void (*const vector_table[16])(void) = {
@@ -36,7 +44,7 @@ static void (*const vector_table[16])(void) = {
     Fault_Handler, /* DebugMon */
     0,
     Fault_Handler, /* PendSV */
-    Fault_Handler, /* SysTick */
+    SysTick_Handler,
 };
 
 __attribute__((naked)) void Reset_Handler(void)
@@ -56,19 +64,34 @@ __attribute__((naked)) void Reset_Handler(void)
         "bx r0\n");
 }
 
+/* Words from src to [dst, end), unless they are already there (code
+ * and tables that run from flash). Inlined: it runs from flash too.
+ * volatile: stops the compiler turning the loop into a memcpy call
+ * before memory is set up. */
+static inline __attribute__((always_inline)) void copy_words(volatile uint32_t *dst, const uint32_t *end,
+                                                             const uint32_t *src)
+{
+    if (dst == src)
+        return;
+    /* cppcheck-suppress comparePointers ; one region of the linker script */
+    while (dst < end)
+        *dst++ = *src++;
+}
+
 void reset_c(void)
 {
-    /* volatile: stops the compiler turning the loops into memcpy/memset
-     * calls before memory is set up */
-    volatile uint32_t *dst = __data_start;
-    const uint32_t *src = __data_load;
-    /* cppcheck-suppress comparePointers ; one region: .data */
-    while (dst < __data_end)
-        *dst++ = *src++;
+    copy_words(__code_start, __code_end, __code_load);
+    copy_words(__scene_start, __scene_end, __scene_load);
+    copy_words(__data_start, __data_end, __data_load);
     /* cppcheck-suppress comparePointers ; one region: .bss */
-    for (dst = __bss_start; dst < __bss_end; dst++)
+    for (volatile uint32_t *dst = __bss_start; dst < __bss_end; dst++)
         *dst = 0;
-    port_exit(main());
+    /* through registers: a BL from flash may not reach code in RAM */
+    int (*volatile run)(void) = main;
+    void (*volatile end)(int) = port_exit;
+    end(run());
+    for (;;)
+        ;
 }
 
 void Fault_Handler(void)

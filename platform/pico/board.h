@@ -1,0 +1,26 @@
+/*
+ * board.h - what board.c gives the Pico's display sink (st7789.c): the
+ * clock it set, its cycle counter, taking blocks out of reset, the LED.
+ */
+#ifndef PICO_BOARD_H
+#define PICO_BOARD_H
+
+#include <stdint.h>
+
+#define CLK_SYS_HZ 125000000u /* clk_sys and clk_peri, once port_init() is done */
+
+/* RESETS bits of the blocks the sink uses */
+#define RESET_DMA (1u << 2)
+#define RESET_SPI0 (1u << 16)
+
+/* Takes `blocks` out of reset and waits (bounded) until they are; on
+ * expiry reports `what` and returns 0. */
+int board_unreset(uint32_t blocks, const char *what);
+
+/* clk_sys cycles since port_init() started SysTick. */
+uint64_t board_cycles(void);
+
+/* Toggles the on-board LED (GP25). */
+void board_heartbeat(void);
+
+#endif

@@ -1,0 +1,36 @@
+# image.mk - the Pico's own build steps (BOARD_RULES in board.mk),
+# included by platform/firmware/firmware.mk after its rules:
+#  - boot2: boot2.S assembled for SRAM 0x20041f00 (where the boot ROM
+#    runs it), padded to 252 bytes and followed by its CRC (uf2.mjs), as
+#    the .boot2 section that link.ld puts first in flash;
+#  - <backend>.uf2 beside each ELF: its flash image as UF2 blocks for the
+#    RPI-RP2 drive (family RP2040), checked as it is written;
+#  - make uf2: that file copied to out/, as make run does.
+PICO_BOOT2 := build/board/pico/boot2
+
+$(PICO_BOOT2)/boot2.elf: platform/pico/boot2.S platform/pico/image.mk
+	@mkdir -p $(@D)
+	$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -o $@ $<
+
+$(PICO_BOOT2)/boot2.bin: $(PICO_BOOT2)/boot2.elf
+	$(FW_OBJCOPY) -O binary $< $@
+
+$(PICO_BOOT2)/boot2_crc.S: $(PICO_BOOT2)/boot2.bin platform/pico/uf2.mjs
+	node platform/pico/uf2.mjs boot2 $< $@
+
+$(PICO_BOOT2)/boot2_crc.o: $(PICO_BOOT2)/boot2_crc.S
+	$(FW_CC) $(BOARD_CPU) -c $< -o $@
+
+$(FW_DIR)/%.bin: $(FW_DIR)/%.elf
+	$(FW_OBJCOPY) -O binary $< $@
+
+$(FW_DIR)/%.uf2: $(FW_DIR)/%.bin platform/pico/uf2.mjs
+	node platform/pico/uf2.mjs pack $< $@
+	@node platform/pico/uf2.mjs check $@ >/dev/null
+
+PICO_UF2_OUT = $(basename $(RUN_OUT)).uf2
+uf2: deps-board $(FW_DIR)/$(BACKEND).uf2
+	@mkdir -p out
+	@cp $(FW_DIR)/$(BACKEND).uf2 $(PICO_UF2_OUT)
+	@node platform/pico/uf2.mjs check $(PICO_UF2_OUT)
+	@echo "copy $(PICO_UF2_OUT) onto the RPI-RP2 drive (hold BOOTSEL while plugging the Pico in): docs/boards.md, On a real Pico"
