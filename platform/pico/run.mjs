@@ -1,68 +1,367 @@
 #!/usr/bin/env node
 // run.mjs - runs the Pico firmware under rp2040js (the RP2040 emulator;
-// pinned in package.json, installed into node_modules/ by npm ci).
+// pinned in package.json, installed into node_modules/ by npm ci), booted
+// the way the chip boots it.
 //
 //   node run.mjs FIRMWARE.elf OUT.png RT [CLOCK_HZ]
-//       Loads the ELF into flash and starts it without the boot ROM (SP
-//       and PC from the vector table), one core, until the firmware exits
-//       by semihosting (bkpt 0xab). UART0 goes to FIRMWARE.serial, what
-//       SPI0 sends (each byte with the data/command line, GP16) to
-//       FIRMWARE.spi. Prints the report (RT receive) and writes OUT.png:
-//       from the UART stream when the console opens with a frame (the
-//       stream sink), else from the panel (the ST7789 sink, whose report
-//       gives frame_width and frame_height). Then the render's time at
-//       CLOCK_HZ from its cycles, and the host's wall time.
+//       Flash holds FIRMWARE.uf2 (beside the ELF, checked block by block
+//       by uf2.mjs); the ELF is read only for its symbols (and compared
+//       with the UF2, so that a stale UF2 is caught). Boots as the boot
+//       ROM does: the CRC-32 of flash bytes 0..251 must match bytes
+//       252..255 (else the chip drops into USB boot and nothing runs), the
+//       256 bytes go to SRAM 0x20041f00, SP = 0x20042000, and boot2 runs
+//       from there: it sets the SSI up for execute-in-place and starts the
+//       vector table at 0x10000100. One core. UART0 goes to
+//       FIRMWARE.serial, what SPI0 sends (each byte with the data/command
+//       line, GP16) to FIRMWARE.spi. The run ends when the core sleeps
+//       (WFI) with nothing left that could wake it. Prints the report (RT
+//       receive) and writes OUT.png: from the UART stream when the console
+//       opens with a frame (the stream sink), else from the panel (the
+//       ST7789 sink, whose report gives frame_width and frame_height).
+//       Then the runner's own counts of the render (below), the clocks at
+//       the end, the render's time at CLOCK_HZ from the firmware's
+//       render_cycles, and the host's wall time.
 //   node run.mjs --panel FIRMWARE.spi W H OUT.stream
 //       Only the panel's decoding: the top left WxH pixels of the panel as
 //       an rgb565be frame in rt's stream format (platform/firmware/sink.h).
 //
-// The panel decoder is strict, so a damaged transfer gives no image: a
-// command it does not know, a window outside the 320x240 panel, a RAMWR
-// whose data does not fill its window exactly, pixels before sleep out,
-// 16-bit colour and display on, or a frame pixel never written: each
-// fails with the byte offset in the SPI log.
+// The chip's state at boot2's start: every block of RESETS in reset but
+// IO_QSPI and PADS_QSPI (the ROM's), RESET_DONE its complement; clk_sys
+// and clk_ref from the ring oscillator (rp2040js's 6.5 MHz), clk_peri
+// stopped; the SSI disabled. The simulation clock advances by each
+// instruction's cycles at the current clk_sys, so SysTick (clocked by
+// clk_sys in rp2040js as on the chip) counts core cycles at any clock.
+// Sleeping (WFI) advances it to the next alarm, and the sleeping cycles
+// count as cycles, as they do on SysTick.
 //
-// Counters: a block at 0x40068000 (an APB slot the RP2040 leaves empty)
-// gives the firmware the emulator's instruction and cycle totals (board.c).
-// Cycles are rp2040js's Cortex-M0+ model: no flash wait states, no XIP
-// cache. Exit status: the firmware's, or 1 when the run or a decoder fails.
+// Strict: what silicon would not run fails the run, naming the PC and
+// what the chip would do: a peripheral of RESETS touched while in reset;
+// an access where nothing is mapped; the UARTs' or SPIs' data or control
+// registers written while clk_peri is stopped; a fetch or load from XIP
+// flash before boot2 has set the SSI up for it (or with a set-up the flash
+// model does not answer, or a flash clock over the read command's limit);
+// bkpt or an undefined instruction (a HardFault on a board with no
+// debugger: no semihosting); an unaligned word access. The SSI here is
+// our own small model, rp2040js's is a stub: standard-SPI 03h or 0Bh XIP
+// reads only; quad-I/O, direct-mode transfers and flash timing are not
+// modelled.
+//
+// Counting: the firmware reads its SysTick in port_cycles_read at the
+// render's start, in pairs around each piece of display output, and at
+// the render's end. The runner watches that symbol's address (from the
+// ELF): each time the core is about to execute it, it records its own
+// instruction count and cycles. Render = (end - start) - the output pairs.
+// It prints render_instructions, instructions_per_pixel,
+// emulator_render_cycles and how the firmware's SysTick render_cycles
+// compares (over 0.1% apart fails). Cycles are rp2040js's Cortex-M0+
+// model: no flash wait states, no XIP cache.
+//
+// The panel decoder (st7789.mjs) is strict, so a damaged transfer gives no
+// image: each fault fails with the byte offset in the SPI log.
+//
+// Exit status: the firmware's last report line, `exit_status N`; 1 when
+// the run, the decoder or the counts fail.
 import { spawnSync } from 'node:child_process';
-import { readFileSync, writeFileSync } from 'node:fs';
-import { ConsoleLogger, LogLevel, RP2040 } from 'rp2040js';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
+import { RP2040 } from 'rp2040js';
 import { decodePanel, panelStream } from './st7789.mjs';
+import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
 const PIN_DC = 16;
-const FLASH = 0x10000000, FLASH_SIZE = 16 << 20;
-const NS_PER_CYCLE = 8; // rp2040js's clocks assume 125 MHz
 const WALL_LIMIT_S = 900;
+const MARK_SYMBOL = 'port_cycles_read';
+const SYSTICK_TOLERANCE = 0.1; // percent
+const hex = (v) => `0x${(v >>> 0).toString(16).padStart(8, '0')}`;
 
 function fail(msg) {
   console.error(`pico run: ${msg}`);
   process.exit(1);
 }
 
-// ---- running the firmware --------------------------------------------------
+class RunFailure extends Error {}
 
-function loadElf(mcu, path) {
+// ---- the ELF: symbols, and its flash bytes to compare with the UF2 ----------
+
+function readElf(path) {
   const f = readFileSync(path);
-  if (f.readUInt32BE(0) !== 0x7f454c46 || f[4] !== 1 || f[5] !== 1) fail(`${path}: not a 32-bit little-endian ELF`);
+  if (f.length < 52 || f.readUInt32BE(0) !== 0x7f454c46 || f[4] !== 1 || f[5] !== 1) fail(`${path}: not a 32-bit little-endian ELF`);
+  const segments = [];
   const phoff = f.readUInt32LE(0x1c), phsize = f.readUInt16LE(0x2a), phnum = f.readUInt16LE(0x2c);
   for (let i = 0; i < phnum; i++) {
     const p = phoff + i * phsize;
     const type = f.readUInt32LE(p), off = f.readUInt32LE(p + 4), paddr = f.readUInt32LE(p + 12), filesz = f.readUInt32LE(p + 16);
-    if (type !== 1 || filesz === 0) continue; // PT_LOAD with bytes
-    if (paddr < FLASH || paddr + filesz > FLASH + FLASH_SIZE) fail(`${path}: a segment at 0x${paddr.toString(16)} is not in flash`);
-    mcu.flash.set(f.subarray(off, off + filesz), paddr - FLASH);
+    if (type === 1 && filesz > 0) segments.push({ paddr, bytes: f.subarray(off, off + filesz) }); // PT_LOAD
   }
+  const symbols = new Map();
+  const shoff = f.readUInt32LE(0x20), shsize = f.readUInt16LE(0x2e), shnum = f.readUInt16LE(0x30);
+  const sh = (i) => {
+    const s = shoff + i * shsize;
+    return { type: f.readUInt32LE(s + 4), offset: f.readUInt32LE(s + 16), size: f.readUInt32LE(s + 20), link: f.readUInt32LE(s + 24), entsize: f.readUInt32LE(s + 36) };
+  };
+  for (let i = 0; i < shnum; i++) {
+    const tab = sh(i);
+    if (tab.type !== 2) continue; // SHT_SYMTAB
+    const str = sh(tab.link);
+    for (let o = tab.offset; o + 16 <= tab.offset + tab.size; o += tab.entsize || 16) {
+      const nameOff = f.readUInt32LE(o), value = f.readUInt32LE(o + 4), info = f[o + 12], shndx = f.readUInt16LE(o + 14);
+      if (!nameOff || shndx === 0 || (info & 0xf) > 2) continue; // named, defined, NOTYPE/OBJECT/FUNC
+      const start = str.offset + nameOff;
+      const name = f.toString('latin1', start, f.indexOf(0, start));
+      if (!symbols.has(name) || info >> 4 === 1) symbols.set(name, value); // prefer GLOBAL
+    }
+  }
+  return { segments, symbols };
 }
 
-function run(elf) {
+// ---- the chip around the core ----------------------------------------------
+
+// RESETS: bit, base of each block it holds in reset.
+const BLOCKS = [
+  ['ADC', 0, 0x4004c000], ['BUSCTRL', 1, 0x40030000], ['DMA', 2, 0x50000000], ['I2C0', 3, 0x40044000],
+  ['I2C1', 4, 0x40048000], ['IO_BANK0', 5, 0x40014000], ['IO_QSPI', 6, 0x40018000], /* JTAG 7: no registers */
+  ['PADS_BANK0', 8, 0x4001c000], ['PADS_QSPI', 9, 0x40020000], ['PIO0', 10, 0x50200000], ['PIO1', 11, 0x50300000],
+  ['PLL_SYS', 12, 0x40028000], ['PLL_USB', 13, 0x4002c000], ['PWM', 14, 0x40050000], ['RTC', 15, 0x4005c000],
+  ['SPI0', 16, 0x4003c000], ['SPI1', 17, 0x40040000], ['SYSCFG', 18, 0x40004000], ['SYSINFO', 19, 0x40000000],
+  ['TBMAN', 20, 0x4006c000], ['TIMER', 21, 0x40054000], ['UART0', 22, 0x40034000], ['UART1', 23, 0x40038000],
+  ['USBCTRL', 24, 0x50110000],
+];
+const RESETS_ALL = 0x1ffffff;
+const RESETS_AFTER_ROM = RESETS_ALL & ~(1 << 6 | 1 << 9); // the ROM takes IO_QSPI and PADS_QSPI out of reset
+// registers that need clk_peri running: PL011 DR, LCR_H, CR; PL022 CR0, CR1, DR
+const CLK_PERI_REGS = {
+  UART0: { 0x00: 'DR', 0x2c: 'LCR_H', 0x30: 'CR' }, UART1: { 0x00: 'DR', 0x2c: 'LCR_H', 0x30: 'CR' },
+  SPI0: { 0x00: 'CR0', 0x04: 'CR1', 0x08: 'DR' }, SPI1: { 0x00: 'CR0', 0x04: 'CR1', 0x08: 'DR' },
+};
+
+function atomic(cur, type, value) {
+  return type === 1 ? cur ^ value : type === 2 ? cur | value : type === 3 ? cur & ~value : value;
+}
+
+function makeResets(stop) {
+  return {
+    reset: RESETS_AFTER_ROM,
+    wdsel: 0,
+    readUint32(offset) {
+      switch (offset & 0xfff) {
+        case 0x0: return this.reset;
+        case 0x4: return this.wdsel;
+        case 0x8: return ~this.reset & RESETS_ALL; // RESET_DONE
+      }
+      return stop(`RESETS has no register at +0x${(offset & 0xfff).toString(16)} (only RESET, WDSEL, RESET_DONE)`);
+    },
+    writeUint32Atomic(offset, value, type) {
+      this.writeUint32(offset, type ? atomic(this.readUint32(offset), type, value) : value);
+    },
+    writeUint32(offset, value) {
+      if (offset === 0x0) this.reset = value & RESETS_ALL;
+      else if (offset === 0x4) this.wdsel = value & RESETS_ALL;
+      else if (offset === 0x8) return; // RESET_DONE is read-only
+      else stop(`RESETS has no register at +0x${offset.toString(16)} (only RESET, WDSEL, RESET_DONE)`);
+    },
+  };
+}
+
+// The SSI (DW_apb_ssi at 0x18000000) and a flash behind it that answers
+// XIP reads with a standard-SPI 03h (no wait cycles) or 0Bh (8 wait
+// cycles) command. Quad-I/O (SPI_FRF 2, EBh) is not modelled, nor are
+// direct-mode transfers through DR0 or the flash's timing.
+const SSI = { CTRLR0: 0x00, CTRLR1: 0x04, SSIENR: 0x08, BAUDR: 0x14, SR: 0x28, IDR: 0x58, VERSION: 0x5c, DR0: 0x60, RX_SAMPLE_DLY: 0xf0, SPI_CTRLR0: 0xf4 };
+const SSI_NAMES = Object.fromEntries(Object.entries(SSI).map(([k, v]) => [v, k]));
+const SSI_SET_UP = new Set([SSI.CTRLR0, SSI.CTRLR1, SSI.BAUDR, SSI.SPI_CTRLR0, 0x18, 0x1c]); // TXFTLR, RXFTLR too
+const FLASH_SCK_MAX = { 0x03: 50e6, 0x0b: 104e6 }; // Winbond W25Q: Read Data 50 MHz, Fast Read 104 MHz and up
+
+function makeSsi(mcu, stop, onXip) {
+  const ssi = {
+    regs: new Map([[SSI.SPI_CTRLR0, 0x03000000]]), // CTRLR0, BAUDR... 0; SPI_CTRLR0's reset value
+    enabled: false,
+    problem: 'the SSI is disabled (SSIENR 0): boot2 has not set up execute-in-place',
+    reg(o) { return this.regs.get(o) ?? 0; },
+    // what is wrong with the set-up for XIP reads, or null
+    check() {
+      const c0 = this.reg(SSI.CTRLR0), sc = this.reg(SSI.SPI_CTRLR0), div = this.reg(SSI.BAUDR) & 0xffff;
+      const frf = c0 >>> 21 & 3, tmod = c0 >>> 8 & 3, dfs32 = c0 >>> 16 & 31, mot = c0 >>> 4 & 3;
+      const cmd = sc >>> 24, wait = sc >>> 11 & 31, instL = sc >>> 8 & 3, addrL = sc >>> 2 & 15, trans = sc & 3;
+      const x2 = (v) => `0x${v.toString(16).padStart(2, '0')}`;
+      if (div < 2 || div & 1) return `BAUDR ${div}: the SSI needs an even clock divider of at least 2`;
+      if (frf !== 0) return `CTRLR0 SPI_FRF ${frf} (${['standard', 'dual', 'quad', 'reserved'][frf]}): the flash model answers only standard SPI reads (quad-I/O is not modelled)`;
+      if (mot !== 0) return `CTRLR0 FRF ${mot}: not Motorola SPI, which the flash speaks`;
+      if (tmod !== 3) return `CTRLR0 TMOD ${tmod}: XIP needs 3 (EEPROM read: command and address out, then data in)`;
+      if (dfs32 !== 31) return `CTRLR0 DFS_32 ${dfs32}: XIP needs 32-bit frames (31)`;
+      if (this.reg(SSI.CTRLR1) & 0xffff) return `CTRLR1 NDF ${this.reg(SSI.CTRLR1) & 0xffff}: XIP needs 0`;
+      if (cmd !== 0x03 && cmd !== 0x0b) return `XIP read with SSI command ${x2(cmd)} that the flash model does not answer (03h or 0Bh)`;
+      const wantWait = cmd === 0x03 ? 0 : 8;
+      if (wait !== wantWait) return `XIP command ${x2(cmd)} with WAIT_CYCLES ${wait}: the flash sends data after ${wantWait} dummy clocks, so the words would be misread`;
+      if (instL !== 2) return `SPI_CTRLR0 INST_L ${instL}: the flash needs an 8-bit instruction (2)`;
+      if (addrL !== 6) return `SPI_CTRLR0 ADDR_L ${addrL} (${addrL * 4} bits): the flash takes 24-bit addresses (6)`;
+      if (trans !== 0) return `SPI_CTRLR0 TRANS_TYPE ${trans}: standard SPI needs 0 (command and address in standard format)`;
+      return this.sckProblem();
+    },
+    sckProblem() {
+      const cmd = this.reg(SSI.SPI_CTRLR0) >>> 24, div = this.reg(SSI.BAUDR) & 0xffff, sck = mcu.clkSys / div;
+      if (sck > FLASH_SCK_MAX[cmd])
+        return `flash SCK ${(sck / 1e6).toFixed(3)} MHz (clk_sys ${(mcu.clkSys / 1e6).toFixed(3)} MHz / BAUDR ${div}) is over the ${FLASH_SCK_MAX[cmd] / 1e6} MHz the flash allows for command 0x${cmd.toString(16).padStart(2, '0')}: reads would return wrong data`;
+      return null;
+    },
+    readUint32(offset) {
+      offset &= 0xfff;
+      switch (offset) {
+        case SSI.SR: return 0x6; // TFE | TFNF: idle, FIFOs empty
+        case SSI.IDR: return 0x51535049;
+        case SSI.VERSION: return 0x3430312a;
+        case SSI.SSIENR: return this.enabled ? 1 : 0;
+        case SSI.DR0: return stop('SSI DR0 read: direct-mode flash transfers are not modelled (only XIP reads)');
+      }
+      return this.reg(offset);
+    },
+    writeUint32Atomic(offset, value, type) {
+      this.writeUint32(offset, type ? atomic(this.readUint32(offset), type, value) : value);
+    },
+    writeUint32(offset, value) {
+      value >>>= 0;
+      if (offset === SSI.DR0) return stop('SSI DR0 write: direct-mode flash transfers (commands other than XIP reads) are not modelled');
+      if (offset === SSI.SSIENR) {
+        this.enabled = !!(value & 1);
+        this.problem = this.enabled ? this.check() : 'the SSI is disabled (SSIENR 0)';
+        onXip(this.problem === null);
+        return;
+      }
+      if (this.enabled && SSI_SET_UP.has(offset))
+        return stop(`SSI ${SSI_NAMES[offset] ?? `+0x${offset.toString(16)}`} written while the SSI is enabled: the DW_apb_ssi ignores it (write SSIENR 0 first)`);
+      this.regs.set(offset, value);
+    },
+  };
+  return ssi;
+}
+
+// ---- running the firmware --------------------------------------------------
+
+function run(elfPath, uf2Path) {
+  if (!existsSync(uf2Path)) fail(`${uf2Path}: missing: the flash image comes from the UF2 beside ${elfPath} (build it: uf2.mjs pack)`);
+  let img;
+  try {
+    img = readUf2(readFileSync(uf2Path), uf2Path);
+  } catch (e) {
+    fail(e.message);
+  }
+  // the boot ROM's check: nothing runs without it
+  const crc = boot2Crc(img.bytes);
+  if (!crc.ok)
+    fail(`${uf2Path}: boot2 CRC ${hex(crc.stored)} does not match ${hex(crc.computed)} (of flash bytes 0..251): the chip would drop into USB boot (BOOTSEL mode); nothing of the image runs`);
+  const elf = readElf(elfPath);
+  for (const s of elf.segments) {
+    if (s.paddr < FLASH_BASE || s.paddr >= FLASH_BASE + 0x1000000) continue;
+    const at = s.paddr - FLASH_BASE;
+    const got = img.bytes.subarray(at, at + s.bytes.length);
+    if (got.length !== s.bytes.length || !s.bytes.equals(got))
+      fail(`${uf2Path} does not hold ${elfPath}'s bytes at ${hex(s.paddr)} (a stale UF2? rebuild it)`);
+  }
+  const markSym = elf.symbols.get(MARK_SYMBOL);
+  const markPC = markSym === undefined ? -1 : (markSym & ~1) >>> 0;
+
   const mcu = new RP2040();
-  mcu.logger = new ConsoleLogger(LogLevel.Error);
-  loadElf(mcu, elf);
   const core = mcu.core, clock = mcu.clock;
-  core.SP = mcu.readUint32(FLASH);
-  core.PC = mcu.readUint32(FLASH + 4) & ~1;
+  let at = BOOT2_SRAM; // the PC of the instruction being executed
+  const where = () => `at PC ${hex(at)}`;
+  const stop = (msg) => {
+    throw new RunFailure(`${where()}: ${msg}`);
+  };
+
+  // warnings: nothing mapped, or an instruction rp2040js does not know,
+  // fail; the rest (unimplemented registers of blocks it stubs) stay quiet
+  mcu.logger = {
+    debug() {},
+    info() {},
+    warn(component, msg) {
+      let m;
+      if ((m = /^Read from invalid memory address: ([0-9a-f]+)/.exec(msg)) || (m = /^Write to undefined address: ([0-9a-f]+)/.exec(msg))) {
+        const a = parseInt(m[1], 16), kind = msg.startsWith('Read') ? 'read of' : 'write to';
+        const what = a >= 0x14000000 && a < 0x18000000 ? 'the XIP cache controls and cache-as-SRAM, which rp2040js does not model'
+          : 'an address where nothing is mapped: on the chip a bus error (HardFault)';
+        stop(`${kind} ${hex(a)}, ${what}`);
+      }
+      if (/is not implemented yet/.test(msg))
+        stop(`instruction 0x${mcu.readUint16(at).toString(16).padStart(4, '0')} is undefined (or unknown to rp2040js): on the chip a HardFault`);
+    },
+    error(component, msg) {
+      if (/not 32 bit aligned/.test(msg)) stop(`${msg}: an unaligned word access, a HardFault on the Cortex-M0+`);
+      stop(`${component}: ${msg}`);
+    },
+  };
+  mcu.onBreak = (code) => {
+    const op = mcu.readUint16(at);
+    if (op >> 8 === 0xbe) stop(`bkpt 0x${code.toString(16)}: with no debugger attached the chip takes a HardFault (no semihosting on the board)`);
+    stop(`udf 0x${code.toString(16)}: an undefined instruction, a HardFault on the chip`);
+  };
+
+  // RESETS and the blocks it holds
+  const resets = makeResets(stop);
+  mcu.peripherals[0x4000c] = resets;
+  for (const [name, bit, base] of BLOCKS) {
+    const p = mcu.peripherals[base >>> 12];
+    if (!p) continue;
+    const rd = p.readUint32, wr = p.writeUint32Atomic, mask = 1 << bit, clkRegs = CLK_PERI_REGS[name];
+    const inReset = (kind, offset) =>
+      stop(`${kind} ${name} (${hex(base + offset)}) while RESETS holds it in reset (bit ${bit}): on the chip the access does not reach it (take it out of reset and wait for RESET_DONE first)`);
+    p.readUint32 = function (offset) {
+      if (resets.reset & mask) inReset('read of', offset);
+      return rd.call(this, offset);
+    };
+    p.writeUint32Atomic = function (offset, value, type) {
+      if (resets.reset & mask) inReset('write to', offset);
+      if (clkRegs && clkRegs[offset] && mcu.clocks.periFreq === 0)
+        stop(`write to ${name} ${clkRegs[offset]} (${hex(base + offset)}) while clk_peri is stopped: on the chip the ${name.slice(0, -1)} sends nothing (enable CLK_PERI_CTRL first)`);
+      return wr.call(this, offset, value, type);
+    };
+  }
+
+  // XIP flash: guarded accessors until the SSI is set up for it, then
+  // rp2040js's own (fast) ones
+  const XIP_LO = 0x10000000, XIP_HI = 0x14000000;
+  const proto = Object.getPrototypeOf(mcu);
+  const xipFault = (a, fetch) => stop(`${fetch ? 'instruction fetch from' : 'read of'} XIP flash ${hex(a)} with the SSI not set up for it (${ssi.problem}): on the chip the image's bytes would not come back`);
+  const guarded = {
+    readUint32(a) {
+      if (a >>> 0 >= XIP_LO && a >>> 0 < XIP_HI) xipFault(a >>> 0, false);
+      return proto.readUint32.call(this, a);
+    },
+    readUint16(a) {
+      if (a >>> 0 >= XIP_LO && a >>> 0 < XIP_HI) xipFault(a >>> 0, a === at || a === at + 2);
+      return proto.readUint16.call(this, a);
+    },
+    readUint8(a) {
+      if (a >>> 0 >= XIP_LO && a >>> 0 < XIP_HI) xipFault(a >>> 0, false);
+      return proto.readUint8.call(this, a);
+    },
+  };
+  const setXip = (ready) => {
+    const src = ready ? proto : guarded;
+    mcu.readUint32 = src.readUint32;
+    mcu.readUint16 = src.readUint16;
+    mcu.readUint8 = src.readUint8;
+  };
+  const ssi = makeSsi(mcu, stop, setXip);
+  mcu.peripherals[0x18000] = ssi;
+  setXip(false);
+
+  // clocks as at reset: clk_ref and clk_sys from the ring oscillator,
+  // clk_peri stopped (rp2040js computes them from its CLOCKS registers)
+  mcu.updateClocks();
+  if (mcu.clkSys !== mcu.roscFreq || mcu.clocks.periFreq !== 0)
+    fail(`rp2040js gives clk_sys ${mcu.clkSys} Hz, clk_peri ${mcu.clocks.periFreq} Hz at reset: expected the ring oscillator's ${mcu.roscFreq} Hz and a stopped clk_peri`);
+  let nsPerCycle = 1e9 / mcu.clkSys;
+  mcu.addClockListener((hz) => {
+    nsPerCycle = 1e9 / hz;
+    if (ssi.enabled && ssi.problem === null) {
+      const p = ssi.sckProblem();
+      if (p) stop(p);
+    }
+  });
+
+  // the boot ROM (CRC checked above): boot2 copied to SRAM and run
+  mcu.flash.set(img.bytes, 0);
+  mcu.sram.set(img.bytes.subarray(0, BOOT2_SIZE), BOOT2_SRAM - SRAM_BASE);
+  core.SP = SRAM_END;
+  core.PC = BOOT2_SRAM;
 
   const serial = [], spi = [];
   mcu.uart[0].onByte = (v) => serial.push(v);
@@ -70,36 +369,65 @@ function run(elf) {
     spi.push(mcu.gpio[PIN_DC].outputValue ? 1 : 0, v);
     mcu.spi[0].completeTransmit(0);
   };
-  let instructions = 0, latched = [0, 0];
-  mcu.peripherals[0x40068] = {
-    readUint32(offset) {
-      if (offset === 0) latched = [instructions, core.cycles];
-      const v = latched[offset >> 3] ?? 0;
-      return (offset & 4 ? Math.floor(v / 2 ** 32) : v % 2 ** 32) >>> 0;
-    },
-    writeUint32Atomic() {},
-    writeUint32() {},
-  };
-  let status = null;
-  mcu.onBreak = (code) => {
-    const r0 = core.registers[0], r1 = core.registers[1];
-    if (code === 0xab && r0 === 0x20) status = mcu.readUint32(r1 + 4) | 0; // SYS_EXIT_EXTENDED
-    else if (code === 0xab && r0 === 0x18) status = r1 === 0x20026 ? 0 : 1; // SYS_EXIT
-    else { status = 1; console.error(`pico run: bkpt 0x${code.toString(16)} at 0x${core.PC.toString(16)}`); }
-  };
 
+  const ppb = mcu.ppb;
+  const canWake = () => (ppb.systickIntEnable && ppb.systickTimer.enable) || core.enabledInterrupts !== 0;
+  let instructions = 0, ending = null;
+  const marks = [];
   const t0 = process.hrtime.bigint();
-  while (status === null) {
-    for (let i = 0; i < 1000000 && status === null; i++) {
-      if (core.waiting) fail('the core waits for an interrupt (WFI) and none is coming');
-      const before = core.cycles;
-      core.executeInstruction();
-      instructions++;
-      clock.tick((core.cycles - before) * NS_PER_CYCLE);
+  try {
+    while (ending === null) {
+      for (let i = 0; i < 1000000; i++) {
+        if (core.waiting) {
+          if (!canWake()) {
+            ending = 'sleeps with nothing to wake it';
+            break;
+          }
+          if (!clock.nextAlarm) {
+            ending = 'sleeps with interrupts enabled but nothing pending or scheduled';
+            break;
+          }
+          // sleep to the next alarm; clk_sys (and SysTick) keep running
+          const cycles = Math.max(1, Math.ceil(clock.nanosToNextAlarm / nsPerCycle - 1e-9));
+          core.cycles += cycles;
+          clock.tick(cycles * nsPerCycle);
+          if (core.interruptsUpdated && core.checkForInterrupts()) core.waiting = false;
+          continue;
+        }
+        const pc = core.PC;
+        if (pc === markPC) {
+          // an interrupt taken before it would run the handler first
+          if (core.interruptsUpdated && core.checkForInterrupts()) continue;
+          marks.push([instructions, core.cycles]);
+        }
+        at = pc;
+        const cycles = core.executeInstruction();
+        instructions++;
+        clock.tick(cycles * nsPerCycle);
+      }
+      if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (${hex(core.PC)})`);
     }
-    if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) fail(`no exit after ${WALL_LIMIT_S} s`);
+  } catch (e) {
+    if (!(e instanceof RunFailure)) throw e;
+    return { failure: e.message, serial: Buffer.from(serial), spi: Buffer.from(spi) };
   }
-  return { status, serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9, instructions, cycles: core.cycles };
+  return {
+    serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
+    instructions, cycles: core.cycles, marks, markSym, ending, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+  };
+}
+
+// The render's counts from the marks: start, (begin, end) pairs of display
+// output, end. [instructions, cycles] or a note why there are none.
+function renderCounts(marks) {
+  if (marks.length < 2 || marks.length % 2) return { note: `${marks.length} call(s) of ${MARK_SYMBOL}: the render's start, output pairs and end need an even count of at least 2` };
+  const first = marks[0], last = marks[marks.length - 1];
+  let ins = last[0] - first[0], cyc = last[1] - first[1];
+  for (let k = 1; k < marks.length - 1; k += 2) { // (begin, end) of display output
+    ins -= marks[k + 1][0] - marks[k][0];
+    cyc -= marks[k + 1][1] - marks[k][1];
+  }
+  return { instructions: ins, cycles: cyc, pairs: (marks.length - 2) / 2 };
 }
 
 function receive(rt, args) {
@@ -121,21 +449,52 @@ if (argv[0] === '--panel') {
 if (argv.length < 3) fail('usage: run.mjs FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream');
 const [elf, out, rt, hz] = argv;
 const base = elf.replace(/\.elf$/, '');
-const r = run(elf);
+const r = run(elf, `${base}.uf2`);
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
+if (r.failure) fail(`${r.failure} (the UART output so far: ${base}.serial)`);
 // the UART stream sink's frame opens the console; the panel's run has
 // report lines only there
 const streamed = r.serial.subarray(0, 4).toString('latin1') === 'RTF1';
 const rep = receive(rt, streamed ? [`${base}.serial`, '-o', out] : ['--report-only', `${base}.serial`]);
 process.stdout.write(rep.stdout);
 process.stderr.write(rep.stderr);
-if (r.status !== 0) {
-  console.error(`pico run: firmware exited with status ${r.status}`);
-  process.exit(r.status > 0 && r.status < 256 ? r.status : 1);
+const lines = rep.stdout.trimEnd().split('\n');
+const statusLine = /^exit_status (-?\d+)$/;
+if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (the core ${r.ending}, after ${r.instructions} instructions)`);
+if (!statusLine.test(lines[lines.length - 1])) fail('exit_status is not the firmware\'s last report line');
+const status = Number(lines[lines.length - 1].match(statusLine)[1]);
+if (status !== 0) {
+  console.error(`pico run: firmware exited with status ${status}`);
+  process.exit(status > 0 && status < 256 ? status : 1);
 }
 if (rep.status !== 0) process.exit(rep.status ?? 1);
 const value = (key) => (rep.stdout.match(new RegExp(`^${key} (\\d+)$`, 'm')) ?? [])[1];
+
+// the runner's own counts of the render
+let systickOff = null;
+if (r.markSym === undefined) {
+  console.log(`note: ${elf} has no ${MARK_SYMBOL}: no counts of the render from the emulator`);
+} else {
+  const c = renderCounts(r.marks);
+  if (c.note) {
+    console.log(`note: ${c.note}: no counts of the render from the emulator`);
+  } else {
+    console.log(`render_instructions ${c.instructions}`);
+    const pixels = Number(value('pixels'));
+    if (pixels > 0) console.log(`instructions_per_pixel ${Math.round(c.instructions / pixels)}`);
+    else console.log('note: no pixels line in the report: no instructions_per_pixel');
+    console.log(`emulator_render_cycles ${c.cycles}`);
+    const systick = value('render_cycles');
+    if (systick === undefined) {
+      console.log('note: no render_cycles in the report: SysTick not compared');
+    } else {
+      const off = c.cycles ? ((Number(systick) - c.cycles) / c.cycles) * 100 : Infinity;
+      console.log(`systick render_cycles ${systick} against the emulator's ${c.cycles}: ${off >= 0 ? '+' : ''}${off.toFixed(4)}%`);
+      if (!(Math.abs(off) <= SYSTICK_TOLERANCE)) systickOff = off;
+    }
+  }
+}
 if (!streamed) {
   if (value('frame_width') === undefined) fail(`${base}.serial: neither a frame nor a panel's frame_width in the report`);
   try {
@@ -147,7 +506,10 @@ if (!streamed) {
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);
 }
+const mhz = (f) => (f ? `${(f / 1e6).toFixed(3)} MHz` : 'stopped');
+console.log(`clocks at the end: clk_sys ${mhz(r.clkSys)}, clk_peri ${mhz(r.clkPeri)}`);
 const cycles = value('render_cycles');
 if (hz && cycles !== undefined)
-  console.log(`board render time at ${Number(hz) / 1e6} MHz (rp2040js cycles: no flash wait states or XIP cache modelled; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
+  console.log(`board render time at ${Number(hz) / 1e6} MHz (SysTick cycles under rp2040js: no flash wait states or XIP cache modelled; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
 console.log(`rp2040js wall time on the host (${r.instructions} instructions, ${r.cycles} cycles in all, ${(r.cycles / r.wall / 1e6).toFixed(1)} M cycles/s): ${r.wall.toFixed(1)} s`);
+if (systickOff !== null) fail(`SysTick's render_cycles is ${systickOff.toFixed(4)}% from the emulator's count, over the ${SYSTICK_TOLERANCE}% allowed`);
