@@ -61,10 +61,14 @@ def boards():
 
 
 def code_ram(cross, elf):
-    out = run([cross + "size", "-A", elf]).stdout
-    sec = {m.group(1): int(m.group(2)) for m in re.finditer(r"^(\.\S+)\s+(\d+)", out, re.M)}
-    code = sum(sec.get(s, 0) for s in (".vectors", ".text", ".ARM.exidx"))
-    return code, sec.get(".data", 0) + sec.get(".bss", 0)
+    """Code bytes, and RAM bytes: .data and .bss, and what reset copies
+    from flash to run from RAM (the pico's code and scene tables)."""
+    out = run([cross + "objdump", "-h", elf]).stdout
+    sec = {m.group(1): (int(m.group(2), 16), m.group(3) != m.group(4))
+           for m in re.finditer(r"^\s*\d+\s+(\.\S+)\s+([0-9a-f]+)\s+([0-9a-f]+)\s+([0-9a-f]+)", out, re.M)}
+    code = sum(sec.get(s, (0, 0))[0] for s in (".vectors", ".text", ".ARM.exidx"))
+    copied = sum(size for name, (size, moved) in sec.items() if moved and name in (".text", ".scene"))
+    return code, sec.get(".data", (0, 0))[0] + sec.get(".bss", (0, 0))[0] + copied
 
 
 def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""):

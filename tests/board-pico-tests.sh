@@ -1,34 +1,55 @@
 #!/bin/sh
 # The Pico (platform/pico/, RP2040 under rp2040js): beyond what
 # tests/ports-tests.sh checks on every board,
-#  - the ST7789 panel as run.mjs decodes it equals the host's fixed render
-#    in rgb565be byte for byte, at depth 6 and for a frame smaller than the
-#    panel (odd size, taken from its top left), and the report's counters
-#    equal rt --stats;
+#  - the image is the chip's: the UF2 checks out (uf2.mjs check: blocks,
+#    family, addresses, boot2's CRC, the vector table at 0x10000100), and
+#    the ELF has no BKPT (semihosting) and no address of the emulator-only
+#    counter block (0x40068000);
+#  - run.mjs boots that UF2 as the chip does (boot ROM's CRC check, boot2
+#    from SRAM against its flash model), with its strict checks on: a
+#    block touched in reset, an unmapped access, UART or SPI without
+#    clk_peri, flash before boot2 set up XIP, a BKPT would each fail;
+#  - the panel as run.mjs decodes it (ST7789 MADCTL and window model, the
+#    module's glass) equals the host's fixed render in rgb565be byte for
+#    byte, on the three benchmark scenes and at an odd size, for both
+#    PANEL choices and flipped, and the report's counters equal rt --stats;
+#  - the report's SysTick cycles equal the emulator's own count within
+#    0.1% (run.mjs fails the run otherwise; checked here too), clk_sys and
+#    clk_peri are 125 MHz, the exit status 0, and the firmware printed its
+#    progress;
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
 #    (0) give the same image and counters, the divider in fewer cycles on
 #    a scene that divides (rings-1: cylinders);
-#  - the report's cycles are at least its instructions (the M0+ takes one
-#    cycle or more each);
-#  - a damaged panel transfer (data short of its window, a window off the
-#    panel, no display-on) gives no image and says why; a frame larger
-#    than the panel does not build.
+#  - what silicon would not survive fails with its reason: a damaged
+#    boot2 CRC, clk_peri left stopped (PICO_OMIT=clk_peri), a mirrored
+#    MADCTL (the image differs), no INVON (inverted colours), a missing
+#    row offset, a byte sent with chip select high, and the damaged
+#    transfers of before (data short of its window, a window off the
+#    panel, pixels before sleep out, a pixel never written); a frame
+#    larger than the panel does not build.
 RT=${1:-build/host/rt}
 OUT=build/test-pico
 mkdir -p "$OUT"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
-val() { awk -v k="$1" '$1 == k { print $2 }' "$2"; }
+val() { awk -v k="$1" '$1 == k { print $2 }' "$2" | tail -1; }
+elf_of() { make -s board-info BOARD=pico "$@" | sed -n 's/.*elf=\([^ ]*\)\.elf.*/\1/p'; }
 
-echo "pico: rp2040js RP2040 against the hosted fixed build"
+echo "pico: rp2040js RP2040, booted from the UF2 as the chip boots, against the hosted fixed build"
 pico_case() { # NAME SCENE SIZE DEPTH FORMAT [MAKE-VARS]
     n=$1 scene=$2 size=$3 depth=$4 format=$5 vars=$6
     set -- BOARD=pico SCENE="$scene" SIZE="$size" DEPTH="$depth" $vars
     if ! make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1; then
         bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
         return 1
+    fi
+    base=$(elf_of "$@")
+    if chk=$(node platform/pico/uf2.mjs check "$base.uf2" 2>&1); then
+        ok "$n: $chk"
+    else
+        bad "$n: the UF2 does not check out: $chk"
     fi
     rm -f "$OUT/$n-board.png"
     if ! make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
@@ -48,17 +69,44 @@ pico_case() { # NAME SCENE SIZE DEPTH FORMAT [MAKE-VARS]
     else
         bad "$n: report and rt --stats: $same"
     fi
-    if [ -n "$cpp" ] && [ -n "$ipp" ] && [ "$(val render_cycles "$OUT/$n.report")" -ge "$(val render_instructions "$OUT/$n.report")" ]; then
-        ok "$n: render_cycles $(val render_cycles "$OUT/$n.report") >= render_instructions $(val render_instructions "$OUT/$n.report")"
+    # SysTick's count against the emulator's, in the same window
+    sys=$(val render_cycles "$OUT/$n.report") emu=$(val emulator_render_cycles "$OUT/$n.report")
+    ins=$(val render_instructions "$OUT/$n.report")
+    if [ -n "$sys" ] && [ -n "$emu" ] && [ -n "$ins" ] &&
+       awk -v a="$sys" -v b="$emu" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(b > 0 && d <= b / 1000) }' &&
+       [ "$sys" -ge "$ins" ]; then
+        ok "$n: SysTick render_cycles $sys, the emulator's $emu (within 0.1%), >= $ins instructions"
     else
-        bad "$n: report lacks cycles, or gives fewer cycles than instructions"
+        bad "$n: SysTick render_cycles ${sys:-?} against the emulator's ${emu:-?}, instructions ${ins:-?}"
+    fi
+    if [ "$(val clk_sys_hz "$OUT/$n.report")" = 125000000 ] && [ "$(val clk_peri_hz "$OUT/$n.report")" = 125000000 ] &&
+       grep -q 'clk_sys 125.000 MHz, clk_peri 125.000 MHz' "$OUT/$n.report" && [ "$(val exit_status "$OUT/$n.report")" = 0 ]; then
+        ok "$n: clk_sys and clk_peri 125 MHz (as set, and as the emulator computes them), exit_status 0"
+    else
+        bad "$n: clocks or exit status: $(grep -E 'clk_|exit_status' "$OUT/$n.report" | tr '\n' ' ')"
     fi
 }
-pico_case picolib-d6 scenes/bench/picolib.nff 40x30 6 rgb565be
-pico_case showpiece-odd scenes/showpiece.nff 47x31 5 rgb565be
+pico_case card-320 scenes/bench/card.nff 40x30 3 rgb565be
+pico_case picolib-320 scenes/bench/picolib.nff 40x30 6 rgb565be
+pico_case whitted-240 scenes/bench/whitted.nff 40x30 5 rgb565be PANEL=240x240
+pico_case showpiece-odd-320 scenes/showpiece.nff 47x31 5 rgb565be
+pico_case showpiece-odd-240-flip scenes/showpiece.nff 47x31 5 rgb565be "PANEL=240x240 PANEL_FLIP=1"
+pico_case card-320-flip scenes/bench/card.nff 40x30 3 rgb565be PANEL_FLIP=1
 pico_case showpiece-uart scenes/showpiece.nff 32x24 5 rgb888 PICO_DISPLAY=uart
 pico_case rings-div scenes/spd/rings-1.nff 24x24 5 rgb565be
 pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be PICO_DIVIDER=0
+
+# Progress over the UART while the panel fills
+rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-320.report")
+[ "${rows#* }" = 31 ] && [ "${rows% *}" -ge 5 ] && ok "progress: ${rows% *} progress_rows lines, the last at row ${rows#* } of 31" ||
+    bad "progress lines: $rows"
+
+# The image is the chip's
+elf=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).elf
+bkpt=$(arm-none-eabi-objdump -d "$elf" | grep -c 'bkpt')
+lit=$(arm-none-eabi-objdump -s "$elf" | grep -ci ' 00800640 ')
+[ "$bkpt" -eq 0 ] && [ "$lit" -eq 0 ] && ok "the image has no BKPT and no 0x40068000 literal" ||
+    bad "the image has $bkpt BKPT and $lit 0x40068000 literals"
 
 # The divider: the same bits, fewer cycles
 if cmp -s "$OUT/rings-div-board.png" "$OUT/rings-nodiv-board.png"; then
@@ -71,49 +119,105 @@ if cmp -s "$OUT/rings-div-board.png" "$OUT/rings-nodiv-board.png"; then
 else
     bad "SIO divider and libgcc's division give different images"
 fi
-nm=$(make -s board-info BOARD=pico SCENE=scenes/spd/rings-1.nff SIZE=24x24 DEPTH=5 | sed -n 's/.*elf=\([^ ]*\).*/\1/p')
+nm=$(elf_of SCENE=scenes/spd/rings-1.nff SIZE=24x24 DEPTH=5).elf
 calls=$(arm-none-eabi-objdump -d "$nm" | awk '/^[0-9a-f]+ <.*>:$/ { fn = $2 } /bl.*<__(aeabi_uidiv|udivsi3)/ && fn ~ /wdiv/ { n++ } END { print n + 0 }')
 [ "$calls" -eq 0 ] && ok "with the divider, fx_wdiv* call no libgcc division" || bad "fx_wdiv* still call libgcc's division ($calls calls)"
 
-# Damaged transfers, from the odd frame's SPI log (pairs: D/C, byte)
-log=$(make -s board-info BOARD=pico SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 | sed -n 's/.*elf=\([^ ]*\)\.elf.*/\1/p').spi
-damage() { # WHAT PYTHON-EXPR-ON-d EXPECTED
+# What the chip would not survive: a damaged boot2 CRC
+base=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5)
+mkdir -p "$OUT/badcrc"
+cp "$base.elf" "$OUT/badcrc/fixed.elf"
+python3 -c "import sys
+d = bytearray(open(sys.argv[1], 'rb').read())
+d[32 + 10] ^= 0x01          # a byte of boot2's code in the first block's payload
+open(sys.argv[2], 'wb').write(d)" "$base.uf2" "$OUT/badcrc/fixed.uf2"
+msg=$(node platform/pico/uf2.mjs check "$OUT/badcrc/fixed.uf2" 2>&1) && bad "uf2.mjs check passed a damaged boot2: $msg" ||
+    { echo "$msg" | grep -q 'CRC' && ok "uf2.mjs check: $msg" || bad "uf2.mjs check without a CRC message: $msg"; }
+msg=$(node platform/pico/run.mjs "$OUT/badcrc/fixed.elf" "$OUT/badcrc.png" "$RT" 2>&1); status=$?
+if [ $status -ne 0 ] && echo "$msg" | grep -q 'CRC' && echo "$msg" | grep -q 'USB boot'; then
+    ok "a damaged boot2 CRC: $(echo "$msg" | grep CRC | head -1)"
+else
+    bad "a damaged boot2 CRC: status $status, '$msg'"
+fi
+
+# ... clk_peri left stopped
+if make -s -j2 firmware BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 PICO_OMIT=clk_peri >"$OUT/omit.build" 2>&1; then
+    msg=$(make -s board-run BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 PICO_OMIT=clk_peri RUN_OUT="$OUT/omit.png" RUN_RT="$RT" 2>&1); status=$?
+    if [ $status -ne 0 ] && echo "$msg" | grep -q 'clk_peri'; then
+        ok "clk_peri left stopped: $(echo "$msg" | grep clk_peri | head -1)"
+    else
+        bad "clk_peri left stopped: status $status, '$(echo "$msg" | tail -2)'"
+    fi
+else
+    bad "the PICO_OMIT=clk_peri build failed: $(tail -2 "$OUT/omit.build")"
+fi
+
+# The panel's model, from the odd frames' SPI logs (pairs: flags, byte)
+panel_damage() { # WHAT LOG PANEL FLIP HOST-PNG PYTHON-ON-d EXPECTED(message, or 'differs')
     python3 -c "import sys
 d = bytearray(open(sys.argv[1], 'rb').read())
-cmds = [i for i in range(0, len(d), 2) if d[i] == 0]
-$2
-open(sys.argv[2], 'wb').write(d)" "$log" "$OUT/bad.spi"
-    rm -f "$OUT/bad.stream"
-    msg=$(node platform/pico/run.mjs --panel "$OUT/bad.spi" 47 31 "$OUT/bad.stream" 2>&1); status=$?
-    if [ $status -ne 0 ] && [ ! -e "$OUT/bad.stream" ] && echo "$msg" | grep -q "$3"; then
+cmds = [i for i in range(0, len(d), 2) if d[i] & 0x81 == 0]
+$6
+open(sys.argv[2], 'wb').write(d)" "$2" "$OUT/bad.spi"
+    rm -f "$OUT/bad.stream" "$OUT/bad.png"
+    msg=$(node platform/pico/run.mjs --panel "$OUT/bad.spi" 47 31 "$OUT/bad.stream" "$3" "$4" 2>&1); status=$?
+    if [ "$7" = differs ]; then
+        if [ $status -eq 0 ] && "$RT" receive "$OUT/bad.stream" -o "$OUT/bad.png" >/dev/null &&
+           cmp=$("$RT" compare "$OUT/bad.png" "$5" --max-error 0); then
+            bad "$1: decoded to the host's image ($cmp)"
+        elif [ -f "$OUT/bad.png" ]; then
+            ok "$1: the panel shows a different picture ($("$RT" compare "$OUT/bad.png" "$5" | head -1))"
+        else
+            ok "$1: no picture: $msg"
+        fi
+    elif [ $status -ne 0 ] && [ ! -e "$OUT/bad.stream" ] && echo "$msg" | grep -q "$7"; then
         ok "$1: $msg"
     else
         bad "$1: status $status, '$msg'"
     fi
 }
-if [ -f "$log" ]; then
-    damage "short data" "del d[-2:]" "short or long data"
-    damage "wrong window" "i = [c for c in cmds if d[c + 1] == 0x2a][0]; d[i + 7] = 0x01; d[i + 9] = 0x40" "wrong window"
-    damage "no display on" "i = [c for c in cmds if d[c + 1] == 0x29][0]; del d[i:i + 2]" "before sleep out, display on"
-    damage "a frame pixel never written" "i = [c for c in cmds if d[c + 1] == 0x2c][-1]; del d[i - 20:]" "never written"
-    # the intact log decodes to the image the run wrote
-    if node platform/pico/run.mjs --panel "$log" 47 31 "$OUT/good.stream" && "$RT" receive "$OUT/good.stream" -o "$OUT/good.png" &&
-       "$RT" compare "$OUT/good.png" "$OUT/showpiece-odd-host.png" --max-error 0 >/dev/null; then
-        ok "the intact SPI log decodes to the host's image"
-    else
-        bad "the intact SPI log does not decode to the host's image"
-    fi
+log320=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).spi
+log240=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 PANEL=240x240 PANEL_FLIP=1).spi
+host=$OUT/showpiece-odd-320-host.png
+if [ -f "$log320" ] && [ -f "$log240" ]; then
+    madctl="i = [c for c in cmds if d[c + 1] == 0x36][0]; d[i + 3] = "
+    panel_damage "MADCTL 0x20 (MV alone: mirrored)" "$log320" 320x240 0 "$host" "${madctl}0x20" differs
+    panel_damage "MADCTL 0xb0 on an upright module (turned by 180)" "$log320" 320x240 0 "$host" "${madctl}0xb0" differs
+    panel_damage "no INVON (IPS glass: inverted colours)" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x21][0]; del d[i:i + 2]" differs
+    panel_damage "240x240 flipped without its row offset" "$log240" 240x240 1 "$host" \
+        "[d.__setitem__(c + 5, d[c + 5] - 80) or d.__setitem__(c + 9, d[c + 9] - 80) for c in cmds if d[c + 1] == 0x2b]" differs
+    panel_damage "the 240x240 log read as the 320x240 module" "$log240" 320x240 0 "$host" "" differs
+    panel_damage "a byte sent with chip select high" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x2a][0]; d[i + 2] |= 2" "chip select was high"
+    panel_damage "short data" "$log320" 320x240 0 "$host" "del d[-4:-2]" "short or long data"
+    panel_damage "wrong window" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x2a][0]; d[i + 7] = 0x01; d[i + 9] = 0x40" "wrong window"
+    panel_damage "no sleep out" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x11][0]; del d[i:i + 2]" "before sleep out"
+    panel_damage "a frame pixel never written" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x2c][-1]; del d[i - 24:]" "never written"
+    # the intact logs decode to the images the runs wrote
+    for p in "$log320 320x240 0" "$log240 240x240 1"; do
+        set -- $p
+        if node platform/pico/run.mjs --panel "$1" 47 31 "$OUT/good.stream" "$2" "$3" && "$RT" receive "$OUT/good.stream" -o "$OUT/good.png" >/dev/null &&
+           "$RT" compare "$OUT/good.png" "$host" --max-error 0 >/dev/null; then
+            ok "the intact SPI log of the $2 module$( [ "$3" = 1 ] && echo ', flipped') decodes to the host's image"
+        else
+            bad "the intact SPI log of the $2 module does not decode to the host's image"
+        fi
+    done
 else
-    bad "no SPI log at $log"
+    bad "no SPI logs at $log320, $log240"
 fi
 
 # Larger than the panel: a build error that says so
-if make -s firmware BOARD=pico SCENE=scenes/spd/rings-1.nff SIZE=321x240 >"$OUT/big.build" 2>&1; then
-    bad "a 321x240 frame built for the 320x240 panel"
-elif grep -q "the frame is larger than the 320x240 panel" "$OUT/big.build"; then
-    ok "a 321x240 frame does not build: the frame is larger than the 320x240 panel"
+if make -s firmware BOARD=pico SCENE=scenes/spd/rings-1.nff SIZE=241x240 PANEL=240x240 >"$OUT/big.build" 2>&1; then
+    bad "a 241x240 frame built for the 240x240 panel"
+elif grep -q "the frame is larger than the panel" "$OUT/big.build"; then
+    ok "a 241x240 frame does not build for PANEL=240x240: the frame is larger than the panel"
 else
-    bad "a 321x240 frame failed to build without the expected message: $(tail -2 "$OUT/big.build")"
+    bad "a 241x240 frame failed to build without the expected message: $(tail -2 "$OUT/big.build")"
 fi
 echo "board-pico-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

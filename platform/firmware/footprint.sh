@@ -1,15 +1,32 @@
 #!/bin/sh
 # footprint.sh FIRMWARE.elf OBJDIR [REPORT]: flash and RAM by section, the
 # worst-case stack from the call graph, and (when a run report exists)
-# the measured stack high-water mark.
+# the measured stack high-water mark. A section whose run address differs
+# from its load address is in flash and, once reset has copied it, in RAM
+# too (the code and scene tables of a board that runs them from SRAM).
 elf=$1 objdir=$2 report=$3
 here=$(dirname "$0")
-${CROSS:-arm-none-eabi-}size -A "$elf" | awk '
-    $1 ~ /^\./ && $2 ~ /^[0-9]+$/ && $1 !~ /^\.(debug|comment|ARM\.attributes)/ { printf "  %-12s %8d bytes\n", $1, $2; s[$1] = $2 }
+${CROSS:-arm-none-eabi-}objdump -h "$elf" | awk '
+    function hex(s,   v, i) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
+    $1 ~ /^[0-9]+$/ && $2 ~ /^\./ { name = $2; size = hex($3); vma = $4; lma = $5; next }
+    name != "" {
+        flags = $0; n = name; name = ""
+        if (flags !~ /ALLOC/) next
+        load = flags ~ /LOAD/
+        copied = load && vma != lma
+        where = !load ? "RAM" : copied ? "flash, run from RAM" : "flash"
+        if (n == ".data") where = "flash, copied to RAM"
+        printf "  %-12s %8d bytes  %s\n", n, size, where
+        if (n == ".scene") { scene = size; if (copied) ram_scene = size }
+        else if (n == ".data") data = size
+        else if (n == ".bss") bss = size
+        else if (load) { code += size; if (copied) ram_code += size }
+    }
     END {
-        code = s[".vectors"] + s[".text"] + s[".ARM.exidx"]
-        printf "flash: code %d bytes, scene tables %d bytes, data image %d bytes\n", code, s[".scene"], s[".data"]
-        printf "ram:   data+bss %d bytes\n", s[".data"] + s[".bss"]
+        printf "flash: code %d bytes, scene tables %d bytes, data image %d bytes\n", code, scene, data
+        if (ram_code + ram_scene > 0)
+            printf "ram:   code %d bytes and scene tables %d bytes copied from flash at reset\n", ram_code, ram_scene
+        printf "ram:   data+bss %d bytes\n", data + bss
     }'
 # the stack region itself (its section also holds alignment padding)
 lim=$(${CROSS:-arm-none-eabi-}nm "$elf" | awk '$3 == "__stack_limit" { print $1 }')

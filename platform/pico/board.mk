@@ -24,7 +24,8 @@ BOARD_CLOCK_HZ ?= 125000000
 BOARD_BACKENDS := fixed float
 BOARD_SRC      := platform/pico/board.c
 BOARD_LD       := platform/pico/link.ld
-BOARD_RUN      := node platform/pico/run.mjs
+# (the module on the panel's pins, for the runner's model of its glass)
+BOARD_RUN       = node platform/pico/run.mjs --module $(PANEL)$(if $(filter 1,$(PANEL_FLIP)),$(comma)flip)
 # SysTick counts cycles (board.c); the M0+ has no instruction counter, so
 # run.mjs counts instructions from outside the image; no semihosting: the
 # run ends with the exit status as a report line, then the core sleeps

@@ -64,10 +64,11 @@
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { RP2040 } from 'rp2040js';
-import { decodePanel, panelStream } from './st7789.mjs';
+import { PANELS, decodePanel, panelStream } from './st7789.mjs';
 import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
-const PIN_DC = 16;
+const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20;
+const SPI_MAX_HZ = 62.5e6; // the ST7789's 16 ns write cycle
 const WALL_LIMIT_S = 900;
 const MARK_SYMBOL = 'port_cycles_read';
 const SYSTICK_TOLERANCE = 0.1; // percent
@@ -235,7 +236,7 @@ function makeSsi(mcu, stop, onXip) {
 
 // ---- running the firmware --------------------------------------------------
 
-function run(elfPath, uf2Path) {
+function run(elfPath, uf2Path, panel) {
   if (!existsSync(uf2Path)) fail(`${uf2Path}: missing: the flash image comes from the UF2 beside ${elfPath} (build it: uf2.mjs pack)`);
   let img;
   try {
@@ -363,12 +364,37 @@ function run(elfPath, uf2Path) {
   core.SP = SRAM_END;
   core.PC = BOOT2_SRAM;
 
+  // the SPI log (st7789.mjs): each byte with the data/command and chip
+  // select levels; chip select rising as an event. Chip select may only
+  // fall once SPI0 runs as the panel needs it: enabled, master, 8-bit
+  // frames, data sampled on the rising edge (mode 0 or 3), at most
+  // 62.5 MHz, its clock pin handed to it (else the clock line can move
+  // while the panel listens, and it reads a phantom bit).
   const serial = [], spi = [];
   mcu.uart[0].onByte = (v) => serial.push(v);
   mcu.spi[0].onTransmit = (v) => {
-    spi.push(mcu.gpio[PIN_DC].outputValue ? 1 : 0, v);
+    spi.push((mcu.gpio[PIN_DC].outputValue ? 1 : 0) | (mcu.gpio[PIN_CS].outputValue ? 2 : 0), v);
     mcu.spi[0].completeTransmit(0);
   };
+  let csHigh = null;
+  mcu.gpio[PIN_CS].addListener(() => {
+    const pin = mcu.gpio[PIN_CS];
+    if (!pin.outputEnable) return;
+    const high = pin.outputValue;
+    if (high === csHigh) return;
+    csHigh = high;
+    if (high) { spi.push(0x80, 0); return; }
+    if (!panel) return;
+    const s0 = mcu.spi[0], c0 = s0.control0 ?? 0, mode = (c0 >> 6) & 3;
+    const why = !s0.enabled ? 'SPI0 is not enabled'
+      : s0.control1 & 4 ? 'SPI0 is not the master'
+      : s0.dataBits !== 8 ? `SPI0 sends ${s0.dataBits}-bit frames, not 8`
+      : mode === 1 || mode === 2 ? `SPI0 is in a mode (SPO ${mode >> 1}, SPH ${mode & 1}) that shifts data on the rising edge, where the ST7789 samples it`
+      : !(s0.clockFrequency > 0 && s0.clockFrequency <= SPI_MAX_HZ) ? `SPI0's clock is ${(s0.clockFrequency / 1e6).toFixed(1)} MHz, outside the ST7789's 62.5 MHz`
+      : mcu.gpio[PIN_SCK].functionSelect !== 1 ? `GP${PIN_SCK} is not SPI0's clock yet`
+      : null;
+    if (why) stop(`chip select (GP${PIN_CS}) went low while ${why}: on the chip the panel could read a phantom bit`);
+  });
 
   const ppb = mcu.ppb;
   const canWake = () => (ppb.systickIntEnable && ppb.systickTimer.enable) || core.enabledInterrupts !== 0;
@@ -401,9 +427,12 @@ function run(elfPath, uf2Path) {
           marks.push([instructions, core.cycles]);
         }
         at = pc;
-        const cycles = core.executeInstruction();
+        // (core.cycles, not the instruction's return: the SIO divider adds
+        // its 8 cycles an operand write to core.cycles directly)
+        const before = core.cycles;
+        core.executeInstruction();
         instructions++;
-        clock.tick(cycles * nsPerCycle);
+        clock.tick((core.cycles - before) * nsPerCycle);
       }
       if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (${hex(core.PC)})`);
     }
@@ -414,6 +443,7 @@ function run(elfPath, uf2Path) {
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
     instructions, cycles: core.cycles, marks, markSym, ending, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+    backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
   };
 }
 
@@ -436,20 +466,29 @@ function receive(rt, args) {
   return r;
 }
 
+const USAGE = 'usage: run.mjs [--module PANEL[,flip]] FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream [PANEL [FLIP]]';
 const argv = process.argv.slice(2);
 if (argv[0] === '--panel') {
-  const [, log, w, h, out] = argv;
+  const [, log, w, h, out, panel = '320x240', flip = '0'] = argv;
   try {
-    writeFileSync(out, panelStream(decodePanel(readFileSync(log)), Number(w), Number(h)));
+    writeFileSync(out, panelStream(decodePanel(readFileSync(log), panel, Number(flip)), Number(w), Number(h)));
   } catch (e) {
     fail(e.message);
   }
   process.exit(0);
 }
-if (argv.length < 3) fail('usage: run.mjs FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream');
+// the module on the panel's pins (board.mk's PANEL and PANEL_FLIP)
+let module = ['320x240', 0];
+if (argv[0] === '--module') {
+  const [name, flip] = (argv[1] ?? '').split(',');
+  if (!PANELS[name] || (flip !== undefined && flip !== 'flip')) fail(`--module ${argv[1]}: one of ${Object.keys(PANELS).join(', ')}, optionally with ,flip`);
+  module = [name, flip ? 1 : 0];
+  argv.splice(0, 2);
+}
+if (argv.length < 3) fail(USAGE);
 const [elf, out, rt, hz] = argv;
 const base = elf.replace(/\.elf$/, '');
-const r = run(elf, `${base}.uf2`);
+const r = run(elf, `${base}.uf2`, true);
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
 if (r.failure) fail(`${r.failure} (the UART output so far: ${base}.serial)`);
@@ -498,10 +537,11 @@ if (r.markSym === undefined) {
 if (!streamed) {
   if (value('frame_width') === undefined) fail(`${base}.serial: neither a frame nor a panel's frame_width in the report`);
   try {
-    writeFileSync(`${base}.panel.stream`, panelStream(decodePanel(r.spi), Number(value('frame_width')), Number(value('frame_height'))));
+    writeFileSync(`${base}.panel.stream`, panelStream(decodePanel(r.spi, module[0], module[1]), Number(value('frame_width')), Number(value('frame_height'))));
   } catch (e) {
     fail(`${base}.spi: ${e.message}`);
   }
+  if (!r.backlight) fail(`the backlight (GP${PIN_BACKLIGHT}) is off at the end: the panel shows nothing`);
   const img = receive(rt, [`${base}.panel.stream`, '-o', out]);
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);

@@ -198,7 +198,7 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     DMA_TRANS_COUNT = (uint32_t)(a->y2 - a->y1 + 1) * (uint32_t)(a->x2 - a->x1 + 1) * 2u;
     DMA_CTRL_TRIG = DMA_EN | DMA_INCR_READ | DMA_CHAIN_TO_SELF | DMA_TREQ_SPI0_TX;
     board_heartbeat();
-    if (a->y2 + 1u >= progress_next) {
+    if (a->y2 + 1u >= progress_next || a->y2 + 1u == frame_height) {
         report_value("progress_rows", a->y2 + 1u);
         progress_next = (uint16_t)(a->y2 + 1u + (frame_height + 9u) / 10u);
     }

@@ -144,7 +144,16 @@ export function decodePanel(log, panelName = '320x240', flip = 0) {
       const px = mem[i] ^ (invert ? 0 : 0xffff); // IPS glass: inverted without INVON
       pixels[2 * o] = px >> 8; pixels[2 * o + 1] = px & 0xff; written[o] = memWritten[i];
     }
-  return { width, height, pixels, written };
+  return { width, height, pixels, written, madctl, module: view, offset };
+}
+
+// Why a frame pixel shows nothing: the window's pixels went elsewhere.
+function unwritten(picture, x, y) {
+  const { madctl, module, offset } = picture;
+  const hint = madctl !== undefined && (madctl & 0xe0) !== (module & 0xe0)
+    ? `: MADCTL 0x${madctl.toString(16)} put the frame elsewhere in the memory than the module's 0x${module.toString(16)}${offset ? ` (rows from ${offset})` : ''} shows upright (mirrored, turned or off the glass)`
+    : offset ? `: is the window offset by the module's ${offset} rows?` : '';
+  return new Error(`panel pixel ${x},${y} of the frame was never written${hint}`);
 }
 
 // The top left w x h of the module's picture as rt's stream: header, one
@@ -156,7 +165,7 @@ export function panelStream(picture, w, h) {
   for (let y = 0; y < h; y++)
     for (let x = 0; x < w; x++) {
       const i = y * width + x;
-      if (!picture.written[i]) throw new Error(`panel pixel ${x},${y} of the frame was never written`);
+      if (!picture.written[i]) throw unwritten(picture, x, y);
       px[2 * (y * w + x)] = picture.pixels[2 * i];
       px[2 * (y * w + x) + 1] = picture.pixels[2 * i + 1];
     }
