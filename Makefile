@@ -61,7 +61,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage uf2
+.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of

@@ -59,6 +59,8 @@ BOARD_ARCH_SKIP :=
 BOARD_RULES :=
 BOARD_OBJS :=
 BOARD_IMAGES :=
+BOARD_IMAGE_NOTE :=
+BOARD_IMAGE_SHOW :=
 BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
@@ -236,6 +238,15 @@ $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
 	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
 
 firmware: $(FW_ELF) $(BOARD_IMAGES)
+
+# make image: the files to flash (BOARD_IMAGES) of a board that exists as
+# silicon, copied to out/ with the name make run gives the PNG; the
+# board's BOARD_IMAGE_NOTE says how to flash them
+image: deps-board $(BOARD_IMAGES)
+	@$(if $(BOARD_IMAGES),,echo "BOARD=$(BOARD) makes no image to flash: it runs under its emulator only" >&2; exit 1)
+	@mkdir -p out
+	@$(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && $(or $(BOARD_IMAGE_SHOW),echo) $(basename $(RUN_OUT))$(suffix $(f));)
+	@echo "$(BOARD_IMAGE_NOTE)"
 
 ifneq ($(BOARD_RULES),)
 include $(BOARD_RULES)

@@ -127,7 +127,7 @@ static const char *bringup_failed; /* the wait that expired, or 0 */
 
 /* Waits until (*reg & mask) == want, at most WAIT_POLLS reads; on
  * expiry notes `what` (the first such) and returns 0. */
-static int wait_for(volatile uint32_t *reg, uint32_t mask, uint32_t want, const char *what)
+static int wait_for(const volatile uint32_t *reg, uint32_t mask, uint32_t want, const char *what)
 {
     for (uint32_t n = 0; n < WAIT_POLLS; n++)
         if ((*reg & mask) == want)

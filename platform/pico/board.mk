@@ -36,6 +36,8 @@ BOARD_ARCH_SKIP := semihost
 BOARD_RULES    := platform/pico/image.mk
 BOARD_OBJS     := build/board/pico/boot2/boot2_crc.o
 BOARD_IMAGES    = $(FW_DIR)/$(BACKEND).uf2
+BOARD_IMAGE_SHOW := node platform/pico/uf2.mjs check
+BOARD_IMAGE_NOTE = copy it onto the RPI-RP2 drive (hold BOOTSEL while plugging the Pico in): docs/boards.md, On a real Pico
 # make run renders one sample a pixel: rp2040js runs 25 to 35 million
 # cycles a second, and the default scene anti-aliased (AA=3) takes about
 # three minutes of the host's time, one sample about forty seconds

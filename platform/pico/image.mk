@@ -5,7 +5,8 @@
 #    the .boot2 section that link.ld puts first in flash;
 #  - <backend>.uf2 beside each ELF: its flash image as UF2 blocks for the
 #    RPI-RP2 drive (family RP2040), checked as it is written;
-#  - make uf2: that file copied to out/, as make run does.
+#  - make uf2, the same as make image: that file copied to out/, as
+#    make run does, and checked.
 PICO_BOOT2 := build/board/pico/boot2
 
 $(PICO_BOOT2)/boot2.elf: platform/pico/boot2.S platform/pico/image.mk
@@ -28,9 +29,5 @@ $(FW_DIR)/%.uf2: $(FW_DIR)/%.bin platform/pico/uf2.mjs
 	node platform/pico/uf2.mjs pack $< $@
 	@node platform/pico/uf2.mjs check $@ >/dev/null
 
-PICO_UF2_OUT = $(basename $(RUN_OUT)).uf2
-uf2: deps-board $(FW_DIR)/$(BACKEND).uf2
-	@mkdir -p out
-	@cp $(FW_DIR)/$(BACKEND).uf2 $(PICO_UF2_OUT)
-	@node platform/pico/uf2.mjs check $(PICO_UF2_OUT)
-	@echo "copy $(PICO_UF2_OUT) onto the RPI-RP2 drive (hold BOOTSEL while plugging the Pico in): docs/boards.md, On a real Pico"
+# make uf2: make image by the name Pico users look for
+uf2: image
