@@ -4,7 +4,7 @@
 #  - the image is the chip's: the UF2 checks out (uf2.mjs check: blocks,
 #    family, addresses, boot2's CRC, the vector table at 0x10000100), and
 #    the ELF has no BKPT (semihosting) and no address of the emulator-only
-#    counter block (0x40068000);
+#    counter block (0x40068000), and only reset runs from flash;
 #  - run.mjs boots that UF2 as the chip does (boot ROM's CRC check, boot2
 #    from SRAM against its flash model), with its strict checks on: a
 #    block touched in reset, an unmapped access, UART or SPI without
@@ -107,6 +107,13 @@ bkpt=$(arm-none-eabi-objdump -d "$elf" | grep -c 'bkpt')
 lit=$(arm-none-eabi-objdump -s "$elf" | grep -ci ' 00800640 ')
 [ "$bkpt" -eq 0 ] && [ "$lit" -eq 0 ] && ok "the image has no BKPT and no 0x40068000 literal" ||
     bad "the image has $bkpt BKPT and $lit 0x40068000 literals"
+
+# Only reset runs from flash: every other function, and the read-only
+# data, is in SRAM (the render reads no flash through the XIP cache)
+inflash=$(arm-none-eabi-nm "$elf" | awk 'tolower($2) ~ /^[tr]$/ && $1 ~ /^1/ && $3 !~ /^(Reset_Handler|reset_c|vector_table)$/ { print $3 }' | tr '\n' ' ')
+insram=$(arm-none-eabi-nm "$elf" | awk 'tolower($2) ~ /^[tr]$/ && $1 ~ /^2/ { n++ } END { print n + 0 }')
+[ -z "$inflash" ] && [ "$insram" -gt 100 ] && ok "code in SRAM: $insram functions and read-only objects there, only reset and the vector table in flash" ||
+    bad "code or read-only data in flash: $inflash($insram in SRAM)"
 
 # The divider: the same bits, fewer cycles
 if cmp -s "$OUT/rings-div-board.png" "$OUT/rings-nodiv-board.png"; then

@@ -4,8 +4,10 @@
 B=${1:-build/asan}
 total_pass=0 total_fail=0
 run() {
+    t0=$(date +%s)
     log=$("$@" 2>&1)
     printf '%s\n' "$log"
+    echo "  ($* took $(($(date +%s) - t0)) s)"
     line=$(printf '%s\n' "$log" | grep -E '^[a-z_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
     if [ -z "$line" ]; then
         echo "  FAIL  $* printed no summary (crashed?)"

@@ -550,6 +550,6 @@ const mhz = (f) => (f ? `${(f / 1e6).toFixed(3)} MHz` : 'stopped');
 console.log(`clocks at the end: clk_sys ${mhz(r.clkSys)}, clk_peri ${mhz(r.clkPeri)}`);
 const cycles = value('render_cycles');
 if (hz && cycles !== undefined)
-  console.log(`board render time at ${Number(hz) / 1e6} MHz (SysTick cycles under rp2040js: no flash wait states or XIP cache modelled; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
+  console.log(`board render time at ${Number(hz) / 1e6} MHz (SysTick cycles under rp2040js's M0+ timing, code and scene tables in SRAM; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
 console.log(`rp2040js wall time on the host (${r.instructions} instructions, ${r.cycles} cycles in all, ${(r.cycles / r.wall / 1e6).toFixed(1)} M cycles/s): ${r.wall.toFixed(1)} s`);
 if (systickOff !== null) fail(`SysTick's render_cycles is ${systickOff.toFixed(4)}% from the emulator's count, over the ${SYSTICK_TOLERANCE}% allowed`);
