@@ -65,11 +65,11 @@ __attribute__((naked)) void Reset_Handler(void)
 }
 
 /* Words from src to [dst, end), unless they are already there (code
- * and tables that run from flash). Inlined: it runs from flash too.
- * volatile: stops the compiler turning the loop into a memcpy call
- * before memory is set up. */
-static inline __attribute__((always_inline)) void copy_words(volatile uint32_t *dst, const uint32_t *end,
-                                                             const uint32_t *src)
+ * and tables that run from flash). In flash with reset, and small: it
+ * runs once. volatile: stops the compiler turning the loop into a memcpy
+ * call before memory is set up. */
+__attribute__((section(".text.start"), noinline, optimize("Os"))) static void
+copy_words(volatile uint32_t *dst, const uint32_t *end, const uint32_t *src)
 {
     if (dst == src)
         return;
@@ -78,7 +78,7 @@ static inline __attribute__((always_inline)) void copy_words(volatile uint32_t *
         *dst++ = *src++;
 }
 
-void reset_c(void)
+__attribute__((optimize("Os"))) void reset_c(void)
 {
     copy_words(__code_start, __code_end, __code_load);
     copy_words(__scene_start, __scene_end, __scene_load);
