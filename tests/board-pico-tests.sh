@@ -21,6 +21,9 @@
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
 #    (0) give the same image and counters, the divider in fewer cycles on
 #    a scene that divides (rings-1: cylinders);
+#  - a crystal that never starts (run.mjs --no-crystal): the firmware's
+#    bounded wait expires and it says so, status 5, LED off (on after a
+#    good run);
 #  - what silicon would not survive fails with its reason: a damaged
 #    boot2 CRC, clk_peri left stopped (PICO_OMIT=clk_peri), a mirrored
 #    MADCTL (the image differs), no INVON (inverted colours), a missing
@@ -129,6 +132,17 @@ fi
 nm=$(elf_of SCENE=scenes/spd/rings-1.nff SIZE=24x24 DEPTH=5).elf
 calls=$(arm-none-eabi-objdump -d "$nm" | awk '/^[0-9a-f]+ <.*>:$/ { fn = $2 } /bl.*<__(aeabi_uidiv|udivsi3)/ && fn ~ /wdiv/ { n++ } END { print n + 0 }')
 [ "$calls" -eq 0 ] && ok "with the divider, fx_wdiv* call no libgcc division" || bad "fx_wdiv* still call libgcc's division ($calls calls)"
+
+# A crystal that never starts: the bounded wait expires, the firmware says
+# which, stops with status 5 and leaves the LED off
+b=$(elf_of SCENE=scenes/bench/card.nff SIZE=40x30 DEPTH=3)
+msg=$(node platform/pico/run.mjs --no-crystal "$b.elf" "$OUT/nocrystal.png" "$RT" 2>&1); status=$?
+if [ $status -eq 5 ] && echo "$msg" | grep -q 'XOSC) never became stable' && echo "$msg" | grep -q 'LED (GP25) at the end: off'; then
+    ok "no crystal: status 5, '$(echo "$msg" | grep XOSC)', LED off"
+else
+    bad "no crystal: status $status, '$(echo "$msg" | tail -3 | tr '\n' ' ')'"
+fi
+grep -q 'LED (GP25) at the end: on' "$OUT/card-320.report" && ok "the LED is on after a good run" || bad "the LED is not on after a good run"
 
 # What the chip would not survive: a damaged boot2 CRC
 base=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5)

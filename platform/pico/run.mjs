@@ -3,7 +3,7 @@
 // pinned in package.json, installed into node_modules/ by npm ci), booted
 // the way the chip boots it.
 //
-//   node run.mjs FIRMWARE.elf OUT.png RT [CLOCK_HZ]
+//   node run.mjs [--module PANEL[,flip]] [--no-crystal] FIRMWARE.elf OUT.png RT [CLOCK_HZ]
 //       Flash holds FIRMWARE.uf2 (beside the ELF, checked block by block
 //       by uf2.mjs); the ELF is read only for its symbols (and compared
 //       with the UF2, so that a stale UF2 is caught). Boots as the boot
@@ -21,9 +21,16 @@
 //       Then the runner's own counts of the render (below), the clocks at
 //       the end, the render's time at CLOCK_HZ from the firmware's
 //       render_cycles, and the host's wall time.
-//   node run.mjs --panel FIRMWARE.spi W H OUT.stream
-//       Only the panel's decoding: the top left WxH pixels of the panel as
-//       an rgb565be frame in rt's stream format (platform/firmware/sink.h).
+//       --module: the panel module on the pins (st7789.mjs's PANELS,
+//       320x240 by default; ",flip": turned by 180 degrees), which the
+//       decoder takes as the glass the picture is seen through.
+//       --no-crystal: XOSC never reports stable, as on a board whose
+//       crystal does not start (the firmware must say so and stop).
+//       Also prints the LED's (GP25) state at the end.
+//   node run.mjs --panel FIRMWARE.spi W H OUT.stream [PANEL [FLIP]]
+//       Only the panel's decoding: the top left WxH pixels of the module's
+//       picture as an rgb565be frame in rt's stream format
+//       (platform/firmware/sink.h).
 //
 // The chip's state at boot2's start: every block of RESETS in reset but
 // IO_QSPI and PADS_QSPI (the ROM's), RESET_DONE its complement; clk_sys
@@ -67,7 +74,7 @@ import { RP2040 } from 'rp2040js';
 import { PANELS, decodePanel, panelStream } from './st7789.mjs';
 import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
-const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20;
+const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20, PIN_LED = 25;
 const SPI_MAX_HZ = 62.5e6; // the ST7789's 16 ns write cycle
 const WALL_LIMIT_S = 900;
 const MARK_SYMBOL = 'port_cycles_read';
@@ -236,7 +243,7 @@ function makeSsi(mcu, stop, onXip) {
 
 // ---- running the firmware --------------------------------------------------
 
-function run(elfPath, uf2Path, panel) {
+function run(elfPath, uf2Path, panel, noCrystal = false) {
   if (!existsSync(uf2Path)) fail(`${uf2Path}: missing: the flash image comes from the UF2 beside ${elfPath} (build it: uf2.mjs pack)`);
   let img;
   try {
@@ -342,6 +349,12 @@ function run(elfPath, uf2Path, panel) {
   };
   const ssi = makeSsi(mcu, stop, setXip);
   mcu.peripherals[0x18000] = ssi;
+  // --no-crystal: a board whose crystal never starts (XOSC STATUS never
+  // reports STABLE), to see the firmware's bounded wait and its message
+  if (noCrystal) {
+    const xosc = mcu.peripherals[0x40024], read = xosc.readUint32.bind(xosc);
+    xosc.readUint32 = (offset) => (offset === 0x04 ? read(offset) & 0x7fffffff : read(offset));
+  }
   setXip(false);
 
   // clocks as at reset: clk_ref and clk_sys from the ring oscillator,
@@ -444,6 +457,7 @@ function run(elfPath, uf2Path, panel) {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
     instructions, cycles: core.cycles, marks, markSym, ending, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
+    led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,
   };
 }
 
@@ -466,7 +480,7 @@ function receive(rt, args) {
   return r;
 }
 
-const USAGE = 'usage: run.mjs [--module PANEL[,flip]] FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream [PANEL [FLIP]]';
+const USAGE = 'usage: run.mjs [--module PANEL[,flip]] [--no-crystal] FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream [PANEL [FLIP]]';
 const argv = process.argv.slice(2);
 if (argv[0] === '--panel') {
   const [, log, w, h, out, panel = '320x240', flip = '0'] = argv;
@@ -478,17 +492,24 @@ if (argv[0] === '--panel') {
   process.exit(0);
 }
 // the module on the panel's pins (board.mk's PANEL and PANEL_FLIP)
-let module = ['320x240', 0];
-if (argv[0] === '--module') {
-  const [name, flip] = (argv[1] ?? '').split(',');
-  if (!PANELS[name] || (flip !== undefined && flip !== 'flip')) fail(`--module ${argv[1]}: one of ${Object.keys(PANELS).join(', ')}, optionally with ,flip`);
-  module = [name, flip ? 1 : 0];
-  argv.splice(0, 2);
+let module = ['320x240', 0], noCrystal = false;
+for (;;) {
+  if (argv[0] === '--module') {
+    const [name, flip] = (argv[1] ?? '').split(',');
+    if (!PANELS[name] || (flip !== undefined && flip !== 'flip')) fail(`--module ${argv[1]}: one of ${Object.keys(PANELS).join(', ')}, optionally with ,flip`);
+    module = [name, flip ? 1 : 0];
+    argv.splice(0, 2);
+  } else if (argv[0] === '--no-crystal') {
+    noCrystal = true;
+    argv.splice(0, 1);
+  } else {
+    break;
+  }
 }
 if (argv.length < 3) fail(USAGE);
 const [elf, out, rt, hz] = argv;
 const base = elf.replace(/\.elf$/, '');
-const r = run(elf, `${base}.uf2`, true);
+const r = run(elf, `${base}.uf2`, true, noCrystal);
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
 if (r.failure) fail(`${r.failure} (the UART output so far: ${base}.serial)`);
@@ -498,6 +519,7 @@ const streamed = r.serial.subarray(0, 4).toString('latin1') === 'RTF1';
 const rep = receive(rt, streamed ? [`${base}.serial`, '-o', out] : ['--report-only', `${base}.serial`]);
 process.stdout.write(rep.stdout);
 process.stderr.write(rep.stderr);
+console.log(`LED (GP25) at the end: ${r.led ? 'on' : 'off'}`);
 const lines = rep.stdout.trimEnd().split('\n');
 const statusLine = /^exit_status (-?\d+)$/;
 if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (the core ${r.ending}, after ${r.instructions} instructions)`);
