@@ -14,7 +14,8 @@
  *     in platform/arch/<arch>/ as well; a board meant for silicon
  *     without a debugger brings its own and leaves the arch's out with
  *     BOARD_ARCH_SKIP in its board.mk);
- *   - a linker script that defines MEMORY and includes
+ *   - a linker script that defines MEMORY, says where code and the
+ *     scene's tables run (the region aliases CODE and SCENE) and includes
  *     platform/firmware/sections.ld (which defines the symbols below);
  *   - board.mk: CPU flags, QEMU command, clock, backends (docs/boards.md,
  *     "Adding a board").
