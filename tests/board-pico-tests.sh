@@ -4,7 +4,8 @@
 #  - the image is the chip's: the UF2 checks out (uf2.mjs check: blocks,
 #    family, addresses, boot2's CRC, the vector table at 0x10000100), and
 #    the ELF has no BKPT (semihosting) and no address of the emulator-only
-#    counter block (0x40068000), and only reset runs from flash;
+#    counter block (0x40068000), and only reset runs from flash: the
+#    render misses the XIP cache nowhere (run.mjs --xip-model);
 #  - run.mjs boots that UF2 as the chip does (boot ROM's CRC check, boot2
 #    from SRAM against its flash model), with its strict checks on: a
 #    block touched in reset, an unmapped access, UART or SPI without
@@ -132,6 +133,17 @@ fi
 nm=$(elf_of SCENE=scenes/spd/rings-1.nff SIZE=24x24 DEPTH=5).elf
 calls=$(arm-none-eabi-objdump -d "$nm" | awk '/^[0-9a-f]+ <.*>:$/ { fn = $2 } /bl.*<__(aeabi_uidiv|udivsi3)/ && fn ~ /wdiv/ { n++ } END { print n + 0 }')
 [ "$calls" -eq 0 ] && ok "with the divider, fx_wdiv* call no libgcc division" || bad "fx_wdiv* still call libgcc's division ($calls calls)"
+
+# The render reads no flash past the XIP cache (run.mjs --xip-model):
+# no miss as built, where code in flash would miss
+b=$(elf_of SCENE=scenes/bench/card.nff SIZE=40x30 DEPTH=3)
+node platform/pico/run.mjs --xip-model "$b.elf" "$OUT/xip.png" "$RT" >"$OUT/xip.report" 2>&1
+m=$(val xip_render_misses "$OUT/xip.report") f=$(val xip_model_code_in_flash_misses "$OUT/xip.report")
+if [ "$m" = 0 ] && [ "${f:-0}" -gt 0 ]; then
+    ok "XIP cache model: no miss in the render ($(val xip_render_flash_reads "$OUT/xip.report") flash reads); $f misses with code and tables in flash"
+else
+    bad "XIP cache model: ${m:-?} misses in the render, ${f:-?} with code in flash"
+fi
 
 # A crystal that never starts: the bounded wait expires, the firmware says
 # which, stops with status 5 and leaves the LED off

@@ -3,7 +3,7 @@
 // pinned in package.json, installed into node_modules/ by npm ci), booted
 // the way the chip boots it.
 //
-//   node run.mjs [--module PANEL[,flip]] [--no-crystal] FIRMWARE.elf OUT.png RT [CLOCK_HZ]
+//   node run.mjs [--module PANEL[,flip]] [--no-crystal] [--xip-model] FIRMWARE.elf OUT.png RT [CLOCK_HZ]
 //       Flash holds FIRMWARE.uf2 (beside the ELF, checked block by block
 //       by uf2.mjs); the ELF is read only for its symbols (and compared
 //       with the UF2, so that a stale UF2 is caught). Boots as the boot
@@ -26,6 +26,9 @@
 //       decoder takes as the glass the picture is seen through.
 //       --no-crystal: XOSC never reports stable, as on a board whose
 //       crystal does not start (the firmware must say so and stop).
+//       --xip-model: counts the render's flash reads through a model of
+//       the XIP cache (16 KiB, two ways, 8-byte lines, LRU), and the misses
+//       it would have with its code and scene tables in flash (slower).
 //       Also prints the LED's (GP25) state at the end.
 //   node run.mjs --panel FIRMWARE.spi W H OUT.stream [PANEL [FLIP]]
 //       Only the panel's decoding: the top left WxH pixels of the module's
@@ -241,9 +244,33 @@ function makeSsi(mcu, stop, onXip) {
   return ssi;
 }
 
+// ---- the XIP cache, modelled (--xip-model) ----------------------------------
+
+// The RP2040's XIP cache as the board notes give it: 16 KiB, two ways,
+// 8-byte lines, LRU assumed. Counts reads and misses of flash addresses.
+function makeXipCache() {
+  const SETS = 1024, tags = new Int32Array(SETS * 2).fill(-1), older = new Uint8Array(SETS);
+  return {
+    reads: 0, misses: 0,
+    read(flashAddr) {
+      this.reads++;
+      const line = flashAddr >>> 3, set = line & (SETS - 1), tag = line >>> 10, i = set * 2;
+      if (tags[i] === tag) { older[set] = 1; return; }
+      if (tags[i + 1] === tag) { older[set] = 0; return; }
+      this.misses++;
+      const way = older[set]; // the least recently used way
+      tags[i + way] = tag;
+      older[set] = way ^ 1;
+    },
+  };
+}
+// A miss with boot2's 03h reads at clk_sys / 4: 8 command and 24 address
+// clocks, then 64 data clocks for the line, each 4 clk_sys cycles.
+const XIP_MISS_CYCLES_03H = (8 + 24 + 64) * 4;
+
 // ---- running the firmware --------------------------------------------------
 
-function run(elfPath, uf2Path, panel, noCrystal = false) {
+function run(elfPath, uf2Path, panel, noCrystal = false, xipModel = false) {
   if (!existsSync(uf2Path)) fail(`${uf2Path}: missing: the flash image comes from the UF2 beside ${elfPath} (build it: uf2.mjs pack)`);
   let img;
   try {
@@ -341,8 +368,32 @@ function run(elfPath, uf2Path, panel, noCrystal = false) {
       return proto.readUint8.call(this, a);
     },
   };
+  // --xip-model: once XIP runs, every read goes through two models of the
+  // XIP cache: `image`, the flash reads this image makes, and `inFlash`,
+  // the ones it would make if its code and scene tables ran from flash
+  // where they are loaded (their SRAM addresses mapped back)
+  const xip = { image: makeXipCache(), inFlash: makeXipCache() };
+  const ranges = [['__code_start', '__code_end', '__code_load'], ['__scene_start', '__scene_end', '__scene_load']]
+    .map((names) => names.map((n) => elf.symbols.get(n)))
+    .filter(([a, b, l]) => a !== undefined && b !== undefined && l !== undefined && a !== l);
+  const modelRead = (a) => {
+    a >>>= 0;
+    if (a >= XIP_LO && a < XIP_HI) {
+      const f = a & 0xffffff;
+      xip.image.read(f);
+      xip.inFlash.read(f);
+      return;
+    }
+    for (const [lo, hi, load] of ranges)
+      if (a >= lo && a < hi) { xip.inFlash.read((load + (a - lo)) & 0xffffff); return; }
+  };
+  const modelled = {
+    readUint32(a) { modelRead(a); return proto.readUint32.call(this, a); },
+    readUint16(a) { modelRead(a); return proto.readUint16.call(this, a); },
+    readUint8(a) { modelRead(a); return proto.readUint8.call(this, a); },
+  };
   const setXip = (ready) => {
-    const src = ready ? proto : guarded;
+    const src = ready ? (xipModel ? modelled : proto) : guarded;
     mcu.readUint32 = src.readUint32;
     mcu.readUint16 = src.readUint16;
     mcu.readUint8 = src.readUint8;
@@ -437,7 +488,7 @@ function run(elfPath, uf2Path, panel, noCrystal = false) {
         if (pc === markPC) {
           // an interrupt taken before it would run the handler first
           if (core.interruptsUpdated && core.checkForInterrupts()) continue;
-          marks.push([instructions, core.cycles]);
+          marks.push([instructions, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
         }
         at = pc;
         // (core.cycles, not the instruction's return: the SIO divider adds
@@ -455,7 +506,7 @@ function run(elfPath, uf2Path, panel, noCrystal = false) {
   }
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
-    instructions, cycles: core.cycles, marks, markSym, ending, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+    instructions, cycles: core.cycles, marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
     led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,
   };
@@ -466,12 +517,11 @@ function run(elfPath, uf2Path, panel, noCrystal = false) {
 function renderCounts(marks) {
   if (marks.length < 2 || marks.length % 2) return { note: `${marks.length} call(s) of ${MARK_SYMBOL}: the render's start, output pairs and end need an even count of at least 2` };
   const first = marks[0], last = marks[marks.length - 1];
-  let ins = last[0] - first[0], cyc = last[1] - first[1];
-  for (let k = 1; k < marks.length - 1; k += 2) { // (begin, end) of display output
-    ins -= marks[k + 1][0] - marks[k][0];
-    cyc -= marks[k + 1][1] - marks[k][1];
-  }
-  return { instructions: ins, cycles: cyc, pairs: (marks.length - 2) / 2 };
+  const n = first.map((v, i) => last[i] - v);
+  for (let k = 1; k < marks.length - 1; k += 2) // (begin, end) of display output
+    for (let i = 0; i < n.length; i++) n[i] -= marks[k + 1][i] - marks[k][i];
+  const [instructions, cycles, flashReads, flashMisses, inFlashMisses] = n;
+  return { instructions, cycles, flashReads, flashMisses, inFlashMisses, pairs: (marks.length - 2) / 2 };
 }
 
 function receive(rt, args) {
@@ -480,7 +530,7 @@ function receive(rt, args) {
   return r;
 }
 
-const USAGE = 'usage: run.mjs [--module PANEL[,flip]] [--no-crystal] FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream [PANEL [FLIP]]';
+const USAGE = 'usage: run.mjs [--module PANEL[,flip]] [--no-crystal] [--xip-model] FIRMWARE.elf OUT.png RT [CLOCK_HZ] | --panel SPI_LOG W H OUT.stream [PANEL [FLIP]]';
 const argv = process.argv.slice(2);
 if (argv[0] === '--panel') {
   const [, log, w, h, out, panel = '320x240', flip = '0'] = argv;
@@ -492,7 +542,7 @@ if (argv[0] === '--panel') {
   process.exit(0);
 }
 // the module on the panel's pins (board.mk's PANEL and PANEL_FLIP)
-let module = ['320x240', 0], noCrystal = false;
+let module = ['320x240', 0], noCrystal = false, xipModel = false;
 for (;;) {
   if (argv[0] === '--module') {
     const [name, flip] = (argv[1] ?? '').split(',');
@@ -502,6 +552,9 @@ for (;;) {
   } else if (argv[0] === '--no-crystal') {
     noCrystal = true;
     argv.splice(0, 1);
+  } else if (argv[0] === '--xip-model') {
+    xipModel = true;
+    argv.splice(0, 1);
   } else {
     break;
   }
@@ -509,7 +562,7 @@ for (;;) {
 if (argv.length < 3) fail(USAGE);
 const [elf, out, rt, hz] = argv;
 const base = elf.replace(/\.elf$/, '');
-const r = run(elf, `${base}.uf2`, true, noCrystal);
+const r = run(elf, `${base}.uf2`, true, noCrystal, xipModel);
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
 if (r.failure) fail(`${r.failure} (the UART output so far: ${base}.serial)`);
@@ -553,6 +606,13 @@ if (r.markSym === undefined) {
       const off = c.cycles ? ((Number(systick) - c.cycles) / c.cycles) * 100 : Infinity;
       console.log(`systick render_cycles ${systick} against the emulator's ${c.cycles}: ${off >= 0 ? '+' : ''}${off.toFixed(4)}%`);
       if (!(Math.abs(off) <= SYSTICK_TOLERANCE)) systickOff = off;
+    }
+    if (r.xipModel && pixels > 0) {
+      const perPx = (v) => (v / pixels).toFixed(2);
+      console.log(`xip_render_flash_reads ${c.flashReads}`);
+      console.log(`xip_render_misses ${c.flashMisses}`);
+      console.log(`xip_model_code_in_flash_misses ${c.inFlashMisses}`);
+      console.log(`XIP cache model (16 KiB, 2 ways, 8-byte lines, LRU): this image reads flash ${c.flashReads} times in the render (${c.flashMisses} misses, ${perPx(c.flashMisses)} a pixel); with its code and scene tables in flash it would miss ${c.inFlashMisses} times, ${perPx(c.inFlashMisses)} a pixel: at boot2's 03h reads (${XIP_MISS_CYCLES_03H} cycles a miss) +${perPx(c.inFlashMisses * XIP_MISS_CYCLES_03H)} cycles a pixel, +${(100 * c.inFlashMisses * XIP_MISS_CYCLES_03H / c.cycles).toFixed(1)}%`);
     }
   }
 }
