@@ -270,7 +270,7 @@ const XIP_MISS_CYCLES_03H = (8 + 24 + 64) * 4;
 
 // ---- running the firmware --------------------------------------------------
 
-function run(elfPath, uf2Path, panel, noCrystal = false, xipModel = false) {
+function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   if (!existsSync(uf2Path)) fail(`${uf2Path}: missing: the flash image comes from the UF2 beside ${elfPath} (build it: uf2.mjs pack)`);
   let img;
   try {
@@ -448,7 +448,6 @@ function run(elfPath, uf2Path, panel, noCrystal = false, xipModel = false) {
     if (high === csHigh) return;
     csHigh = high;
     if (high) { spi.push(0x80, 0); return; }
-    if (!panel) return;
     const s0 = mcu.spi[0], c0 = s0.control0 ?? 0, mode = (c0 >> 6) & 3;
     const why = !s0.enabled ? 'SPI0 is not enabled'
       : s0.control1 & 4 ? 'SPI0 is not the master'
@@ -562,7 +561,7 @@ for (;;) {
 if (argv.length < 3) fail(USAGE);
 const [elf, out, rt, hz] = argv;
 const base = elf.replace(/\.elf$/, '');
-const r = run(elf, `${base}.uf2`, true, noCrystal, xipModel);
+const r = run(elf, `${base}.uf2`, { noCrystal, xipModel });
 writeFileSync(`${base}.serial`, r.serial);
 writeFileSync(`${base}.spi`, r.spi);
 if (r.failure) fail(`${r.failure} (the UART output so far: ${base}.serial)`);

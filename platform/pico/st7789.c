@@ -139,13 +139,20 @@ static void delay_ms(uint32_t ms)
 static void select_panel(void) { SIO_GPIO_OUT_CLR = 1u << PIN_CS; }
 static void release_panel(void) { SIO_GPIO_OUT_SET = 1u << PIN_CS; }
 
-/* A command and its parameters, the panel selected for just these. */
-static void command(uint8_t cmd, const uint8_t *params, unsigned n)
+/* The panel selected, a command sent, the data/command line set for
+ * what follows it. */
+static void start_command(uint8_t cmd)
 {
     select_panel();
     SIO_GPIO_OUT_CLR = 1u << PIN_DC;
     pl022_send(SPI0, cmd);
     SIO_GPIO_OUT_SET = 1u << PIN_DC;
+}
+
+/* A command and its parameters, the panel selected for just these. */
+static void command(uint8_t cmd, const uint8_t *params, unsigned n)
+{
+    start_command(cmd);
     for (unsigned i = 0; i < n; i++)
         pl022_send(SPI0, params[i]);
     release_panel();
@@ -189,10 +196,7 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     /* the other buffer's transfer is done: the core waited for it */
     command16x2(ST_CASET, a->x1, a->x2);
     command16x2(ST_RASET, a->y1 + PANEL_ROW_OFFSET, a->y2 + PANEL_ROW_OFFSET);
-    select_panel();
-    SIO_GPIO_OUT_CLR = 1u << PIN_DC;
-    pl022_send(SPI0, ST_RAMWR);
-    SIO_GPIO_OUT_SET = 1u << PIN_DC;
+    start_command(ST_RAMWR); /* the panel stays selected: transfer_wait() releases it */
     DMA_READ_ADDR = (uint32_t)(uintptr_t)px;
     DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
     DMA_TRANS_COUNT = (uint32_t)(a->y2 - a->y1 + 1) * (uint32_t)(a->x2 - a->x1 + 1) * 2u;
