@@ -26,7 +26,9 @@
 #    bounded wait expires and it says so, status 5, LED off (on after a
 #    good run);
 #  - what silicon would not survive fails with its reason: a damaged
-#    boot2 CRC, clk_peri left stopped (PICO_OMIT=clk_peri), a mirrored
+#    boot2 CRC, clk_peri left stopped (PICO_OMIT=clk_peri), and on small
+#    images (tests/pico_fault.S) a block written in reset, a bkpt, a read
+#    of 0x40068000, a boot2 that leaves XIP unset; a mirrored
 #    MADCTL (the image differs), no INVON (inverted colours), a missing
 #    row offset, a byte sent with chip select high, and the damaged
 #    transfers of before (data short of its window, a window off the
@@ -172,6 +174,36 @@ if [ $status -ne 0 ] && echo "$msg" | grep -q 'CRC' && echo "$msg" | grep -q 'US
 else
     bad "a damaged boot2 CRC: status $status, '$msg'"
 fi
+
+# ... and the runner's other checks, on small images (tests/pico_fault.S)
+fault_image() { # NAME BOOT2-OBJECT: $OUT/fault/NAME.elf and .uf2
+    arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles -e start -DFAULT_$1 \
+        -Wl,--section-start=.boot2=0x10000000 -Wl,--section-start=.text=0x10000100 \
+        -o "$OUT/fault/$1.elf" tests/pico_fault.S "$2" &&
+        arm-none-eabi-objcopy -O binary "$OUT/fault/$1.elf" "$OUT/fault/$1.bin" &&
+        node platform/pico/uf2.mjs pack "$OUT/fault/$1.bin" "$OUT/fault/$1.uf2"
+}
+mkdir -p "$OUT/fault"
+boot2=build/board/pico/boot2/boot2_crc.o
+arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles -e start -DFAULT_BOOT2 -Wl,-Ttext=0x20041f00 \
+    -o "$OUT/fault/boot2.elf" tests/pico_fault.S && arm-none-eabi-objcopy -O binary "$OUT/fault/boot2.elf" "$OUT/fault/boot2.bin" &&
+    node platform/pico/uf2.mjs boot2 "$OUT/fault/boot2.bin" "$OUT/fault/boot2.S" &&
+    arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -c "$OUT/fault/boot2.S" -o "$OUT/fault/boot2.o"
+for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothing is mapped" "XIP $OUT/fault/boot2.o SSI not set up"; do
+    set -- $f
+    name=$1 obj=$2
+    shift 2
+    if fault_image "$name" "$obj" >"$OUT/fault/$name.build" 2>&1; then
+        msg=$(node platform/pico/run.mjs "$OUT/fault/$name.elf" "$OUT/fault/$name.png" "$RT" 2>&1); status=$?
+        if [ $status -ne 0 ] && echo "$msg" | grep -q "$*"; then
+            ok "$(echo "$name" | tr A-Z a-z): $(echo "$msg" | grep "$*" | head -1 | cut -c1-150)"
+        else
+            bad "$name: status $status, '$msg'"
+        fi
+    else
+        bad "$name: the fault image did not build: $(tail -2 "$OUT/fault/$name.build")"
+    fi
+done
 
 # ... clk_peri left stopped
 if make -s -j2 firmware BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 PICO_OMIT=clk_peri >"$OUT/omit.build" 2>&1; then
