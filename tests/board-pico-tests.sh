@@ -279,9 +279,8 @@ fi
 # The SRAM copy fits the largest scene the boards bench runs (SPD
 # teapot-2: 39 KB of tables) at the panel's full size
 if make -s -j2 firmware BOARD=pico SCENE=scenes/spd/teapot-2.nff SIZE=320x240 DEPTH=5 >"$OUT/teapot.build" 2>&1; then
-    used=$(arm-none-eabi-objdump -h "$(elf_of SCENE=scenes/spd/teapot-2.nff SIZE=320x240 DEPTH=5).elf" | awk '
-        function hex(s,   v, i) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
-        $1 ~ /^[0-9]+$/ && $2 ~ /^\./ && $4 ~ /^200/ { n += hex($3) } END { print n }')
+    used=$(arm-none-eabi-objdump -h "$(elf_of SCENE=scenes/spd/teapot-2.nff SIZE=320x240 DEPTH=5).elf" |
+        awk -f platform/firmware/sections.awk | awk '$5 != "flash" { n += $2 } END { print n }')
     [ "$used" -le 262144 ] && ok "teapot-2 at 320x240 links: $used bytes of SRAM (code, tables, data, bss, stack) of 262144" ||
         bad "teapot-2 at 320x240: $used bytes of SRAM"
 else

@@ -84,10 +84,8 @@ for n in ("FLASH", "RAM"):
     print("%s=%d" % (n.lower(), int(m.group(1), 16)), end=" ")' "$map")"
             # flash: what is loaded; RAM: what is not, and what reset
             # copies there (.data; code and scene tables run from SRAM)
-            eval "$(${cross}objdump -h "$elf" | awk '
-                function hex(s,   v, i) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
-                $1 ~ /^[0-9]+$/ && $2 ~ /^\./ { name = $2; size = hex($3); copied = $4 != $5; next }
-                name != "" { if ($0 ~ /ALLOC/) { if ($0 ~ /LOAD/) fl += size; if ($0 !~ /LOAD/ || copied || name == ".data") ram += size }; name = "" }
+            eval "$(${cross}objdump -h "$elf" | awk -f platform/firmware/sections.awk | awk '
+                $5 != "ram" { fl += $2 } $5 != "flash" { ram += $2 }
                 END { printf "used_flash=%d used_ram=%d\n", fl, ram }')"
             if [ "${flash:-0}" -gt 0 ] && [ "$used_flash" -le "$flash" ] && [ "${ram:-0}" -gt 0 ] && [ "$used_ram" -le "$ram" ]; then
                 ok "$n: flash $used_flash of $flash bytes, RAM $used_ram of $ram bytes (data, bss, stack, and what runs from RAM)"

@@ -6,21 +6,14 @@
 # too (the code and scene tables of a board that runs them from SRAM).
 elf=$1 objdir=$2 report=$3
 here=$(dirname "$0")
-${CROSS:-arm-none-eabi-}objdump -h "$elf" | awk '
-    function hex(s,   v, i) { v = 0; for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
-    $1 ~ /^[0-9]+$/ && $2 ~ /^\./ { name = $2; size = hex($3); vma = $4; lma = $5; next }
-    name != "" {
-        flags = $0; n = name; name = ""
-        if (flags !~ /ALLOC/) next
-        load = flags ~ /LOAD/
-        copied = load && vma != lma
-        where = !load ? "RAM" : copied ? "flash, run from RAM" : "flash"
-        if (n == ".data") where = "flash, copied to RAM"
-        printf "  %-12s %8d bytes  %s\n", n, size, where
-        if (n == ".scene") { scene = size; if (copied) ram_scene = size }
+${CROSS:-arm-none-eabi-}objdump -h "$elf" | awk -f "$here/sections.awk" | awk '
+    {
+        n = $1; size = $2
+        printf "  %-12s %8d bytes  %s\n", n, size, $5 == "ram" ? "RAM" : n == ".data" ? "flash, copied to RAM" : $5 == "copied" ? "flash, run from RAM" : "flash"
+        if (n == ".scene") { scene = size; if ($5 == "copied") ram_scene = size }
         else if (n == ".data") data = size
         else if (n == ".bss") bss = size
-        else if (load) { code += size; if (copied) ram_code += size }
+        else if ($5 != "ram") { code += size; if ($5 == "copied") ram_code += size }
     }
     END {
         printf "flash: code %d bytes, scene tables %d bytes, data image %d bytes\n", code, scene, data

@@ -14,8 +14,8 @@
 #define RESET_SPI0 (1u << 16)
 
 /* Takes `blocks` out of reset and waits (bounded) until they are; on
- * expiry reports `what` and returns 0. */
-int board_unreset(uint32_t blocks, const char *what);
+ * expiry reports `what` and ends the run with status 5. */
+void board_unreset(uint32_t blocks, const char *what);
 
 /* clk_sys cycles since port_init() started SysTick. */
 uint64_t board_cycles(void);
