@@ -37,7 +37,9 @@
 # board that ends its run without a debugger), BOARD_RULES (a makefile
 # of its own build steps, included after these), BOARD_OBJS (objects those
 # steps make, linked into every image), BOARD_IMAGES (files those steps
-# make from $(FW_DIR)/<backend>.elf, built with it: what a user flashes),
+# make from $(FW_DIR)/<backend>.elf, built with it: what a user flashes;
+# make image copies them to out/) with BOARD_IMAGE_SHOW (a command that
+# prints what one holds) and BOARD_IMAGE_NOTE (how to flash them),
 # BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
 # one word each, commas for spaces).
 #
@@ -239,13 +241,17 @@ $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
 
 firmware: $(FW_ELF) $(BOARD_IMAGES)
 
+# The board's images beside the PNG (out/<scene>-<board>-<backend>.<ext>),
+# each copy then named by the command $(1)
+copy_images = $(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && $(1) $(basename $(RUN_OUT))$(suffix $(f));)
+
 # make image: the files to flash (BOARD_IMAGES) of a board that exists as
 # silicon, copied to out/ with the name make run gives the PNG; the
 # board's BOARD_IMAGE_NOTE says how to flash them
 image: deps-board $(BOARD_IMAGES)
 	@$(if $(BOARD_IMAGES),,echo "BOARD=$(BOARD) makes no image to flash: it runs under its emulator only" >&2; exit 1)
 	@mkdir -p out
-	@$(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && $(or $(BOARD_IMAGE_SHOW),echo) $(basename $(RUN_OUT))$(suffix $(f));)
+	@$(call copy_images,$(or $(BOARD_IMAGE_SHOW),echo))
 	@echo "$(BOARD_IMAGE_NOTE)"
 
 ifneq ($(BOARD_RULES),)
@@ -285,7 +291,7 @@ run: deps-board
 	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1
 	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))"
-	@$(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && echo "for the board: $(basename $(RUN_OUT))$(suffix $(f))";)
+	@$(call copy_images,echo for the board:)
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
