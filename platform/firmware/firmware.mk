@@ -31,6 +31,7 @@
 # of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
 # insists on), BOARD_TAG (a suffix of the build folder for the board's own
 # build choices), BOARD_CYCLES := 1 (the port counts cycles),
+# BOARD_LDFLAGS (extra linker flags, e.g. --defsym of its memory sizes),
 # BOARD_INSTR_COUNTER := 0 (the chip has no instruction counter: the
 # runner counts from outside, port.h), BOARD_ARCH_SKIP (files of
 # platform/arch/<arch>/ it replaces, by name without .c: semihost, for a
@@ -40,6 +41,8 @@
 # make from $(FW_DIR)/<backend>.elf, built with it: what a user flashes;
 # make image copies them to out/) with BOARD_IMAGE_SHOW (a command that
 # prints what one holds) and BOARD_IMAGE_NOTE (how to flash them),
+# BOARD_FLASH (the command of make flash) with BOARD_FLASH_PACKAGE (the
+# Debian package that has its tool),
 # BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
 # one word each, commas for spaces).
 #
@@ -59,10 +62,13 @@ BOARD_CYCLES := 0
 BOARD_INSTR_COUNTER := 1
 BOARD_ARCH_SKIP :=
 BOARD_RULES :=
+BOARD_LDFLAGS :=
 BOARD_OBJS :=
 BOARD_IMAGES :=
 BOARD_IMAGE_NOTE :=
 BOARD_IMAGE_SHOW :=
+BOARD_FLASH :=
+BOARD_FLASH_PACKAGE :=
 BOARD_ICOUNT := shift=0
 BOARD_SINK := platform/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
@@ -149,7 +155,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # on mps2-an385: the default scene's code 22473 -> 20301 bytes (the 20 KiB
 # budget) for 18743 -> 19478 instructions per pixel; balls-2 +0.4%.
 FW_SIZE_FILES = camera render rt_error stats sink_stream xform shape csg object
-FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections
+FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
@@ -254,6 +260,13 @@ image: deps-board $(BOARD_IMAGES)
 	@$(call copy_images,$(or $(BOARD_IMAGE_SHOW),echo))
 	@echo "$(BOARD_IMAGE_NOTE)"
 
+# make flash: the image onto a board on USB, by the board's BOARD_FLASH
+# command (its tool, BOARD_FLASH_PACKAGE, installed when missing)
+flash: $(BOARD_IMAGES)
+	@$(if $(BOARD_FLASH),,echo "BOARD=$(BOARD) has no flash command: make image gives its files to flash" >&2; exit 1)
+	@sh platform/ensure-deps.sh board $(BOARD_FLASH_PACKAGE)
+	$(BOARD_FLASH)
+
 ifneq ($(BOARD_RULES),)
 include $(BOARD_RULES)
 endif
@@ -269,7 +282,8 @@ RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMA
 
 # Run the built firmware: RUN_OUT gets the image, stdout the report.
 board-run:
-	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
+	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" \
+	    RUN_END=$(if $(filter semihost,$(BOARD_ARCH_SKIP)),report,exit) $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
 
 RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 1,$(SPP)),--spp $(SPP))
 # the pixel-area image in the colours the format keeps: 8-bit grey for l8

@@ -117,15 +117,15 @@ int main(void)
         return 1;
     }
     report_value("pixels", pixels);
-#if BOARD_INSTR_COUNTER
-    report_value("render_instructions", instr);
-    report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
-#else
-    (void)instr;
-#endif
+    if (port_counts_instructions()) {
+        report_value("render_instructions", instr);
+        report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
+    }
 #if BOARD_CYCLES && BOARD_CORES == 1
-    report_value("render_cycles", cycles);
-    report_value("cycles_per_pixel", (cycles + pixels / 2) / pixels);
+    if (port_counts_cycles()) {
+        report_value("render_cycles", cycles);
+        report_value("cycles_per_pixel", (cycles + pixels / 2) / pixels);
+    }
 #endif
 #if BOARD_CORES > 1
     static const char *const keys[][3] = { { "core0_render_instructions", "core0_wait_instructions", "core0_bands" },

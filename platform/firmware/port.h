@@ -58,6 +58,34 @@ uint64_t port_cycles_read(void);
 #define BOARD_CYCLES 0
 #endif
 
+/* Which of the two counters above run, for a port that finds out at run
+ * time (BOARD_COUNTERS_PROBED=1 in its BOARD_CFLAGS: the STM32F4, whose
+ * DWT cycle counter runs on the chip and reads 0 under QEMU, where TIM2
+ * counts instructions instead); main.c reports only those. Every other
+ * port has what its board.mk says. */
+#ifndef BOARD_COUNTERS_PROBED
+#define BOARD_COUNTERS_PROBED 0
+#endif
+#if BOARD_COUNTERS_PROBED
+int port_counts_instructions(void);
+int port_counts_cycles(void);
+#else
+static inline int port_counts_instructions(void) { return BOARD_INSTR_COUNTER; }
+static inline int port_counts_cycles(void) { return BOARD_CYCLES; }
+#endif
+
+/* Toggles the board's user LED: a heartbeat at each band drawn
+ * (sink_progress). Only a board with BOARD_LED=1 in its BOARD_CFLAGS
+ * provides it; on the others it does nothing. */
+#ifndef BOARD_LED
+#define BOARD_LED 0
+#endif
+#if BOARD_LED
+void port_heartbeat(void);
+#else
+static inline void port_heartbeat(void) {}
+#endif
+
 /* Ends the run with this exit status. */
 void port_exit(int status) __attribute__((noreturn));
 

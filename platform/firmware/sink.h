@@ -31,6 +31,12 @@ void sink_io_end(void);
 uint64_t sink_io_instructions(void);
 uint64_t sink_io_cycles(void);
 
+/* After a band of `lines` of a frame `height` rows high has gone out:
+ * the board's heartbeat (port_heartbeat), and a report line
+ * "progress_rows N" (rows drawn so far) at the first band, each tenth of
+ * the frame and its last band. Call it inside sink_io_begin/end. */
+void sink_progress(uint32_t lines, uint32_t height);
+
 /* 1 when the frame stays on a panel after the run (a board's display
  * sink sets it in BOARD_CFLAGS): the firmware then reports "drawn 1" and
  * idles instead of exiting, so that the host can capture the panel. */

@@ -26,6 +26,21 @@ void sink_io_end(void)
 
 uint64_t sink_io_instructions(void) { return instr_total; }
 
+/* Rows drawn of this frame, and where the next progress line is due */
+static uint32_t progress_rows, progress_next;
+
+void sink_progress(uint32_t lines, uint32_t height)
+{
+    port_heartbeat();
+    progress_rows += lines;
+    if (progress_rows >= progress_next || progress_rows >= height) {
+        report_value("progress_rows", progress_rows);
+        progress_next = progress_rows + (height + 9u) / 10u;
+    }
+    if (progress_rows >= height) /* the frame is done: the next starts at 0 */
+        progress_rows = progress_next = 0;
+}
+
 #if BOARD_CYCLES
 uint64_t sink_io_cycles(void) { return cycles_total; }
 #else

@@ -6,6 +6,7 @@
 
 static uint32_t frame_adler;
 static size_t frame_line_bytes;
+static uint16_t frame_height;
 
 static uint32_t adler32(uint32_t adler, const uint8_t *p, size_t n)
 {
@@ -41,6 +42,7 @@ static int stream_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
     put_u16(hdr + 7, h);
     port_write(hdr, sizeof hdr);
     frame_adler = 1;
+    frame_height = h;
 #ifdef RT_FB_ONLY_FORMAT
     frame_line_bytes = RT_FB_LINE_BYTES(RT_FB_ONLY_FORMAT, w); /* the build's one format */
 #else
@@ -63,6 +65,7 @@ static int stream_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *p
     put_u32(tail, adler32(1, px, n));
     port_write(tail, sizeof tail);
     frame_adler = adler32(frame_adler, px, n);
+    sink_progress(lines, frame_height);
     rt_fb_flush_ready(s); /* UART writes are synchronous */
     sink_io_end();
     return 0;

@@ -250,7 +250,7 @@ uint64_t board_cycles(void)
  * counts instructions between the calls of this very function. */
 uint64_t port_cycles_read(void) { return board_cycles(); }
 
-void board_heartbeat(void) { SIO_GPIO_OUT_XOR = 1u << PIN_LED; }
+void port_heartbeat(void) { SIO_GPIO_OUT_XOR = 1u << PIN_LED; }
 
 void port_exit(int status)
 {

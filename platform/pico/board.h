@@ -1,6 +1,7 @@
 /*
  * board.h - what board.c gives the Pico's display sink (st7789.c): the
- * clock it set, its cycle counter, taking blocks out of reset, the LED.
+ * clock it set, its cycle counter, taking blocks out of reset (its
+ * LED is port.h's port_heartbeat).
  */
 #ifndef PICO_BOARD_H
 #define PICO_BOARD_H
@@ -19,8 +20,5 @@ void board_unreset(uint32_t blocks, const char *what);
 
 /* clk_sys cycles since port_init() started SysTick. */
 uint64_t board_cycles(void);
-
-/* Toggles the on-board LED (GP25). */
-void board_heartbeat(void);
 
 #endif

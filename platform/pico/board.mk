@@ -32,6 +32,8 @@ BOARD_RUN       = node platform/pico/run.mjs --module $(PANEL)$(if $(filter 1,$(
 BOARD_CYCLES   := 1
 BOARD_INSTR_COUNTER := 0
 BOARD_ARCH_SKIP := semihost
+# the LED on GP25 blinks as bands are drawn (port_heartbeat, board.c)
+BOARD_CFLAGS   += -DBOARD_LED=1
 # boot2 with its CRC, and the UF2 to copy onto the RPI-RP2 drive
 BOARD_RULES    := platform/pico/image.mk
 BOARD_OBJS     := build/board/pico/boot2/boot2_crc.o

@@ -126,7 +126,7 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 
 #define CYCLES_PER_MS (CLK_SYS_HZ / 1000u)
 
-static uint16_t frame_width, frame_height, progress_next;
+static uint16_t frame_width, frame_height;
 static uint64_t frame_start;
 
 static void delay_ms(uint32_t ms)
@@ -184,7 +184,6 @@ static int panel_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
         return 1;
     frame_width = w;
     frame_height = h;
-    progress_next = 0;
     frame_start = board_cycles();
     return 0;
 }
@@ -201,11 +200,7 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
     DMA_TRANS_COUNT = (uint32_t)(a->y2 - a->y1 + 1) * (uint32_t)(a->x2 - a->x1 + 1) * 2u;
     DMA_CTRL_TRIG = DMA_EN | DMA_INCR_READ | DMA_CHAIN_TO_SELF | DMA_TREQ_SPI0_TX;
-    board_heartbeat();
-    if (a->y2 + 1u >= progress_next || a->y2 + 1u == frame_height) {
-        report_value("progress_rows", a->y2 + 1u);
-        progress_next = (uint16_t)(a->y2 + 1u + (frame_height + 9u) / 10u);
-    }
+    sink_progress((uint32_t)(a->y2 - a->y1 + 1), frame_height);
     sink_io_end();
     return 0; /* rt_fb_flush_ready() comes from transfer_wait() */
 }
