@@ -146,8 +146,11 @@ MACHINES = {
     # modelled); its instruction counts are exact either way
     "mps2-an521": ("m4", "qemu-system-arm"),
     "microbit": ("m0", "qemu-system-arm"),
+    # a board named otherwise than its QEMU machine (QEMU_MACHINE)
+    "stm32f4": ("m4", "qemu-system-arm"),
     "sifive_e": ("e31", "qemu-system-riscv32"),
 }
+QEMU_MACHINE = {"stm32f4": "netduinoplus2"}
 CORE_ISA = {"m0": "arm", "m3": "arm", "m4": "arm", "e31": "riscv"}
 NM = {"arm": ["arm-none-eabi-nm", "nm"], "riscv": ["riscv64-unknown-elf-nm", "riscv32-unknown-elf-nm", "nm"]}
 
@@ -1037,6 +1040,9 @@ def symbol_addr(syms, name):
 
 
 DRAWN = b"T\x07\x00drawn 1"   # the report record of a board that holds its frame (sink.h)
+# the last report record of a board built for silicon (no semihosting: it
+# sleeps after it, and QEMU does not exit on WFI)
+EXIT_STATUS = re.compile(rb"T.\x00exit_status (\d+)$")
 
 
 def run_qemu(args, parser):
@@ -1045,7 +1051,7 @@ def run_qemu(args, parser):
     fifo = os.path.join(tmp, "qemu.log")
     os.mkfifo(fifo)
     stream_path = args.stream or os.path.join(tmp, "uart.stream")
-    cmd = [args.qemu, "-M", args.machine, "-nographic", "-monitor", "none",
+    cmd = [args.qemu, "-M", QEMU_MACHINE.get(args.machine, args.machine), "-nographic", "-monitor", "none",
            "-semihosting-config", "enable=on,target=native", "-icount", "shift=0",
            "-kernel", args.elf, "-d", "in_asm,exec,nochain", "-D", fifo] + args.qemu_arg
     t0 = time.time()
@@ -1057,7 +1063,8 @@ def run_qemu(args, parser):
 
         def watchdog():
             # A board whose sink holds the frame on its panel reports
-            # "drawn 1" and idles instead of exiting: end QEMU there.
+            # "drawn 1" and idles instead of exiting, one built for
+            # silicon ends with "exit_status N" and sleeps: end QEMU there.
             # QEMU may die before it opens the log: unblock our open() then
             deadline = time.time() + args.timeout
             while True:
@@ -1067,8 +1074,10 @@ def run_qemu(args, parser):
                 except subprocess.TimeoutExpired:
                     pass
                 with open(stream_path, "rb") as s:
-                    if DRAWN in s.read():
-                        held.append(True)
+                    data = s.read()
+                    end = EXIT_STATUS.search(data)
+                    if DRAWN in data or end:
+                        held.append(int(end.group(1)) if end else 0)
                 if held or time.time() > deadline:
                     proc.kill()
                     proc.wait()
@@ -1084,7 +1093,7 @@ def run_qemu(args, parser):
                 proc.kill()
         rc = proc.wait()
         if held:
-            rc = 0
+            rc = held[0]
     t1 = time.time()
     with open(stream_path, "rb") as s:
         stream = s.read()
