@@ -102,7 +102,9 @@ d = open(sys.argv[1], "rb").read()
 i = d.find(b"RTF1"); w = d[i+5] | d[i+6] << 8; h = d[i+7] | d[i+8] << 8
 assert d[i+4] == 5 and w % 2 == 1
 lb = (w + 1) // 2; j = i + 9; rows = 0
-while d[j:j+1] == b"B":
+while d[j:j+1] in (b"B", b"T"):
+    if d[j:j+1] == b"T":  # a report line between bands (progress_rows)
+        j += 3 + (d[j+1] | d[j+2] << 8); continue
     n = d[j+3] | d[j+4] << 8
     for r in range(n):
         assert d[j + 5 + r * lb + lb - 1] & 15 == 0

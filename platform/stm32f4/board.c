@@ -4,7 +4,7 @@
  *
  *  - Clocks: the crystal (HSE, STM32_HSE_MHZ; bypass mode on a Nucleo,
  *    whose ST-LINK drives it) or, when it does not start, the 16 MHz HSI,
- *    divided to 2 MHz (1 MHz for an odd crystal) into the main PLL: VCO
+ *    divided to 1 MHz into the main PLL: VCO
  *    336 MHz, SYSCLK 168 MHz (/2) or 84 MHz (/4), 48 MHz for USB (/7).
  *    Flash wait states, prefetch and the ART accelerator's instruction
  *    and data caches are set before SYSCLK moves to the PLL; APB1 runs
@@ -74,20 +74,20 @@
 #define RCC_APB1ENR_USART2 (1u << 17)
 #define RCC_APB2ENR_USART1 (1u << 4)
 
-/* The PLL: its input divided to 2 MHz (1 MHz when the crystal's MHz are
- * odd), times N to the 336 MHz VCO, / P for SYSCLK, / 7 for USB's 48. */
+/* The PLL: its input divided to 1 MHz, times 336 to the VCO, / P for
+ * SYSCLK, / 7 for USB's 48 MHz. (2 MHz would jitter less, but on the
+ * F405/F407 RM0090 has long asked for N of 192 or more, and 1 MHz into
+ * N = 336 is what ST's own set-up of the Discovery uses.) */
 #define HSI_MHZ 16u
-#define PLL_M_OF(mhz) ((mhz) % 2u ? (mhz) : (mhz) / 2u)
-#define PLL_N_OF(mhz) ((mhz) % 2u ? 336u : 168u)
 #define PLL_VCO_MHZ 336u
+#define PLL_N PLL_VCO_MHZ /* from 1 MHz */
 #define PLL_P (PLL_VCO_MHZ / STM32_SYSCLK_MHZ)
 #define PLL_Q 7u
-#define PLLCFGR_OF(mhz) (PLL_M_OF(mhz) | PLL_N_OF(mhz) << 6 | (PLL_P / 2u - 1u) << 16 | PLL_Q << 24)
+/* M = the input's MHz, so 1 MHz goes in */
+#define PLLCFGR_OF(mhz) ((mhz) | PLL_N << 6 | (PLL_P / 2u - 1u) << 16 | PLL_Q << 24)
 _Static_assert(STM32_HSE_MHZ == 0 || (STM32_HSE_MHZ >= 4 && STM32_HSE_MHZ <= 26),
-               "the crystal: 4 to 26 MHz, or 0 for none");
-_Static_assert(STM32_HSE_MHZ == 0 || STM32_HSE_MHZ / PLL_M_OF(STM32_HSE_MHZ) * PLL_N_OF(STM32_HSE_MHZ) == PLL_VCO_MHZ,
-               "the crystal divides to the PLL's 1 or 2 MHz input, then to its 336 MHz VCO");
-_Static_assert(HSI_MHZ / PLL_M_OF(HSI_MHZ) * PLL_N_OF(HSI_MHZ) == PLL_VCO_MHZ, "HSI to the 336 MHz VCO");
+               "the crystal: 4 to 26 MHz (PLLM 2..63 divides it to 1 MHz), or 0 for none");
+_Static_assert(PLL_N >= 192 && PLL_N <= 432, "PLLN: 192..432 (RM0090)");
 _Static_assert(PLL_P * STM32_SYSCLK_MHZ == PLL_VCO_MHZ && (PLL_P == 2 || PLL_P == 4), "SYSCLK: the VCO / 2 or / 4");
 _Static_assert(PLL_VCO_MHZ / PLL_Q == 48, "USB's 48 MHz from the VCO");
 

@@ -49,23 +49,33 @@ BOARD_IMAGE_NOTE = flash the .bin at 0x08000000 (st-flash write FILE.bin 0x08000
 # clock from the ST-LINK (HSE bypass), 512 KiB flash, 96 KiB SRAM
 STM32          ?= f405
 ifeq ($(STM32),f405)
-STM32_CLOCK    := -DSTM32_SYSCLK_MHZ=168 -DSTM32_USART=1
+STM32_CLOCK    := -DSTM32_SYSCLK_MHZ=168
+STM32_USART    ?= 1
 STM32_FLASH    := 1024K
 STM32_RAM      := 128K
 STM32_LED      ?= PD12
 else ifeq ($(STM32),nucleo64)
-STM32_CLOCK    := -DSTM32_SYSCLK_MHZ=84 -DSTM32_USART=2 -DSTM32_HSE_BYPASS=1
+STM32_CLOCK    := -DSTM32_SYSCLK_MHZ=84 -DSTM32_HSE_BYPASS=1
+STM32_USART    ?= 2
 STM32_FLASH    := 512K
 STM32_RAM      := 96K
 STM32_LED      ?= PA5
 else
 $(error STM32=$(STM32): f405 or nucleo64)
 endif
+# STM32_USART=1: USART1 on PA9/PA10; 2: USART2 on PA2/PA3 (QEMU's
+# second serial port, so its first goes to null)
+ifeq ($(filter 1 2,$(STM32_USART)),)
+$(error STM32_USART=$(STM32_USART): 1 or 2)
+endif
+ifeq ($(STM32_USART),2)
+BOARD_QEMU     += -serial null -serial stdio
+endif
 # the crystal (HSE) in MHz: 8 on the Discovery and the Nucleo (ST-LINK),
 # 12 on the Feather, 25 on the Netduino; 0: none, run from the HSI
 HSE_MHZ        ?= 8
-ifeq ($(filter 0 4 6 8 10 12 14 16 20 24 25 26,$(HSE_MHZ)),)
-$(error HSE_MHZ=$(HSE_MHZ): 4..26 (a crystal the PLL divides to 1 or 2 MHz), or 0 for none)
+ifeq ($(filter 0 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21 22 23 24 25 26,$(HSE_MHZ)),)
+$(error HSE_MHZ=$(HSE_MHZ): a whole number of MHz, 4 to 26 (the crystal's range), or 0 for none)
 endif
 # the user LED, as port and pin: PD12 (the Discovery's green), PC1 (the
 # Feather's red), PA5 (the Nucleo's green); none: no heartbeat
@@ -78,8 +88,8 @@ STM32_LED_FLAGS := -DSTM32_LED_PORT="'$(STM32_LED_PORT)'" -DSTM32_LED_PIN=$(pats
 else
 $(error STM32_LED=$(STM32_LED): a port letter and pin such as PD12, or none)
 endif
-BOARD_CFLAGS   += $(STM32_CLOCK) -DSTM32_HSE_MHZ=$(HSE_MHZ) $(STM32_LED_FLAGS)
+BOARD_CFLAGS   += $(STM32_CLOCK) -DSTM32_USART=$(STM32_USART) -DSTM32_HSE_MHZ=$(HSE_MHZ) $(STM32_LED_FLAGS)
 BOARD_LDFLAGS  := -Wl,--defsym=STM32_FLASH=$(STM32_FLASH) -Wl,--defsym=STM32_RAM=$(STM32_RAM)
 BOARD_CLOCK_HZ ?= $(if $(filter f405,$(STM32)),168000000,84000000)
 # the build folder's name says the choices that are not the defaults
-BOARD_TAG      := $(if $(filter-out f405,$(STM32)),-$(STM32))$(if $(filter-out 8,$(HSE_MHZ)),-hse$(HSE_MHZ))$(if $(filter-out $(if $(filter f405,$(STM32)),PD12,PA5),$(STM32_LED)),-led$(STM32_LED))
+BOARD_TAG      := $(if $(filter-out f405,$(STM32)),-$(STM32))$(if $(filter-out 8,$(HSE_MHZ)),-hse$(HSE_MHZ))$(if $(filter-out $(if $(filter f405,$(STM32)),PD12,PA5),$(STM32_LED)),-led$(STM32_LED))$(if $(filter-out $(if $(filter f405,$(STM32)),1,2),$(STM32_USART)),-usart$(STM32_USART))
