@@ -193,12 +193,16 @@ static void clocks_init(void)
     uint32_t pllcfgr = PLLCFGR_OF(HSI_MHZ);
     clock_source = CLOCK_PLL_HSI;
 #if STM32_HSE_MHZ
-    RCC_CR |= RCC_CR_HSEON | (STM32_HSE_BYPASS ? RCC_CR_HSEBYP : 0u);
+    /* (HSEBYP may change only while the HSE is off: before HSEON, after) */
+    if (STM32_HSE_BYPASS)
+        RCC_CR |= RCC_CR_HSEBYP;
+    RCC_CR |= RCC_CR_HSEON;
     if (wait_for(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY)) {
         pllcfgr = PLLCFGR_OF(STM32_HSE_MHZ) | RCC_PLLCFGR_SRC_HSE;
         clock_source = CLOCK_PLL_HSE;
     } else {
-        RCC_CR &= ~(RCC_CR_HSEON | RCC_CR_HSEBYP);
+        RCC_CR &= ~RCC_CR_HSEON;
+        RCC_CR &= ~RCC_CR_HSEBYP;
     }
 #endif
     RCC_PLLCFGR = pllcfgr;
