@@ -27,7 +27,7 @@ vars="BOARD=stm32f4 SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5"
 echo "stm32f4: the image for the chip, and its run under QEMU"
 if ! make -s -j2 firmware $vars >"$OUT/build.log" 2>&1; then
     bad "firmware build failed: $(tail -3 "$OUT/build.log")"
-    echo "stm32f4: $pass passed, $fail failed"
+    echo "board-stm32f4: $pass passed, $fail failed"
     exit 1
 fi
 eval "$(make -s board-info $vars)"
@@ -125,5 +125,5 @@ if make -s firmware $vars HSE_MHZ=3 >"$OUT/hse.build" 2>&1; then
 else
     ok "HSE_MHZ=3 refused: $(grep -o 'HSE_MHZ=3.*' "$OUT/hse.build" | head -1)"
 fi
-echo "stm32f4: $pass passed, $fail failed"
+echo "board-stm32f4: $pass passed, $fail failed"
 [ $fail -eq 0 ]
