@@ -8,7 +8,7 @@ run() {
     log=$("$@" 2>&1)
     printf '%s\n' "$log"
     echo "  ($* took $(($(date +%s) - t0)) s)"
-    line=$(printf '%s\n' "$log" | grep -E '^[a-z_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
+    line=$(printf '%s\n' "$log" | grep -E '^[a-z0-9_-]+: [0-9]+ passed, [0-9]+ failed$' | tail -1)
     if [ -z "$line" ]; then
         echo "  FAIL  $* printed no summary (crashed?)"
         total_fail=$((total_fail + 1))
