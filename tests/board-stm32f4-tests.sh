@@ -11,6 +11,13 @@
 #    no cycle count, prints its progress, and ends on exit_status 0;
 #  - TIM2's count of the render equals bench/cycles.py's count of the
 #    same run within 0.01% (the difference: the counter reads);
+#  - the clock tree (clock.c), on the host against a model of RCC and
+#    FLASH_ACR that keeps RM0090's rules (tests/stm32f4_clock_test.c): a
+#    crystal that answers gives 168 MHz (84 on a Nucleo-64) from the HSE,
+#    one that does not the same from the HSI, wait states that do not
+#    stick or an RCC that reads 0 leave SYSCLK on the HSI and say why;
+#    wait states before the switch, APB limits, HSEBYP and PLLCFGR
+#    written only when allowed, in every variant;
 #  - a fault (a read of the CCM RAM, which QEMU does not model) ends the
 #    run with status 4 and its report line, and run.sh says so;
 #  - the Nucleo-64 variant (STM32=nucleo64: USART2, 512 KiB / 96 KiB)
@@ -89,7 +96,8 @@ fault="$OUT/fault.elf"
 if ${cross}gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -O2 -ffreestanding -nostdlib -nostartfiles \
        -DBOARD_COUNTERS_PROBED=1 -DBOARD_LED=1 -DBOARD_CYCLES=1 -Iinclude -Iplatform/firmware \
        -T platform/stm32f4/link.ld -Lplatform/firmware -Wl,--defsym=STM32_FLASH=1024K,--defsym=STM32_RAM=128K \
-       tests/stm32f4_fault.c platform/arch/cortex-m/startup.c platform/stm32f4/board.c platform/firmware/report.c \
+       tests/stm32f4_fault.c platform/arch/cortex-m/startup.c platform/stm32f4/board.c platform/stm32f4/clock.c \
+       platform/firmware/report.c \
        -lgcc -o "$fault" 2>"$OUT/fault.build"; then
     QEMU="qemu-system-arm -M netduinoplus2" RUN_END=report timeout 120 sh platform/firmware/run.sh "$fault" \
         "$OUT/fault.png" "$RT" >"$OUT/fault.report" 2>"$OUT/fault.err"
@@ -102,6 +110,17 @@ if ${cross}gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -O2 -f
 else
     bad "the faulting image did not build: $(tail -3 "$OUT/fault.build")"
 fi
+
+# the clock tree on the host against a model of RCC and FLASH_ACR (what
+# QEMU cannot check), in each variant: tests/stm32f4_clock_test.c
+for v in "" "-DSTM32_SYSCLK_MHZ=84 -DSTM32_HSE_BYPASS=1" "-DSTM32_HSE_MHZ=25" "-DSTM32_HSE_MHZ=0"; do
+    if cc -std=c11 -Wall -Wextra -Werror $v -Iplatform/stm32f4 tests/stm32f4_clock_test.c -o "$OUT/clock-test" \
+           2>"$OUT/clock.build" && "$OUT/clock-test" >"$OUT/clock.txt"; then
+        ok "clock tree ($(head -1 "$OUT/clock.txt" | cut -d' ' -f2-)): $(tail -1 "$OUT/clock.txt" | cut -d' ' -f2-)"
+    else
+        bad "clock tree ${v:-(default)}: $(grep FAIL "$OUT/clock.txt" | head -2) $(tail -2 "$OUT/clock.build")"
+    fi
+done
 
 # the Nucleo-64 variant and a crystal that does not divide
 # (QEMU's second serial port is USART2: nothing would arrive from USART1)

@@ -2,16 +2,12 @@
  * board.c - the STM32F4's side of the port contract (port.h), for the
  * chip; the same image runs under QEMU's netduinoplus2.
  *
- *  - Clocks: the crystal (HSE, STM32_HSE_MHZ; bypass mode on a Nucleo,
- *    whose ST-LINK drives it) or, when it does not start, the 16 MHz HSI,
- *    divided to 1 MHz into the main PLL: VCO
- *    336 MHz, SYSCLK 168 MHz (/2) or 84 MHz (/4), 48 MHz for USB (/7).
- *    Flash wait states, prefetch and the ART accelerator's instruction
- *    and data caches are set before SYSCLK moves to the PLL; APB1 runs
- *    at 42 MHz, APB2 at 84 MHz, their limits. Every wait is bounded.
- *    When the PLL does not lock or SYSCLK does not switch (QEMU, whose
- *    RCC reads 0), the render runs on at the reset clock, HSI 16 MHz,
- *    and the report says so.
+ *  - Clocks (clock.c): the PLL from the crystal, or from the HSI when
+ *    no crystal answers, to 168 MHz (84 MHz on a Nucleo-64), with the
+ *    flash wait states, prefetch and caches set first. When the PLL does
+ *    not lock or SYSCLK does not switch (QEMU, whose RCC reads 0), the
+ *    render runs on at the reset clock, HSI 16 MHz, and the report says
+ *    so.
  *  - Console: USART1 on PA9 (TX) and PA10 (RX), or USART2 on PA2/PA3
  *    (STM32_USART=2: a Nucleo's ST-LINK), alternate function 7, 115200
  *    8N1 from the APB clock it ended up with.
@@ -28,92 +24,19 @@
  *    interrupts off. No semihosting: on a board with no debugger a BKPT
  *    would be a HardFault.
  */
+#include "clock.h"
 #include "port.h"
 #include "sink.h"
 
-#define REG(addr) (*(volatile uint32_t *)(addr))
+#define REG(addr) STM32_REG(addr)
 
-#ifndef STM32_SYSCLK_MHZ /* board.mk passes the variant's */
-#define STM32_SYSCLK_MHZ 168
-#endif
 #ifndef STM32_USART
 #define STM32_USART 1
-#endif
-#ifndef STM32_HSE_MHZ
-#define STM32_HSE_MHZ 8
-#endif
-#ifndef STM32_HSE_BYPASS
-#define STM32_HSE_BYPASS 0
 #endif
 #ifndef STM32_LED_PORT /* a letter, 'A'..'I'; 0: no LED */
 #define STM32_LED_PORT 'D'
 #define STM32_LED_PIN 12
 #endif
-
-/* RCC */
-#define RCC_CR REG(0x40023800u)
-#define RCC_PLLCFGR REG(0x40023804u)
-#define RCC_CFGR REG(0x40023808u)
-#define RCC_AHB1ENR REG(0x40023830u)
-#define RCC_APB1ENR REG(0x40023840u)
-#define RCC_APB2ENR REG(0x40023844u)
-#define RCC_CR_HSEON (1u << 16)
-#define RCC_CR_HSERDY (1u << 17)
-#define RCC_CR_HSEBYP (1u << 18)
-#define RCC_CR_PLLON (1u << 24)
-#define RCC_CR_PLLRDY (1u << 25)
-#define RCC_PLLCFGR_SRC_HSE (1u << 22)
-#define RCC_CFGR_SW_MASK 3u
-#define RCC_CFGR_SW_PLL 2u
-#define RCC_CFGR_SWS_MASK (3u << 2)
-#define RCC_CFGR_SWS_PLL (2u << 2)
-#define RCC_CFGR_PPRE1_DIV2 (4u << 10)
-#define RCC_CFGR_PPRE1_DIV4 (5u << 10)
-#define RCC_CFGR_PPRE2_DIV2 (4u << 13)
-#define RCC_APB1ENR_TIM2 (1u << 0)
-#define RCC_APB1ENR_USART2 (1u << 17)
-#define RCC_APB2ENR_USART1 (1u << 4)
-
-/* The PLL: its input divided to 1 MHz, times 336 to the VCO, / P for
- * SYSCLK, / 7 for USB's 48 MHz. (2 MHz would jitter less, but on the
- * F405/F407 RM0090 has long asked for N of 192 or more, and 1 MHz into
- * N = 336 is what ST's own set-up of the Discovery uses.) */
-#define HSI_MHZ 16u
-#define PLL_VCO_MHZ 336u
-#define PLL_N PLL_VCO_MHZ /* from 1 MHz */
-#define PLL_P (PLL_VCO_MHZ / STM32_SYSCLK_MHZ)
-#define PLL_Q 7u
-/* M = the input's MHz, so 1 MHz goes in */
-#define PLLCFGR_OF(mhz) ((mhz) | PLL_N << 6 | (PLL_P / 2u - 1u) << 16 | PLL_Q << 24)
-_Static_assert(STM32_HSE_MHZ == 0 || (STM32_HSE_MHZ >= 4 && STM32_HSE_MHZ <= 26),
-               "the crystal: 4 to 26 MHz (PLLM 2..63 divides it to 1 MHz), or 0 for none");
-_Static_assert(PLL_N >= 192 && PLL_N <= 432, "PLLN: 192..432 (RM0090)");
-_Static_assert(PLL_P * STM32_SYSCLK_MHZ == PLL_VCO_MHZ && (PLL_P == 2 || PLL_P == 4), "SYSCLK: the VCO / 2 or / 4");
-_Static_assert(PLL_VCO_MHZ / PLL_Q == 48, "USB's 48 MHz from the VCO");
-
-/* The buses: AHB at SYSCLK; APB1 at most 42 MHz, APB2 at most 84 MHz. */
-#if STM32_SYSCLK_MHZ == 168
-#define APB_PRESCALERS (RCC_CFGR_PPRE1_DIV4 | RCC_CFGR_PPRE2_DIV2)
-#define APB1_MHZ 42u
-#define APB2_MHZ 84u
-/* 168 MHz at 2.7-3.6 V: 5 wait states (RM0090, "Relation between CPU
- * clock frequency and flash memory read time") */
-#define FLASH_WAIT_STATES 5u
-#else
-#define APB_PRESCALERS RCC_CFGR_PPRE1_DIV2
-#define APB1_MHZ 42u
-#define APB2_MHZ 84u
-/* 84 MHz: 2 wait states on the F401, F411 and F446 (2.7-3.6 V) */
-#define FLASH_WAIT_STATES 2u
-#endif
-_Static_assert(APB1_MHZ <= 42 && APB2_MHZ <= 84, "APB1 at most 42 MHz, APB2 at most 84 MHz");
-
-/* FLASH_ACR: wait states, prefetch, instruction and data caches */
-#define FLASH_ACR REG(0x40023c00u)
-#define FLASH_ACR_LATENCY_MASK 0xfu
-#define FLASH_ACR_PRFTEN (1u << 8)
-#define FLASH_ACR_ICEN (1u << 9)
-#define FLASH_ACR_DCEN (1u << 10)
 
 /* GPIO: port n ('A' + n) at 0x40020000 + 0x400 n; its clock is RCC_AHB1ENR bit n */
 #define GPIO(port) (0x40020000u + 0x400u * (uint32_t)((port) - 'A'))
@@ -127,12 +50,12 @@ _Static_assert(APB1_MHZ <= 42 && APB2_MHZ <= 84, "APB1 at most 42 MHz, APB2 at m
 /* USART1 on APB2 (PA9, PA10) or USART2 on APB1 (PA2, PA3) */
 #if STM32_USART == 1
 #define USART 0x40011000u
-#define USART_APB_MHZ APB2_MHZ
+#define USART_APB 2
 #define USART_TX_PIN 9u
 #define USART_RX_PIN 10u
 #else
 #define USART 0x40004400u
-#define USART_APB_MHZ APB1_MHZ
+#define USART_APB 1
 #define USART_TX_PIN 2u
 #define USART_RX_PIN 3u
 #endif
@@ -148,6 +71,7 @@ _Static_assert(APB1_MHZ <= 42 && APB2_MHZ <= 84, "APB1 at most 42 MHz, APB2 at m
 #define BAUD 115200u
 /* 16x oversampling: BRR = f / baud, rounded (mantissa and 4 bits of fraction) */
 #define USART_BRR_OF(hz) (((hz) + BAUD / 2u) / BAUD)
+_Static_assert(USART_BRR_OF(84000000u) == 729u, "115200 baud from 84 MHz: BRR 729 (45 + 9/16)");
 
 /* SysTick (core clock), DWT's cycle counter, TIM2 (32 bits) */
 #define SYST_CSR REG(0xe000e010u)
@@ -167,79 +91,8 @@ _Static_assert(APB1_MHZ <= 42 && APB2_MHZ <= 84, "APB1 at most 42 MHz, APB2 at m
 #define TIM2_PSC REG(0x40000028u)
 #define TIM2_ARR REG(0x4000002cu)
 
-/* Polls before a wait gives up: the crystal's start-up is 2 ms at most
- * (about 8,000 polls at 16 MHz); the PLL locks in 0.1 ms. */
-#define WAIT_POLLS 200000u
-
-typedef enum { CLOCK_PLL_HSE, CLOCK_PLL_HSI, CLOCK_HSI } clock_source_t;
-
 static clock_source_t clock_source;
-static const char *clock_failure; /* why SYSCLK stayed on the HSI, or 0 */
 static int cyccnt_runs;
-
-static int wait_for(const volatile uint32_t *reg, uint32_t mask, uint32_t want)
-{
-    for (uint32_t n = 0; n < WAIT_POLLS; n++)
-        if ((*reg & mask) == want)
-            return 1;
-    return 0;
-}
-
-/* The PLL from the crystal, or the HSI when the crystal does not start;
- * then flash, buses, and SYSCLK onto the PLL. On failure SYSCLK stays on
- * the HSI (where reset left it) and clock_failure says why. */
-static void clocks_init(void)
-{
-    uint32_t pllcfgr = PLLCFGR_OF(HSI_MHZ);
-    clock_source = CLOCK_PLL_HSI;
-#if STM32_HSE_MHZ
-    /* (HSEBYP may change only while the HSE is off: before HSEON, after) */
-    if (STM32_HSE_BYPASS)
-        RCC_CR |= RCC_CR_HSEBYP;
-    RCC_CR |= RCC_CR_HSEON;
-    if (wait_for(&RCC_CR, RCC_CR_HSERDY, RCC_CR_HSERDY)) {
-        pllcfgr = PLLCFGR_OF(STM32_HSE_MHZ) | RCC_PLLCFGR_SRC_HSE;
-        clock_source = CLOCK_PLL_HSE;
-    } else {
-        RCC_CR &= ~RCC_CR_HSEON;
-        RCC_CR &= ~RCC_CR_HSEBYP;
-    }
-#endif
-    RCC_PLLCFGR = pllcfgr;
-    RCC_CR |= RCC_CR_PLLON;
-    if (!wait_for(&RCC_CR, RCC_CR_PLLRDY, RCC_CR_PLLRDY)) {
-        RCC_CR &= ~RCC_CR_PLLON;
-        clock_failure = "clock: the PLL never reported lock (RCC_CR PLLRDY), so SYSCLK stayed on the "
-                        "16 MHz HSI as reset left it (expected under QEMU, whose RCC reads 0)";
-        clock_source = CLOCK_HSI;
-        return;
-    }
-    /* wait states before the clock rises; the caches and prefetch then
-     * hide most of them */
-    FLASH_ACR = FLASH_WAIT_STATES | FLASH_ACR_PRFTEN | FLASH_ACR_ICEN | FLASH_ACR_DCEN;
-    if ((FLASH_ACR & FLASH_ACR_LATENCY_MASK) != FLASH_WAIT_STATES) {
-        clock_failure = "clock: FLASH_ACR did not take the wait states, so SYSCLK stayed on the 16 MHz HSI";
-        clock_source = CLOCK_HSI;
-        return;
-    }
-    RCC_CFGR = APB_PRESCALERS; /* AHB / 1, SYSCLK still the HSI */
-    RCC_CFGR = APB_PRESCALERS | RCC_CFGR_SW_PLL;
-    if (!wait_for(&RCC_CFGR, RCC_CFGR_SWS_MASK, RCC_CFGR_SWS_PLL)) {
-        RCC_CFGR = 0; /* back to the HSI, buses undivided */
-        clock_failure = "clock: SYSCLK did not switch to the PLL (RCC_CFGR SWS), so it stayed on the 16 MHz HSI";
-        clock_source = CLOCK_HSI;
-    }
-}
-
-static uint32_t sysclk_hz(void) { return clock_source == CLOCK_HSI ? HSI_MHZ * 1000000u : STM32_SYSCLK_MHZ * 1000000u; }
-
-/* The USART's APB clock: its divider's, or SYSCLK (the HSI) when the
- * buses stayed undivided */
-static uint32_t usart_clock_hz(void)
-{
-    return clock_source == CLOCK_HSI ? HSI_MHZ * 1000000u : USART_APB_MHZ * 1000000u;
-}
-_Static_assert(USART_BRR_OF(84000000u) == 729u, "115200 baud from 84 MHz: BRR 729 (45 + 9/16)");
 
 static void pin_mode(uint32_t gpio, uint32_t pin, uint32_t mode)
 {
@@ -262,7 +115,7 @@ static void usart_init(void)
                                    AF_USART << 4u * (USART_RX_PIN % 8u);
     pin_mode(gpio, USART_TX_PIN, GPIO_MODE_AF);
     pin_mode(gpio, USART_RX_PIN, GPIO_MODE_AF);
-    USART_BRR = USART_BRR_OF(usart_clock_hz());
+    USART_BRR = USART_BRR_OF(clock_apb_hz(clock_source, USART_APB));
     USART_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE;
 }
 
@@ -357,7 +210,7 @@ uint64_t port_icount_read(void) { return fold_now(&instr64, &TIM2_CNT); }
 
 void port_init(void)
 {
-    clocks_init();
+    clock_source = clocks_init();
     usart_init();
     led_init();
     counters_init();
@@ -377,10 +230,8 @@ void port_exit(int status)
 {
     /* after the frame, as the Pico's: the clock the render ran at and how
      * it was counted, then the status, the last line */
-    report_value("sysclk_hz", sysclk_hz());
-    report_text(clock_failure ? clock_failure
-                : clock_source == CLOCK_PLL_HSE ? "clock: PLL from the crystal (HSE)"
-                                                : "clock: PLL from the 16 MHz HSI (the crystal did not start)");
+    report_value("sysclk_hz", clock_sysclk_hz(clock_source));
+    report_text(clock_report());
     report_text(cyccnt_runs ? "counter: DWT CYCCNT, core cycles"
                             : "counter: TIM2, instructions (DWT CYCCNT reads 0: an emulator; TIM2 advances one tick an "
                               "instruction under QEMU -icount shift=0)");

@@ -17,7 +17,7 @@ BOARD_FPU      := -mfpu=fpv4-sp-d16 -mfloat-abi=hard
 BOARD_QEMU     := qemu-system-arm -M netduinoplus2
 BOARD_PACKAGES := gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm
 BOARD_BACKENDS := fixed float double
-BOARD_SRC      := platform/stm32f4/board.c
+BOARD_SRC      := platform/stm32f4/board.c platform/stm32f4/clock.c
 BOARD_LD       := platform/stm32f4/link.ld
 # no semihosting: the run ends with the exit status as the last report
 # line, then the core sleeps; run.sh stops QEMU on that line

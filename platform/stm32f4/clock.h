@@ -1,0 +1,78 @@
+/*
+ * clock.h - the STM32F4's clock tree (clock.c) and the RCC registers
+ * board.c shares with it. Apart from board.c so that a host test
+ * (tests/stm32f4_clock_test.c) can run it against a model of RCC and
+ * FLASH: STM32_REG, when defined, replaces the register access.
+ */
+#ifndef STM32F4_CLOCK_H
+#define STM32F4_CLOCK_H
+
+#include <stdint.h>
+
+#ifndef STM32_REG
+#define STM32_REG(addr) (*(volatile uint32_t *)(uintptr_t)(addr))
+#endif
+
+#ifndef STM32_SYSCLK_MHZ /* board.mk passes the variant's: 168 or 84 */
+#define STM32_SYSCLK_MHZ 168
+#endif
+#ifndef STM32_HSE_MHZ /* the crystal; 0: none */
+#define STM32_HSE_MHZ 8
+#endif
+#ifndef STM32_HSE_BYPASS /* 1: driven by a clock (a Nucleo's ST-LINK), not a crystal */
+#define STM32_HSE_BYPASS 0
+#endif
+
+/* RCC: what the clock tree and the peripherals' clock enables use */
+#define RCC_CR STM32_REG(0x40023800u)
+#define RCC_PLLCFGR STM32_REG(0x40023804u)
+#define RCC_CFGR STM32_REG(0x40023808u)
+#define RCC_AHB1ENR STM32_REG(0x40023830u)
+#define RCC_APB1ENR STM32_REG(0x40023840u)
+#define RCC_APB2ENR STM32_REG(0x40023844u)
+#define RCC_CR_HSEON (1u << 16)
+#define RCC_CR_HSERDY (1u << 17)
+#define RCC_CR_HSEBYP (1u << 18)
+#define RCC_CR_PLLON (1u << 24)
+#define RCC_CR_PLLRDY (1u << 25)
+#define RCC_PLLCFGR_SRC_HSE (1u << 22)
+#define RCC_CFGR_SW_PLL 2u
+#define RCC_CFGR_SWS_MASK (3u << 2)
+#define RCC_CFGR_SWS_PLL (2u << 2)
+#define RCC_CFGR_PPRE1_DIV2 (4u << 10)
+#define RCC_CFGR_PPRE1_DIV4 (5u << 10)
+#define RCC_CFGR_PPRE2_DIV2 (4u << 13)
+#define RCC_APB1ENR_TIM2 (1u << 0)
+#define RCC_APB1ENR_USART2 (1u << 17)
+#define RCC_APB2ENR_USART1 (1u << 4)
+
+/* FLASH_ACR: wait states, prefetch, instruction and data caches */
+#define FLASH_ACR STM32_REG(0x40023c00u)
+#define FLASH_ACR_LATENCY_MASK 0xfu
+#define FLASH_ACR_PRFTEN (1u << 8)
+#define FLASH_ACR_ICEN (1u << 9)
+#define FLASH_ACR_DCEN (1u << 10)
+
+/* Polls before a wait gives up: the crystal's start-up is 2 ms at most
+ * (about 8,000 polls at 16 MHz); the PLL locks in 0.1 ms. */
+#define WAIT_POLLS 200000u
+
+#define HSI_MHZ 16u
+
+typedef enum { CLOCK_PLL_HSE, CLOCK_PLL_HSI, CLOCK_HSI } clock_source_t;
+
+/* The PLL from the crystal, or from the HSI when the crystal does not
+ * start; flash wait states, prefetch and caches, the APB dividers, then
+ * SYSCLK onto the PLL. Every wait bounded; on failure SYSCLK stays on
+ * the HSI, where reset left it. Returns where it ended. */
+clock_source_t clocks_init(void);
+
+/* SYSCLK, and the clock of APB bus 1 or 2, in Hz, once clocks_init()
+ * has returned `source` */
+uint32_t clock_sysclk_hz(clock_source_t source);
+uint32_t clock_apb_hz(clock_source_t source, unsigned bus);
+
+/* The report's line on the clock tree: where it ended, and why */
+const char *clock_report(void);
+
+#endif
