@@ -263,7 +263,7 @@ image: deps-board $(BOARD_IMAGES)
 # make flash: the image onto a board on USB, by the board's BOARD_FLASH
 # command (its tool, BOARD_FLASH_PACKAGE, installed when missing)
 flash: $(BOARD_IMAGES)
-	@$(if $(BOARD_FLASH),,echo "BOARD=$(BOARD) has no flash command: make image gives its files to flash" >&2; exit 1)
+	@$(if $(BOARD_FLASH),,echo "BOARD=$(BOARD) has no flash command$(if $(BOARD_IMAGES),: make image writes the files to flash ($(BOARD_IMAGE_NOTE)),: it runs under its emulator only)" >&2; exit 1)
 	@sh platform/ensure-deps.sh board $(BOARD_FLASH_PACKAGE)
 	$(BOARD_FLASH)
 
