@@ -23,6 +23,7 @@
  *    then the core sleeps (WFI) with interrupts off. No semihosting: on a
  *    chip with no debugger a BKPT would be a HardFault.
  */
+#include "../arch/cortex-m/systick.h"
 #include "board.h"
 #include "port.h"
 #include "sink.h"
@@ -108,15 +109,6 @@ _Static_assert(XOSC_HZ / 1000u * PLL_FBDIV / (PLL_POSTDIV1 * PLL_POSTDIV2) * 100
 /* the PL011's divisor, clk_peri / (16 * baud), in 1/64ths, rounded */
 #define UART_DIV64(hz) ((8u * (hz) / UART_BAUD + 1u) / 2u)
 #define RING_OSC_HZ 6500000u /* nominal: 1.8 to 12 MHz across chips */
-
-/* SysTick: the core's 24-bit down counter, from the processor clock */
-#define SYST_CSR REG(0xe000e010u)
-#define SYST_RVR REG(0xe000e014u)
-#define SYST_CVR REG(0xe000e018u)
-#define SYST_ENABLE (1u << 0)
-#define SYST_TICKINT (1u << 1)
-#define SYST_CLKSOURCE_CPU (1u << 2)
-#define SYST_TOP 0xffffffu
 
 /* Polls before a wait gives up: far more than any of these needs (the
  * crystal's start-up, 1 ms, is about 2,000 polls at 6.5 MHz). */
@@ -211,9 +203,7 @@ void port_init(void)
         report_text(bringup_failed);
         port_exit(5);
     }
-    SYST_RVR = SYST_TOP;
-    SYST_CVR = 0;
-    SYST_CSR = SYST_CLKSOURCE_CPU | SYST_TICKINT | SYST_ENABLE;
+    systick_start_wrapping();
 }
 
 void board_unreset(uint32_t blocks, const char *what)
@@ -262,7 +252,7 @@ void port_exit(int status)
     /* the last byte out of the UART before the core sleeps */
     for (uint32_t n = 0; n < WAIT_POLLS && (UART0_FR & UART_FR_BUSY); n++)
         ;
-    SYST_CSR = 0;
+    systick_stop();
     if (status == 0)
         SIO_GPIO_OUT_SET = 1u << PIN_LED;
     else

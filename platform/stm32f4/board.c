@@ -24,6 +24,7 @@
  *    interrupts off. No semihosting: on a board with no debugger a BKPT
  *    would be a HardFault.
  */
+#include "../arch/cortex-m/systick.h"
 #include "clock.h"
 #include "port.h"
 #include "sink.h"
@@ -42,6 +43,7 @@
 #define GPIO(port) (0x40020000u + 0x400u * (uint32_t)((port) - 'A'))
 #define GPIO_MODER(base) REG((base) + 0x00u)
 #define GPIO_ODR(base) REG((base) + 0x14u)
+#define GPIO_BSRR(base) REG((base) + 0x18u)
 #define GPIO_AFR(base, pin) REG((base) + 0x20u + 4u * ((pin) / 8u))
 #define GPIO_MODE_OUTPUT 1u
 #define GPIO_MODE_AF 2u
@@ -73,13 +75,7 @@
 #define USART_BRR_OF(hz) (((hz) + BAUD / 2u) / BAUD)
 _Static_assert(USART_BRR_OF(84000000u) == 729u, "115200 baud from 84 MHz: BRR 729 (45 + 9/16)");
 
-/* SysTick (core clock), DWT's cycle counter, TIM2 (32 bits) */
-#define SYST_CSR REG(0xe000e010u)
-#define SYST_RVR REG(0xe000e014u)
-#define SYST_CVR REG(0xe000e018u)
-#define SYST_ENABLE (1u << 0)
-#define SYST_TICKINT (1u << 1)
-#define SYST_CLKSOURCE_CPU (1u << 2)
+/* DWT's cycle counter, TIM2 (32 bits); SysTick folds them (systick.h) */
 #define DEMCR REG(0xe000edfcu)
 #define DEMCR_TRCENA (1u << 24)
 #define DWT_CTRL REG(0xe0001000u)
@@ -131,8 +127,7 @@ static void led_init(void)
 static void led_set(int on)
 {
 #if STM32_LED_PORT
-    uint32_t bit = 1u << STM32_LED_PIN;
-    GPIO_ODR(GPIO(STM32_LED_PORT)) = on ? GPIO_ODR(GPIO(STM32_LED_PORT)) | bit : GPIO_ODR(GPIO(STM32_LED_PORT)) & ~bit;
+    GPIO_BSRR(GPIO(STM32_LED_PORT)) = 1u << (STM32_LED_PIN + (on ? 0u : 16u)); /* set, or reset */
 #else
     (void)on;
 #endif
@@ -191,9 +186,7 @@ static void counters_init(void)
     TIM2_ARR = 0xffffffffu;
     TIM2_EGR = 1u; /* load the prescaler */
     TIM2_CR1 = 1u; /* count */
-    SYST_RVR = 0xffffffu;
-    SYST_CVR = 0;
-    SYST_CSR = SYST_CLKSOURCE_CPU | SYST_TICKINT | SYST_ENABLE;
+    systick_start_wrapping();
 }
 
 /* CYCCNT on the chip; under QEMU it stays 0, and TIM2 counts
@@ -238,7 +231,7 @@ void port_exit(int status)
     report_value("exit_status", (uint64_t)(uint32_t)status);
     for (uint32_t n = 0; n < WAIT_POLLS && !(USART_SR & USART_SR_TC); n++)
         ;
-    SYST_CSR = 0;
+    systick_stop();
     led_set(status == 0);
     __asm__ volatile("cpsid i" : : : "memory");
     for (;;)
