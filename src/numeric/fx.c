@@ -442,27 +442,10 @@ static inline int32_t shr_to32(int64_t v, int n)
     return (int32_t)(v >> 32) >> (n - 32);
 }
 
-void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
+/* v / |v| for v brought to 28 bits in its largest component (the
+ * squared length then lies in [2^54, 2^58) and each v y fits 64 bits) */
+static void unit3_scaled(int32_t vx, int32_t vy, int32_t vz, fx_t out[3])
 {
-    uint64_t m = abs_u64(x) | abs_u64(y) | abs_u64(z);
-    if (m == 0) {
-        out[0] = out[1] = out[2] = 0;
-        return;
-    }
-    /* Bring the largest component to 28 bits (the OR of the magnitudes
-     * has the same bit length as the largest): the squared length lies
-     * in [2^54, 2^58) and each v y fits 64 bits. */
-    int n = 64 - clz64(m) - 28;
-    int32_t vx, vy, vz;
-    if (n <= 0) {
-        vx = (int32_t)x * ((int32_t)1 << -n);
-        vy = (int32_t)y * ((int32_t)1 << -n);
-        vz = (int32_t)z * ((int32_t)1 << -n);
-    } else {
-        vx = shr_to32(x, n);
-        vy = shr_to32(y, n);
-        vz = shr_to32(z, n);
-    }
     uint64_t len2 = (uint64_t)(fx_mul64(vx, vx) + fx_mul64(vy, vy) + fx_mul64(vz, vz));
     /* len2 = (xn / 2^30) 2^(62 - s), s even: 6 or 8 (its high word is in
      * [2^22, 3 2^24)), which one compare tells on cores without CLZ */
@@ -481,6 +464,40 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
     out[0] = ((int32_t)(fx_mul64(vx, r) >> 32) + half) >> shift;
     out[1] = ((int32_t)(fx_mul64(vy, r) >> 32) + half) >> shift;
     out[2] = ((int32_t)(fx_mul64(vz, r) >> 32) + half) >> shift;
+}
+
+void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
+{
+    uint64_t m = abs_u64(x) | abs_u64(y) | abs_u64(z);
+    if (m == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return;
+    }
+    /* Bring the largest component to 28 bits (the OR of the magnitudes
+     * has the same bit length as the largest). */
+    int n = 64 - clz64(m) - 28;
+    if (n <= 0)
+        unit3_scaled((int32_t)x * ((int32_t)1 << -n), (int32_t)y * ((int32_t)1 << -n), (int32_t)z * ((int32_t)1 << -n),
+                     out);
+    else
+        unit3_scaled(shr_to32(x, n), shr_to32(y, n), shr_to32(z, n), out);
+}
+
+/* The same for a vector of fx_t: 32-bit magnitudes and shifts, the same
+ * bits. (|INT32_MIN| is 2^31 as a uint32_t, as abs_u64 gives it.) */
+void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3])
+{
+    uint32_t m = (x < 0 ? 0u - (uint32_t)x : (uint32_t)x) | (y < 0 ? 0u - (uint32_t)y : (uint32_t)y) |
+                 (z < 0 ? 0u - (uint32_t)z : (uint32_t)z);
+    if (m == 0) {
+        out[0] = out[1] = out[2] = 0;
+        return;
+    }
+    int n = 32 - fx_clz32(m) - 28;
+    if (n <= 0)
+        unit3_scaled(x * ((int32_t)1 << -n), y * ((int32_t)1 << -n), z * ((int32_t)1 << -n), out);
+    else
+        unit3_scaled(x >> n, y >> n, z >> n, out);
 }
 
 /* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1), bit

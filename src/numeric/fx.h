@@ -443,6 +443,8 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s);/* x^s for x in [0,1]; 0 for x <= 0 */
 
 /* Unit vector along (x, y, z) given at any common scale; zero stays zero. */
 void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3]);
+/* fx_unit3 of a vector of fx_t, the same bits in 32-bit operations */
+void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3]);
 
 /* tan(deg degrees) as Q.2F, for 0 <= deg < 90. */
 fx_wide_t fx_tan_deg_wide(fx_t deg);

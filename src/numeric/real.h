@@ -125,6 +125,7 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
     out[1] = y / l;
     out[2] = z / l;
 }
+static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { r_unit3(x, y, z, out); }
 /* round(255 c) of c clamped to [0, 1] */
 static RT_INLINE uint8_t r_to_u8(real_t c)
 {
@@ -244,6 +245,7 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
 {
     fx_unit3(x, y, z, out);
 }
+static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { fx_unit3_narrow(x, y, z, out); }
 static inline void r_sincos_deg(real_t deg, real_t *s, real_t *c) { fx_sincos_deg(deg, s, c); }
 static inline uint8_t r_to_u8(real_t c)
 {

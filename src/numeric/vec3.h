@@ -60,7 +60,7 @@ static inline real_t v3_length(vec3_t a) { return r_wsqrt(v3_wdot(a, a)); }
 static inline vec3_t v3_unit(vec3_t a)
 {
     real_t u[3];
-    r_unit3(a.x, a.y, a.z, u);
+    r_unit3_narrow(a.x, a.y, a.z, u);
     return v3(u[0], u[1], u[2]);
 }
 /* unit vector along a x b, from the exact (wide) cross product */
