@@ -8,6 +8,7 @@
     X(vec3_t, centre, ) \
     X(real_t, radius, ) \
     X(real_wide_t, radius2, ) /* exact r^2 */ \
+    X(real_t, inv_radius, ) /* 1/r, or 0 where (p - c) / r would be too coarse (sphere_normal) */ \
     X(uint16_t, material, )
 typedef struct { FIELDS_sphere_t(RT_DECLARE_FIELD) } sphere_t;
 

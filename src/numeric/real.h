@@ -121,9 +121,16 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
         out[0] = out[1] = out[2] = 0;
         return;
     }
-    out[0] = x / l;
+#if RT_BACKEND_FLOAT
+    real_t inv = 1 / l; /* one division and three products: a division is 14 cycles on an M4F */
+    out[0] = x * inv;
+    out[1] = y * inv;
+    out[2] = z * inv;
+#else
+    out[0] = x / l; /* the reference: each component correctly rounded */
     out[1] = y / l;
     out[2] = z / l;
+#endif
 }
 static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { r_unit3(x, y, z, out); }
 /* round(255 c) of c clamped to [0, 1] */
