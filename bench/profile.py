@@ -79,7 +79,7 @@ GROUPS = [
     ("texture", "textures and the sky", ["texture_colour", "sky_colour", "checker", "marble", "noise",
                                          "lattice_hash", "gradient_dot", "fade", "lerp", "background"]),
     ("maths", "fixed-point and real operations, vectors, libgcc and soft-float helpers, libm",
-     ["fx_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
+     ["fx_*", "unit3_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
       "sin_q30", "v3_*", "r_*", "two_*", "split12", "from_bits", "to_bits", "__*", ".udivsi3*",
       "pow", "powf", "sqrt", "sqrtf", "fabs", "fabsf", "finite", "finitef", "nan", "nanf", "rint", "rintf",
       "scalbn", "scalbnf", "copysign*"]),

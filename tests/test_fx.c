@@ -336,14 +336,15 @@ static void test_sqrt_exact(void)
  * made with (tests/image-tests.sh), so a change to them shows here. */
 static uint32_t ref_rsqrt_q31(uint32_t x)
 {
-    static const uint32_t seed[24] = { /* 2^31 / sqrt((8 + i + 0.5) / 8) */
-        2083365155u, 1970666148u, 1874477404u, 1791125178u, 1717986918u, 1653133683u,
-        1595110809u, 1542797797u, 1495315679u, 1451963954u, 1412176548u, 1375490368u,
-        1341522400u, 1309952745u, 1280511845u, 1252970736u, 1227133513u, 1202831433u,
-        1179918260u, 1158266544u, 1137764631u, 1118314230u, 1099828424u, 1082230034u,
+    static const uint32_t line[24] = { /* per eighth of [1, 4): the value at its start, the drop in the low 11 bits */
+        0x7FEB4F52u, 0x789E3631u, 0x72707554u, 0x6D1F2CA6u, 0x687B5C1Au, 0x6462D3A7u,
+        0x60BCEB48u, 0x5D75DAF8u, 0x5A7EB2B4u, 0x57CB3279u, 0x5552A247u, 0x530C021Au,
+        0x50F1E9F3u, 0x4EFED1D1u, 0x4D2DF1B2u, 0x4B7BF997u, 0x49E5197Eu, 0x48671168u,
+        0x46FF6154u, 0x45AB7141u, 0x446A8131u, 0x43399921u, 0x42187113u, 0x41055906u
     };
-    uint64_t y = seed[(x >> 27) - 8];
-    for (int i = 0; i < 3; i++) { /* y (3 - x y^2) / 2 */
+    uint64_t c = line[(x >> 27) - 8];
+    uint64_t y = c - (c & 0x7FF) * ((x >> 11) & 0xFFFF);
+    for (int i = 0; i < 2; i++) { /* y (3 - x y^2) / 2 */
         uint64_t y2 = (y * y) >> 31;
         uint64_t xy2 = ((uint64_t)x * y2) >> 30;
         y = (y * (((uint64_t)3 << 31) - xy2)) >> 32;

@@ -6,16 +6,16 @@ volatile uint32_t fx_saturations;
 #endif
 
 /* FX_FAST_MATH trades exactness for instructions: one Newton step less
- * in fx_unit3's reciprocal square root (relative error 2^-18 instead of
+ * in fx_unit3's reciprocal square root (relative error 2^-20 instead of
  * 2^-29), no exact last-unit fix of square roots (within 0.76 ulp), and
  * 16 instead of 24 log2 bits and a degree-6 exp2 in powers. Quotients
  * are exact either way: their fix costs next to nothing. */
 #if FX_FAST_MATH
-#define RSQRT_STEPS 2
+#define RSQRT_STEPS 1
 #define POW_LOG_BITS 16
 #define EXP2_DEGREE 6
 #else
-#define RSQRT_STEPS 3
+#define RSQRT_STEPS 2
 #define POW_LOG_BITS 24
 #define EXP2_DEGREE 9
 #endif
@@ -85,38 +85,11 @@ static inline uint32_t rsqrt_step(uint32_t x, uint32_t y)
     return rsqrt_step_y2(x, y, (uint32_t)(fx_umul64(y, y) >> 31));
 }
 
-/* 1/sqrt(x / 2^30) in Q.31 for x in [2^30, 2^32): a 24-entry seed (within
- * 3.2%, with its square for the first step) and RSQRT_STEPS Newton steps
- * (relative error below 2^-18 after two, 2^-29 after three). fx_unit3's
- * bits are these. */
-static uint32_t rsqrt_q31(uint32_t x)
-{
-    static const struct { uint32_t y, y2; } seed[24] = { /* 2^31 / sqrt((8 + i + 0.5) / 8), y^2 / 2^31 */
-        { 2083365155u, 2021161079u }, { 1970666148u, 1808407281u }, { 1874477404u, 1636178017u },
-        { 1791125178u, 1493901667u }, { 1717986918u, 1374389534u }, { 1653133683u, 1272582902u },
-        { 1595110809u, 1184818564u }, { 1542797797u, 1108378657u }, { 1495315679u, 1041204193u },
-        { 1451963954u, 981706810u }, { 1412176548u, 928641577u }, { 1375490368u, 881018933u },
-        { 1341522400u, 838042399u }, { 1309952745u, 799063683u }, { 1280511845u, 763549741u },
-        { 1252970736u, 731058262u }, { 1227133513u, 701219150u }, { 1202831433u, 673720359u },
-        { 1179918260u, 648296950u }, { 1158266544u, 624722515u }, { 1137764631u, 602802427u },
-        { 1118314230u, 582368446u }, { 1099828424u, 563274399u }, { 1082230034u, 545392672u },
-    };
-    uint32_t i = (x >> 27) - 8;
-    uint32_t y = rsqrt_step(x, rsqrt_step_y2(x, seed[i].y, seed[i].y2));
-#if RSQRT_STEPS > 2
-    y = rsqrt_step(x, y);
-#endif
-    return y;
-}
-
-/* 2^31 / sqrt(x / 2^30) for square roots, where only the accuracy
- * counts: a line per eighth of [1, 4) (within 2^-10.5), then one Newton
- * step on high words (the step above with 2^-27 more rounding) and 8
- * units off: within 2^-20.5 under 2^31 / sqrt((x + 1) / 2^30) and never
- * above it (checked for every x). Entry i is the line's value at the
- * start of its interval, whose low 11 bits are the line's drop per unit
- * of x's bits 26..11. */
-static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
+/* 2^31 / sqrt(x / 2^30) for x in [2^30, 2^32), within 2^-10.5 and never
+ * above it: a line per eighth of [1, 4). Entry i is the line's value at
+ * the start of its interval, whose low 11 bits are the line's drop per
+ * unit of x's bits 26..11. One 32-bit product. */
+static inline uint32_t rsqrt_line(uint32_t x)
 {
     static const uint32_t line[24] = {
         0x7FEB4F52u, 0x789E3631u, 0x72707554u, 0x6D1F2CA6u, 0x687B5C1Au, 0x6462D3A7u,
@@ -125,7 +98,29 @@ static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
         0x46FF6154u, 0x45AB7141u, 0x446A8131u, 0x43399921u, 0x42187113u, 0x41055906u
     };
     uint32_t c = line[(x >> 27) - 8];
-    uint32_t y = c - (c & 0x7FFu) * ((x >> 11) & 0xFFFFu);
+    return c - (c & 0x7FFu) * ((x >> 11) & 0xFFFFu);
+}
+
+/* 1/sqrt(x / 2^30) in Q.31 for x in [2^30, 2^32): the line above and
+ * RSQRT_STEPS Newton steps (relative error below 2^-20 after one, 2^-29
+ * after two: the steps' own rounding). fx_unit3's bits are these. */
+static uint32_t rsqrt_q31(uint32_t x)
+{
+    uint32_t y = rsqrt_step(x, rsqrt_line(x));
+#if RSQRT_STEPS > 1
+    y = rsqrt_step(x, y);
+#endif
+    return y;
+}
+
+/* 2^31 / sqrt(x / 2^30) for square roots, where only the accuracy
+ * counts: the line (within 2^-10.5), then one Newton step on high words
+ * (the step above with 2^-27 more rounding) and 8 units off: within
+ * 2^-20.5 under 2^31 / sqrt((x + 1) / 2^30) and never above it (checked
+ * for every x). */
+static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
+{
+    uint32_t y = rsqrt_line(x);
     uint32_t y2 = (uint32_t)(fx_umul64(y, y) >> 32);   /* Y^2 2^30 */
     uint32_t t = (uint32_t)(fx_umul64(x, y2) >> 32);   /* X Y^2 2^28, ~2^28 */
     int32_t e = (int32_t)(((uint32_t)1 << 28) - t);

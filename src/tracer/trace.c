@@ -148,7 +148,9 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight)
  * record stays out of the recursive trace_ray frame. */
 RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
-    hit_t h = { .t = RT_T_FAR, .leaf = RT_NO_LEAF };
+    hit_t h; /* the rest is written with a hit: no memset of it per ray (the M0's GCC calls one) */
+    h.t = RT_T_FAR;
+    h.leaf = RT_NO_LEAF;
     if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->scratch))
         return false;
     surface_at(tr->scene, &h, ray, s);
