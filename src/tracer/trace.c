@@ -97,16 +97,22 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     real_t I = sc->light_intensity;
     (void)ray; /* only the lights' shares look at it */
     material_terms_t *t = &tr->terms[depth - 1];
+    /* Kd C and I Kd C are kept per depth until the material or, under a
+     * texture, C changes: a checker's tile mostly repeats ray after ray. */
+    bool same = t->material == m;
 #if RT_USE_TEXTURES
-    if (m->texture != TEXTURE_NONE) { /* C at this point: nothing to cache */
-        t->material = 0;
-        t->kdc = colour_scale(texture_colour(&sc->textures[m->texture], s->point), m->kd);
-        t->ambient = colour_scale(t->kdc, I);
-    } else
+    colour_t base = m->colour;
+    if (m->texture != TEXTURE_NONE) {
+        base = texture_colour(&sc->textures[m->texture], s->point);
+        same = same && base.x == t->base.x && base.y == t->base.y && base.z == t->base.z;
+    }
+#else
+    const colour_t base = m->colour;
 #endif
-    if (t->material != m) {
+    if (!same) {
         t->material = m;
-        t->kdc = colour_scale(m->colour, m->kd);
+        t->base = base;
+        t->kdc = colour_scale(base, m->kd);
         t->ambient = colour_scale(t->kdc, I);
     }
     colour_t c = t->ambient;

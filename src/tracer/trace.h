@@ -9,6 +9,7 @@
  * is mostly on the material the same depth of the previous pixel met. */
 typedef struct {
     const material_t *material; /* whose terms these are; 0: none yet */
+    colour_t base;              /* and the colour C they were made of (a texture's at the point) */
     colour_t kdc, ambient;
 } material_terms_t;
 
