@@ -13,7 +13,9 @@
 
 #define bvh_build                rt_bvh_build
 #define bvh_tree_stats           rt_bvh_tree_stats
+#define camera_next              rt_camera_next
 #define camera_ray               rt_camera_ray
+#define camera_row               rt_camera_row
 #define camera_setup             rt_camera_setup
 #define camera_start_at_bounds   rt_camera_start_at_bounds
 #define cone_init                rt_cone_init

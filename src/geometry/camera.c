@@ -43,18 +43,34 @@ RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
     c->start = gap > 0 ? gap : 0;
 }
 
-RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
+/* T = at + a u - b v: the model's w + a' u - b' v scaled by |at - eye|,
+ * so eye -> T is the exact ray; offsets in units of s/2 are integers and
+ * each product is rounded once. |a|, |b| <= max(256, tan_half) and |at| <
+ * 513 (camera_init), so up to a lens of 179.8 degrees none needs a
+ * saturation test (a wider one would only saturate its edges). The row
+ * part at - b v is made once a row. */
+void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
 {
-    /* T = at + a u - b v: the model's w + a' u - b' v scaled by |at - eye|,
-     * so eye -> T is the exact ray; offsets in units of s/2 are integers
-     * and each product is rounded once. |a|, |b| <= max(256, tan_half)
-     * and |at| < 513 (camera_init), so up to a lens of 179.8 degrees none
-     * needs a saturation test (a wider one would only saturate its edges). */
-    real_t a = r_from_wide_in_range(c->half_span * (2 * i - c->cx));
     real_t b = r_from_wide_in_range(c->half_span * (2 * j - c->cy));
-    vec3_t t = v3(r_from_wide_in_range(r_to_wide(c->at.x) + r_wmul(a, c->u.x) - r_wmul(b, c->v.x)),
-                  r_from_wide_in_range(r_to_wide(c->at.y) + r_wmul(a, c->u.y) - r_wmul(b, c->v.y)),
-                  r_from_wide_in_range(r_to_wide(c->at.z) + r_wmul(a, c->u.z) - r_wmul(b, c->v.z)));
+    row->row[0] = r_to_wide(c->at.x) - r_wmul(b, c->v.x);
+    row->row[1] = r_to_wide(c->at.y) - r_wmul(b, c->v.y);
+    row->row[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
+    row->k = 2 * i - c->cx;
+    row->a = c->half_span * row->k;
+}
+
+ray_t camera_next(const camera_t *c, camera_row_t *row)
+{
+#if RT_BACKEND_FIXED
+    real_t a = r_from_wide_in_range(row->a);
+    row->a += 2 * c->half_span; /* exact: the next product, without a 64-bit multiply */
+#else
+    real_t a = r_from_wide_in_range(c->half_span * row->k);
+#endif
+    row->k += 2;
+    vec3_t t = v3(r_from_wide_in_range(row->row[0] + r_wmul(a, c->u.x)),
+                  r_from_wide_in_range(row->row[1] + r_wmul(a, c->u.y)),
+                  r_from_wide_in_range(row->row[2] + r_wmul(a, c->u.z)));
     vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
     r.dir = v3_unit(to_t);
@@ -67,6 +83,13 @@ RT_COLD ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
     r.from_far = false;
     r.leaf = RT_NO_LEAF;
     return r;
+}
+
+ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
+{
+    camera_row_t row;
+    camera_row(c, i, j, &row);
+    return camera_next(c, &row);
 }
 
 /* Q16.16 value v times 2^k as a scalar: false if out of range. */

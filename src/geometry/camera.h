@@ -46,6 +46,20 @@ static inline const char *camera_init_cells(camera_t *c, const view_t *view, int
  * (the scene's bounds), if the eye is outside it. */
 void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max);
 
+/* A row of samples walked left to right: T's row part at - b v, and the
+ * next column's offset a (its 2i - cx half spans). */
+typedef struct {
+    real_wide_t row[3];
+    real_wide_t a; /* the fixed build steps it, the same integers as the products */
+    int32_t k;     /* 2i - cx */
+} camera_row_t;
+
+/* Row j of the camera's samples, from column i. */
+void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row);
+
+/* The eye ray through the row's next sample; steps to the one after. */
+ray_t camera_next(const camera_t *c, camera_row_t *row);
+
 /* The eye ray through sample (i, j), column i from the left, row j from the top. */
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j);
 

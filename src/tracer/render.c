@@ -135,8 +135,10 @@ static struct rt_worker workers[RT_MAX_WORKERS];
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
 static void corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, colour_t *row)
 {
+    camera_row_t r;
+    camera_row(&wk->cam, x0, j, &r);
     for (int32_t i = 0; i <= w; i++) {
-        ray_t ray = camera_ray(&wk->cam, x0 + i, j);
+        ray_t ray = camera_next(&wk->cam, &r);
         wk->scratch.stats.eye_rays++;
         row[i] = trace_ray(&wk->tr, &ray, 1, R_ONE);
     }
@@ -319,8 +321,10 @@ static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
     struct rt_worker *wk = ctx->worker;
+    camera_row_t row;
+    camera_row(&wk->cam, ctx->x0, y, &row);
     for (uint16_t x = 0; x < ctx->w; x++) {
-        ray_t ray = camera_ray(&wk->cam, ctx->x0 + x, y);
+        ray_t ray = camera_next(&wk->cam, &row);
         wk->scratch.stats.eye_rays++;
         put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE), dither_at(ctx, ctx->x0 + x, y));
     }
