@@ -14,6 +14,7 @@ typedef struct {
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
     bool far_root;   /* a ray going through meets it again only at its far root */
     uint32_t leaf;   /* its BVH leaf (ray_t) */
+    vec3_t mirror;   /* the incoming ray mirrored about n, unit, where the surface mirrors (trace_ray) */
     real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
 } surface_t;
@@ -76,9 +77,9 @@ RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surfac
 #if RT_USE_SPECULAR
     const material_t *m = s->m;
     if (m->ks > 0) {
-        /* Phong: R = 2 (N.L) N - L against V = -D */
-        vec3_t refl = v3_sub(v3_scale_in_range(s->n, 2 * ndl), *ldir);
-        real_t rv = -v3_dot_in_range(refl, ray->dir);
+        /* Phong's R.V, R = 2 (N.L) N - L and V = -D, is L.M for the
+         * mirror direction M = D - 2 (N.D) N the surface already has */
+        real_t rv = v3_dot_in_range(*ldir, s->mirror);
         real_t spec = r_mul_in_range(m->ks, r_pow_unit(rv, m->shine)); /* the power is <= 1 */
         if (spec != 0) /* else it adds nothing */
             lit = colour_add(lit, v3(spec, spec, spec));
@@ -167,10 +168,11 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 /* The mirror ray leaving s. On a patch, a mirror direction about the
  * shading normal that would go into the geometric surface is taken about
  * the geometric normal instead (the patch policy). */
-RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, ray_t *out)
 {
+    (void)ray; /* only the patch policy looks at it */
     leave(s, false, out);
-    out->dir = v3_unit(v3_madd_in_range(ray->dir, 2 * cos_i, s->n));
+    out->dir = s->mirror;
 #if RT_USE_PATCHES
     if (s->smooth && v3_dot_in_range(out->dir, s->n_out) <= 0)
         out->dir = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s->n_out), s->n_out));
@@ -237,18 +239,24 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     if (depth == 1)
         tr->scratch->stats.eye_hits++;
 
+    const material_t *m = s.m;
+    /* SPD rule 8: a transmitting surface also spawns its reflection ray */
+    bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
+    (void)mirrors;
+#if RT_USE_SPECULAR || RT_USE_REFLECTION
+    /* made once for the highlights and the reflection ray */
+    if (mirrors)
+        s.mirror = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s.n), s.n));
+#endif
     colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
         return c;
 
-    const material_t *m = s.m;
-    real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
     ray_t next;
-    (void)weight, (void)cos_i, (void)m, (void)next;
+    (void)weight, (void)next;
 #if RT_USE_REFLECTION
-    /* SPD rule 8: a transmitting surface also spawns its reflection ray */
-    if ((m->ks > 0 || (tr->spd_rules && m->t > 0)) && worth_tracing(tr, r_mul(weight, m->ks))) {
-        reflected(ray, &s, cos_i, &next);
+    if (mirrors && worth_tracing(tr, r_mul(weight, m->ks))) {
+        reflected(ray, &s, &next);
         tr->scratch->stats.reflect_rays++;
         colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
@@ -256,6 +264,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     }
 #endif
 #if RT_USE_REFRACTION
+    real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
     if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
         tr->scratch->stats.refract_rays++;
         c = colour_add_scaled(c, trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t);
