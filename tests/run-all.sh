@@ -40,6 +40,7 @@ run tests/profile-tests.sh
 run tests/board-oled-test.sh "$B/rt"
 run tests/board-pico-tests.sh "$B/rt"
 run tests/board-stm32f4-tests.sh "$B/rt"
+run tests/speed-tests.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
 run tests/scenec-tables-tests.sh "$B/rt" "$B/test-scenec-tables"
 run tests/examples-tests.sh "$B/rt" "$B/test-examples"
