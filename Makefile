@@ -145,6 +145,14 @@ build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h tests
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
 	    tests/test_fx.c src/numeric/fx.c -lm
 
+# The coarse sphere test of cores without a long multiply, against the
+# exact test (this build's sphere_hit_inline, which does not call it).
+build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c src/numeric/fx.c \
+                               tests/testlib.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
+	    src/geometry/sphere.c src/numeric/fx.c -lm
+
 NAME := $(basename $(notdir $(SCENE)))
 
 host-run: deps-board
@@ -197,7 +205,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
 
 test: deps

@@ -21,6 +21,7 @@ run() {
 }
 run "$B/test_fx"
 run "$B/test_fx_soft"
+run "$B/test_sphere_coarse"
 run "$B/test_geometry"
 run "$B/test_bvh"
 run "$B/test_hal"
