@@ -173,7 +173,7 @@ void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
 {
     w->eye_ray = false;
     w->n_eye_spheres = 0;
-    if (!searched_flat(sc))
+    if (!searched_flat(sc) || SPHERE_COARSE) /* the coarse test is cheaper where it runs */
         return;
     uint32_t i = 0;
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++) {
