@@ -153,6 +153,14 @@ build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h 
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
 	    src/geometry/sphere.c src/numeric/fx.c -lm
 
+# The sample boxes by which a flat scene's eye rays skip spheres, against
+# the exact test on every sample of random views.
+build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry/camera.h src/geometry/sphere.h \
+                         src/geometry/sphere.c src/numeric/fx.c src/rt_error.c tests/testlib.h Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
+	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
+
 NAME := $(basename $(notdir $(SCENE)))
 
 host-run: deps-board
@@ -205,7 +213,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
 
 test: deps

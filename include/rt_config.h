@@ -200,7 +200,7 @@
 #define RT_USE_FLAT 1
 #endif
 #ifndef RT_FLAT_EYE_SPHERES         /* a flat scene's spheres set up per frame */
-#define RT_FLAT_EYE_SPHERES 8       /* for eye rays (24 bytes each a worker) */
+#define RT_FLAT_EYE_SPHERES 8       /* for eye rays (16 bytes each a worker) */
 #endif
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1

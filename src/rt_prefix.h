@@ -17,6 +17,7 @@
 #define camera_ray               rt_camera_ray
 #define camera_row               rt_camera_row
 #define camera_setup             rt_camera_setup
+#define camera_sphere_box        rt_camera_sphere_box
 #define camera_start_at_bounds   rt_camera_start_at_bounds
 #define cone_init                rt_cone_init
 #define cone_normal              rt_cone_normal

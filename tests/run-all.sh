@@ -22,6 +22,7 @@ run() {
 run "$B/test_fx"
 run "$B/test_fx_soft"
 run "$B/test_sphere_coarse"
+run "$B/test_eye_box"
 run "$B/test_geometry"
 run "$B/test_bvh"
 run "$B/test_hal"

@@ -51,7 +51,8 @@ RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
  * part at - b v is made once a row. */
 void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
 {
-    real_t b = r_from_wide_in_range(c->half_span * (2 * j - c->cy));
+    row->m = 2 * j - c->cy;
+    real_t b = r_from_wide_in_range(c->half_span * row->m);
     row->row[0] = r_to_wide(c->at.x) - r_wmul(b, c->v.x);
     row->row[1] = r_to_wide(c->at.y) - r_wmul(b, c->v.y);
     row->row[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
@@ -90,6 +91,64 @@ ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
     camera_row_t row;
     camera_row(c, i, j, &row);
     return camera_next(c, &row);
+}
+
+/* Searched offsets: 2^16 half spans either way, where the half span times
+ * that stays inside the wide range (half_span <= 2^7). */
+#define BOX_REACH ((int32_t)1 << 16)
+
+/* The bound on the offset k (2i - cx or 2j - cy) of rays whose slope in the
+ * T plane is num / den (den > 0): the largest k whose T offset k s/2 is at
+ * most dist num / den (upper) or the smallest at least it, two samples
+ * wider; unbounded past 64 or past the searched reach. */
+RT_COLD static int32_t sample_bound(const camera_t *c, real_t dist, real_t num, real_t den, bool upper)
+{
+    int32_t unbounded = upper ? INT32_MAX : INT32_MIN;
+    if (r_to_wide(r_abs(num)) >= r_wmul(den, R_RATIO(64, 1)))
+        return unbounded;
+    real_wide_t a = r_wmul(dist, r_div(num, den));
+    int32_t lo = -BOX_REACH, hi = BOX_REACH; /* binary search: k s/2 grows with k */
+    while (lo < hi) {
+        if (upper) { /* the largest k with k s/2 <= a */
+            int32_t mid = lo + (hi - lo + 1) / 2;
+            if (c->half_span * mid <= a)
+                lo = mid;
+            else
+                hi = mid - 1;
+        } else { /* the smallest k with k s/2 >= a */
+            int32_t mid = lo + (hi - lo) / 2;
+            if (c->half_span * mid >= a)
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+    }
+    if (lo <= -BOX_REACH + 4 || lo >= BOX_REACH - 4)
+        return unbounded;
+    return upper ? lo + 4 : lo - 4;
+}
+
+/* A point p of the sphere (from the eye: u, v, w components pu, pv, pw >
+ * 0) is on the ray through T offset (a, -b) when a = dist pu / pw and b =
+ * -dist pv / pw; pu and pv are within r of the centre's, pw within r of
+ * its, so a and b lie between the extreme quotients below. The radius is
+ * widened by 2^-8 + |l| 2^-12: an eye ray's line passes within 2^-9 of the
+ * eye, and its direction is good to a few 2^-20. */
+RT_COLD void camera_sphere_box(const camera_t *c, vec3_t centre, real_t radius, int32_t box[4])
+{
+    box[0] = box[2] = INT32_MIN;
+    box[1] = box[3] = INT32_MAX;
+    vec3_t f = v3_sub(c->at, c->eye), l = v3_sub(centre, c->eye);
+    real_t dist = v3_length(f);
+    real_t r = radius + R_RATIO(1, 256) + r_mul(v3_length(l), R_RATIO(1, 4096));
+    real_t pu = v3_dot(l, c->u), pv = -v3_dot(l, c->v), pw = v3_dot(l, v3_unit(f));
+    real_t near = pw - r, far = pw + r;
+    if (near < R_RATIO(1, 16) || c->half_span > r_to_wide(R_RATIO(128, 1)))
+        return;
+    box[0] = sample_bound(c, dist, pu - r, pu - r >= 0 ? far : near, false);
+    box[1] = sample_bound(c, dist, pu + r, pu + r >= 0 ? near : far, true);
+    box[2] = sample_bound(c, dist, pv - r, pv - r >= 0 ? far : near, false);
+    box[3] = sample_bound(c, dist, pv + r, pv + r >= 0 ? near : far, true);
 }
 
 /* Q16.16 value v times 2^k as a scalar: false if out of range. */

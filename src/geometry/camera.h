@@ -51,7 +51,8 @@ void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max);
 typedef struct {
     real_wide_t row[3];
     real_wide_t a; /* the fixed build steps it, the same integers as the products */
-    int32_t k;     /* 2i - cx */
+    int32_t k;     /* the next sample's 2i - cx */
+    int32_t m;     /* the row's 2j - cy */
 } camera_row_t;
 
 /* Row j of the camera's samples, from column i. */
@@ -62,5 +63,11 @@ ray_t camera_next(const camera_t *c, camera_row_t *row);
 
 /* The eye ray through sample (i, j), column i from the left, row j from the top. */
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j);
+
+/* The samples whose eye rays may meet a sphere: 2i - cx in [box[0],
+ * box[1]] and 2j - cy in [box[2], box[3]], a box that holds every one that
+ * does (INT32_MIN / INT32_MAX where it is unbounded: a sphere reaching
+ * behind the eye, a lens too wide). */
+void camera_sphere_box(const camera_t *c, vec3_t centre, real_t radius, int32_t box[4]);
 
 #endif

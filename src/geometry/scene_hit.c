@@ -169,43 +169,32 @@ static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, 
 }
 
 #if RT_USE_FLAT
-void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
+void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
     w->eye_ray = false;
     w->n_eye_spheres = 0;
-    if (!searched_flat(sc) || SPHERE_COARSE) /* the coarse test is cheaper where it runs */
+    if (!searched_flat(sc))
         return;
     uint32_t i = 0;
-    for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++) {
-        const sphere_t *s = &sc->spheres[i];
-        eye_sphere_t *e = &w->eye_spheres[i];
-        e->l = v3_sub(s->centre, eye);
-        real_wide_t l2 = v3_wdot(e->l, e->l);
-        real_t len = r_wsqrt(l2);
-        /* the margin: an eye ray's line passes within 2^-9 of the eye (its
-         * direction and origin are rounded), and v = l . d within |l| 2^-19
-         * of the exact; (|l| + r) 2^-6 + |l|^2 2^-16 + 2^-12 covers both */
-        real_wide_t margin = r_wmul(len + s->radius, R_RATIO(1, 64)) + r_wmul(len, r_mul(len, R_RATIO(1, 65536))) +
-                             r_to_wide(R_RATIO(1, 4096));
-        e->miss2 = l2 - s->radius2 - margin; /* < 0 (never rejects) when the eye is near or inside */
-    }
+    for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++)
+        camera_sphere_box(cam, sc->spheres[i].centre, sc->spheres[i].radius, w->eye_spheres[i].box);
     w->n_eye_spheres = i;
 }
 
-/* Whether an eye ray's line through the eye misses sphere i. */
+/* Whether an eye ray's sample lies outside sphere i's box. */
 static RT_INLINE bool sphere_eye_miss(const sphere_t *s, const ray_t *r, uint32_t i, const ray_scratch_t *w)
 {
+    (void)s, (void)r;
     if (!w->eye_ray || i >= w->n_eye_spheres)
         return false;
-    const eye_sphere_t *e = &w->eye_spheres[i];
-    real_t v = v3_dot_in_range(e->l, r->dir); /* |l| < 2^10 */
-    return v + s->radius <= 0 || r_wmul(v, v) < e->miss2;
+    const int32_t *box = w->eye_spheres[i].box;
+    return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
 }
 #define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
 #else
-void scene_eye_setup(const scene_t *sc, vec3_t eye, ray_scratch_t *w)
+void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
-    (void)sc, (void)eye, (void)w;
+    (void)sc, (void)cam, (void)w;
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
 #endif

@@ -38,8 +38,7 @@ typedef struct {
  * misses the sphere (|l|^2 - r^2, less a margin for rounding), so an eye
  * ray rejects it with one dot product. */
 typedef struct {
-    vec3_t l;
-    real_wide_t miss2;
+    int32_t box[4]; /* the eye samples that may meet it (camera_sphere_box) */
 } eye_sphere_t;
 
 typedef struct ray_scratch {
@@ -49,6 +48,7 @@ typedef struct ray_scratch {
     slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
 #if RT_USE_FLAT
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
+    int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
     uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
 #endif

@@ -131,6 +131,18 @@ struct rt_worker {
 };
 static struct rt_worker workers[RT_MAX_WORKERS];
 
+/* The sample of the eye ray about to be traced (camera.h's offsets), for
+ * the flat search's culling (scene_eye_setup). */
+static RT_INLINE void eye_sample(struct rt_worker *wk, int32_t k, int32_t m)
+{
+#if RT_USE_FLAT
+    wk->scratch.eye_k = k;
+    wk->scratch.eye_m = m;
+#else
+    (void)wk, (void)k, (void)m;
+#endif
+}
+
 #if RT_USE_SPD
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
 static void corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, colour_t *row)
@@ -138,6 +150,7 @@ static void corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w,
     camera_row_t r;
     camera_row(&wk->cam, x0, j, &r);
     for (int32_t i = 0; i <= w; i++) {
+        eye_sample(wk, r.k, r.m);
         ray_t ray = camera_next(&wk->cam, &r);
         wk->scratch.stats.eye_rays++;
         row[i] = trace_ray(&wk->tr, &ray, 1, R_ONE);
@@ -169,6 +182,7 @@ static real_t clamp_unit(real_t c) { return c > 0 ? (c < R_ONE ? c : R_ONE) : 0;
 
 static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j)
 {
+    eye_sample(wk, 2 * i - wk->cam.cx, 2 * j - wk->cam.cy);
     ray_t ray = camera_ray(&wk->cam, i, j);
     wk->scratch.stats.eye_rays++;
     colour_t c = trace_ray(&wk->tr, &ray, 1, R_ONE);
@@ -324,6 +338,7 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
     camera_row_t row;
     camera_row(&wk->cam, ctx->x0, y, &row);
     for (uint16_t x = 0; x < ctx->w; x++) {
+        eye_sample(wk, row.k, row.m);
         ray_t ray = camera_next(&wk->cam, &row);
         wk->scratch.stats.eye_rays++;
         put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE), dither_at(ctx, ctx->x0 + x, y));
@@ -449,7 +464,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, why);
         return -1;
     }
-    scene_eye_setup(sc, wk->cam.eye, &wk->scratch);
+    scene_eye_setup(sc, &wk->cam, &wk->scratch);
     /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
     if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
         camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
