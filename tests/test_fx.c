@@ -336,20 +336,29 @@ static void test_sqrt_exact(void)
  * made with (tests/image-tests.sh), so a change to them shows here. */
 static uint32_t ref_rsqrt_q31(uint32_t x)
 {
-    static const uint32_t line[24] = { /* per eighth of [1, 4): the value at its start, the drop in the low 11 bits */
-        0x7FEB4F52u, 0x789E3631u, 0x72707554u, 0x6D1F2CA6u, 0x687B5C1Au, 0x6462D3A7u,
-        0x60BCEB48u, 0x5D75DAF8u, 0x5A7EB2B4u, 0x57CB3279u, 0x5552A247u, 0x530C021Au,
-        0x50F1E9F3u, 0x4EFED1D1u, 0x4D2DF1B2u, 0x4B7BF997u, 0x49E5197Eu, 0x48671168u,
-        0x46FF6154u, 0x45AB7141u, 0x446A8131u, 0x43399921u, 0x42187113u, 0x41055906u
+    static const uint32_t line[96] = { /* per 2^25 of x: the value at its start, the drop in the low 11 bits */
+        0x7FFD11F5u, 0x7E08F9DFu, 0x7C2B19CAu, 0x7A61D9B7u, 0x78ABC1A5u, 0x77079194u,
+        0x75740985u, 0x73F02976u, 0x727AE168u, 0x7113595Bu, 0x6FB8B94Fu, 0x6E6A4944u,
+        0x6D274939u, 0x6BEF212Fu, 0x6AC13125u, 0x699CF11Cu, 0x6881D913u, 0x676F810Bu,
+        0x66656903u, 0x656328FBu, 0x646868F4u, 0x6374D0EDu, 0x6287F8E7u, 0x61A1A8E1u,
+        0x60C180DBu, 0x5FE748D5u, 0x5F12C0D0u, 0x5E43A0CAu, 0x5D79B8C5u, 0x5CB4C8C1u,
+        0x5BF4A0BCu, 0x5B3910B8u, 0x5A81E8B3u, 0x59CF00AFu, 0x592030ABu, 0x587548A8u,
+        0x57CE28A4u, 0x572AB0A0u, 0x568AC09Du, 0x55EE309Au, 0x5554E897u, 0x54BEC894u,
+        0x542BB091u, 0x539B908Eu, 0x530E508Bu, 0x5283C888u, 0x51FBF086u, 0x5176B083u,
+        0x50F3F881u, 0x5073A87Eu, 0x4FF5B07Cu, 0x4F7A007Au, 0x4F008878u, 0x4E893876u,
+        0x4E140074u, 0x4DA0C872u, 0x4D2F9070u, 0x4CC0406Eu, 0x4C52C86Cu, 0x4BE7286Au,
+        0x4B7D4069u, 0x4B151867u, 0x4AAE9065u, 0x4A49B064u, 0x49E66062u, 0x4984A061u,
+        0x4924585Fu, 0x48C5885Eu, 0x4868285Cu, 0x480C305Bu, 0x47B1885Au, 0x47583859u,
+        0x47003857u, 0x46A97856u, 0x4653F055u, 0x45FF9854u, 0x45AC7053u, 0x455A7051u,
+        0x45099050u, 0x44B9C84Fu, 0x446B104Eu, 0x441D604Du, 0x43D0C04Cu, 0x4385184Bu,
+        0x433A704Au, 0x42F0B849u, 0x42A7F848u, 0x42602047u, 0x42192847u, 0x41D31846u,
+        0x418DE845u, 0x41498844u, 0x41060043u, 0x40C35042u, 0x40816042u, 0x40404041u,
     };
-    uint64_t c = line[(x >> 27) - 8];
-    uint64_t y = c - (c & 0x7FF) * ((x >> 11) & 0xFFFF);
-    for (int i = 0; i < 2; i++) { /* y (3 - x y^2) / 2 */
-        uint64_t y2 = (y * y) >> 31;
-        uint64_t xy2 = ((uint64_t)x * y2) >> 30;
-        y = (y * (((uint64_t)3 << 31) - xy2)) >> 32;
-    }
-    return (uint32_t)y;
+    uint64_t c = line[(x >> 25) - 32];
+    uint64_t y = c - (c & 0x7FF) * ((x >> 9) & 0xFFFF);
+    uint64_t y2 = (y * y) >> 31; /* one step: y (3 - x y^2) / 2 */
+    uint64_t xy2 = ((uint64_t)x * y2) >> 30;
+    return (uint32_t)((y * (((uint64_t)3 << 31) - xy2)) >> 32);
 }
 
 static void ref_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
