@@ -19,7 +19,8 @@ typedef struct {
     const material_t *m;
 } surface_t;
 
-RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
+/* Inline in find_surface, its one caller. */
+static RT_INLINE void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
     prim_surface_t ps;
     s->point = v3_madd_in_range(ray->origin, h->t, ray->dir); /* a point of the scene */
@@ -29,7 +30,7 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
     s->leaf = h->leaf;
     s->smooth = ps.smooth;
     s->offset = ps.offset;
-    s->entering = v3_dot_in_range(ray->dir, ps.ng) < 0;
+    s->entering = v3_wdot(ray->dir, ps.ng) < 0; /* the sign alone: no rounding */
     s->n_out = s->entering ? ps.ng : v3_neg(ps.ng);
     s->n = s->n_out; /* n = Ng but on a patch */
 #if RT_USE_PATCHES
@@ -57,37 +58,32 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 /* Colour arithmetic, out of line: a few calls per light and bounce, where
  * each inline copy of three rounded products costs ~100 bytes of flash. */
 RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale(c, k); }
-#if RT_USE_SPECULAR
-RT_NOINLINE static colour_t colour_add(colour_t a, colour_t b) { return c3_add(a, b); }
-#endif
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
 #endif
 
 #if RT_USE_SHADOWS
-/* c + I (Kd C (N.L) + spec) Lc: the share of light l, whose shadow ray
- * along ldir is clear, rounded in the model's order. Out of line: its
+/* c + I (Kd C (N.L) + Ks spec) Lc: the share of light l, whose shadow ray
+ * along ldir is clear, from the terms' I Kd C and I Ks. Out of line: its
  * temporaries are not on the stack under scene_occluded. */
-RT_NOINLINE static void add_light(colour_t *c, const colour_t *kdc, const surface_t *s, const ray_t *ray,
-                                  const light_t *l, const vec3_t *ldir, real_t ndl, real_t I)
+RT_NOINLINE static void add_light(colour_t *c, const material_terms_t *t, const surface_t *s, const light_t *l,
+                                  const vec3_t *ldir, real_t ndl)
 {
-    colour_t lit = v3_scale(*kdc, ndl);
-    (void)s, (void)ray, (void)ldir; /* only the specular term looks at them */
+    colour_t lit = v3_scale_in_range(t->ambient, ndl); /* N.L <= 1 */
+    (void)s, (void)ldir; /* only the specular term looks at them */
 #if RT_USE_SPECULAR
-    const material_t *m = s->m;
-    if (m->ks > 0) {
+    if (t->iks > 0) {
         /* Phong's R.V, R = 2 (N.L) N - L and V = -D, is L.M for the
          * mirror direction M = D - 2 (N.D) N the surface already has */
         real_t rv = v3_dot_in_range(*ldir, s->mirror);
-        real_t spec = r_mul_in_range(m->ks, r_pow_unit(rv, m->shine)); /* the power is <= 1 */
-        if (spec != 0) /* else it adds nothing */
-            lit = colour_add(lit, v3(spec, spec, spec));
+        real_t spec = r_mul_in_range(t->iks, r_pow_unit(rv, s->m->shine)); /* the power is <= 1 */
+        lit = c3_add(lit, v3(spec, spec, spec));
     }
 #endif
     if (l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE) /* white: lit as it is */
         lit = v3_mul(lit, l->colour);
-    *c = c3_add(*c, v3_scale_in_range(lit, I)); /* I <= 1/2 */
+    *c = c3_add(*c, lit);
 }
 #endif
 
@@ -113,8 +109,8 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     if (!same) {
         t->material = m;
         t->base = base;
-        t->kdc = colour_scale(base, m->kd);
-        t->ambient = colour_scale(t->kdc, I);
+        t->ambient = colour_scale(colour_scale(base, m->kd), I);
+        t->iks = r_mul_in_range(I, m->ks);
     }
     colour_t c = t->ambient;
 #if RT_USE_SHADOWS
@@ -139,7 +135,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
          * few ulps of |L - O| (ldir's error), without a square root */
         real_t dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
         if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
-            add_light(&c, &t->kdc, s, ray, l, &shadow.dir, ndl, I);
+            add_light(&c, t, s, l, &shadow.dir, ndl);
     }
 #endif
     return c;

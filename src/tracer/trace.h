@@ -10,7 +10,8 @@
 typedef struct {
     const material_t *material; /* whose terms these are; 0: none yet */
     colour_t base;              /* and the colour C they were made of (a texture's at the point) */
-    colour_t kdc, ambient;
+    colour_t ambient;           /* I Kd C: the ambient term, and the diffuse one's but for N.L */
+    real_t iks;                 /* I Ks: the highlight's weight */
 } material_terms_t;
 
 typedef struct {
