@@ -101,7 +101,7 @@ ray_t camera_ray(const camera_t *c, int32_t i, int32_t j)
  * T plane is num / den (den > 0): the largest k whose T offset k s/2 is at
  * most dist num / den (upper) or the smallest at least it, two samples
  * wider; unbounded past 64 or past the searched reach. */
-RT_COLD static int32_t sample_bound(const camera_t *c, real_t dist, real_t num, real_t den, bool upper)
+RT_COLD static int32_t camera_bound(const camera_t *c, real_t dist, real_t num, real_t den, bool upper)
 {
     int32_t unbounded = upper ? INT32_MAX : INT32_MIN;
     if (r_to_wide(r_abs(num)) >= r_wmul(den, R_RATIO(64, 1)))
@@ -145,10 +145,10 @@ RT_COLD void camera_sphere_box(const camera_t *c, vec3_t centre, real_t radius, 
     real_t near = pw - r, far = pw + r;
     if (near < R_RATIO(1, 16) || c->half_span > r_to_wide(R_RATIO(128, 1)))
         return;
-    box[0] = sample_bound(c, dist, pu - r, pu - r >= 0 ? far : near, false);
-    box[1] = sample_bound(c, dist, pu + r, pu + r >= 0 ? near : far, true);
-    box[2] = sample_bound(c, dist, pv - r, pv - r >= 0 ? far : near, false);
-    box[3] = sample_bound(c, dist, pv + r, pv + r >= 0 ? near : far, true);
+    box[0] = camera_bound(c, dist, pu - r, pu - r >= 0 ? far : near, false);
+    box[1] = camera_bound(c, dist, pu + r, pu + r >= 0 ? near : far, true);
+    box[2] = camera_bound(c, dist, pv - r, pv - r >= 0 ? far : near, false);
+    box[3] = camera_bound(c, dist, pv + r, pv + r >= 0 ? near : far, true);
 }
 
 /* Q16.16 value v times 2^k as a scalar: false if out of range. */

@@ -240,9 +240,11 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
     (void)mirrors;
 #if RT_USE_SPECULAR || RT_USE_REFLECTION
-    /* made once for the highlights and the reflection ray */
+    /* made once for the highlights and the reflection ray; D and N are
+     * unit (a sphere's N within 2^-15: sphere_normal), so M is within
+     * 2^-12 of unit before v3_renorm */
     if (mirrors)
-        s.mirror = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s.n), s.n));
+        s.mirror = v3_renorm(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s.n), s.n));
 #endif
     colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
