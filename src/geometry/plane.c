@@ -40,7 +40,14 @@ bool ray_hit_plane(const plane_t *pl, const ray_t *r, real_t tmin, real_t *t)
     real_t t0 = r_div(num, den);
     if (t0 <= tmin || t0 >= *t)
         return false;
-    /* the hit point, exact in the wide type (it may lie beyond the range) */
+    /* Inside the far cube when t0 < far - 1 - max |o_a| (|d_a| <= 1 + 2^-19
+     * and t0 < 2^11): most hits, at no product. Else the hit point, exact
+     * in the wide type (it may lie beyond the range). */
+    real_t omax = r_max(r_max(r_abs(r->origin.x), r_abs(r->origin.y)), r_abs(r->origin.z));
+    if (t0 < PLANE_FAR - R_ONE - omax) {
+        *t = t0;
+        return true;
+    }
     const real_wide_t far = r_to_wide(PLANE_FAR);
     const real_t o[3] = { r->origin.x, r->origin.y, r->origin.z }, d[3] = { r->dir.x, r->dir.y, r->dir.z };
     for (unsigned a = 0; a < 3; a++) {
