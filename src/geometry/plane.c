@@ -6,11 +6,7 @@ const char *plane_init(plane_t *pl, vec3_t point, vec3_t normal, uint16_t materi
     pl->normal = v3_unit(normal);
     pl->offset = v3_dot(pl->normal, point);
     pl->material = material;
-    /* a floor or a wall: N.D and N.O are one component (ray_hit_plane) */
-    pl->axis = PLANE_ANY_AXIS;
-    for (unsigned a = 0; a < 3; a++)
-        if (v3_axis(&pl->normal, a) == R_ONE || v3_axis(&pl->normal, a) == -R_ONE)
-            pl->axis = (uint8_t)a;
+    pl->axis = v3_axis_of(pl->normal); /* a floor or a wall: N.D and N.O are one component */
     return pl->normal.x == 0 && pl->normal.y == 0 && pl->normal.z == 0 ? "plane normal is zero" : 0;
 }
 
@@ -23,7 +19,7 @@ bool ray_hit_plane(const plane_t *pl, const ray_t *r, real_t tmin, real_t *t)
      * division: a ray almost parallel to the plane meets it far beyond
      * the range, and its quotient would overflow */
     real_t den, num;
-    if (pl->axis != PLANE_ANY_AXIS) { /* N = +-1 along the axis: no products */
+    if (pl->axis != V3_ANY_AXIS) { /* N = +-1 along the axis: no products */
         bool up = v3_axis(&pl->normal, pl->axis) > 0;
         den = up ? v3_axis(&r->dir, pl->axis) : -v3_axis(&r->dir, pl->axis);
         num = pl->offset - (up ? v3_axis(&r->origin, pl->axis) : -v3_axis(&r->origin, pl->axis));

@@ -17,9 +17,8 @@
     X(vec3_t, normal, ) /* unit: the side the plane faces */ \
     X(real_t, offset, ) /* normal . p for every point p of the plane */ \
     X(uint16_t, material, ) \
-    X(uint8_t, axis, ) /* the normal is +-1 along this axis, or PLANE_ANY_AXIS */
+    X(uint8_t, axis, ) /* the normal is +-1 along this axis, or V3_ANY_AXIS */
 typedef struct { FIELDS_plane_t(RT_DECLARE_FIELD) } plane_t;
-#define PLANE_ANY_AXIS 3
 
 /* NULL, or why the plane is degenerate. point: any point of it. */
 const char *plane_init(plane_t *pl, vec3_t point, vec3_t normal, uint16_t material);

@@ -52,6 +52,7 @@ typedef struct { FIELDS_texture_t(RT_DECLARE_FIELD) } texture_t;
     X(colour_t, horizon, ) \
     X(colour_t, zenith, ) \
     X(vec3_t, up, ) /* unit */ \
+    X(uint8_t, up_axis, ) /* v3_axis_of(up) */ \
     X(shine_t, exponent, ) \
     X(uint8_t, on, )
 typedef struct { FIELDS_sky_t(RT_DECLARE_FIELD) } sky_t;

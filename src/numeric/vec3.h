@@ -90,5 +90,22 @@ static inline real_t v3_axis(const vec3_t *v, unsigned axis)
 {
     return axis == 0 ? v->x : axis == 1 ? v->y : v->z;
 }
+/* The axis a unit vector lies along (+-1 there), or V3_ANY_AXIS: a plane's
+ * or the sky's dot products with it are then one component. */
+#define V3_ANY_AXIS 3
+static inline uint8_t v3_axis_of(vec3_t u)
+{
+    for (unsigned a = 0; a < 3; a++)
+        if (v3_axis(&u, a) == R_ONE || v3_axis(&u, a) == -R_ONE)
+            return (uint8_t)a;
+    return V3_ANY_AXIS;
+}
+/* u . v for unit u along axis (v3_axis_of), or any u where axis is V3_ANY_AXIS */
+static inline real_t v3_dot_axis(vec3_t u, uint8_t axis, vec3_t v)
+{
+    if (axis == V3_ANY_AXIS)
+        return v3_dot_in_range(u, v);
+    return v3_axis(&u, axis) > 0 ? v3_axis(&v, axis) : -v3_axis(&v, axis);
+}
 
 #endif

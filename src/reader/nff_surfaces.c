@@ -112,6 +112,7 @@ bool rd_sky(reader_t *r)
     if (!shine_from_decimal(d.neg, d.mant, d.exp10, &sky->exponent) || sky->exponent == 0)
         return lex_fail(&r->lx, r->lx.tok_line, "sky: exponent must be above 0 and at most 524287");
     sky->up = v3_unit(up);
+    sky->up_axis = v3_axis_of(sky->up);
     if (sky->up.x == 0 && sky->up.y == 0 && sky->up.z == 0)
         return lex_fail(&r->lx, line, "sky: up direction is zero");
     sky->on = !r->measuring;

@@ -103,7 +103,7 @@ colour_t texture_colour(const texture_t *tx, vec3_t p)
 
 colour_t sky_colour(const sky_t *sky, vec3_t d)
 {
-    real_t up = v3_dot_in_range(d, sky->up);
+    real_t up = v3_dot_axis(sky->up, sky->up_axis, d);
     real_t k = r_pow_unit(R_ONE - r_max(up, 0), sky->exponent); /* in [0, 1] */
     return v3_madd(sky->zenith, k, v3_sub(sky->horizon, sky->zenith));
 }
