@@ -69,7 +69,7 @@ GROUPS = [
       "vertex_before", "is_zero"]),
     ("cone", "ray-cone/cylinder intersection", ["ray_hit_cone", "cylinder_missed", "quotient_below", "refine_root"]),
     ("shading", "the tracer, hit surface and normals, lights, secondary rays",
-     ["trace_ray", "colour_*", "find_surface", "surface_at", "direct_light", "add_light", "reflected", "refracted", "leave", "snell",
+     ["trace_ray", "colour_*", "find_surface", "surface_at", "direct_light", "add_light", "mirror_dir", "reflected", "refracted", "leave", "snell",
       "worth_tracing", "prim_surface", "object_prim_surface", "sphere_normal", "cone_normal",
       "polygon_shading_normal", "shape_normal", "xform_normal"]),
     ("solids", "quadrics, tori, boxes, CSG, object-space rays and transforms",

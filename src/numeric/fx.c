@@ -82,44 +82,36 @@ static inline uint32_t rsqrt_step(uint32_t x, uint32_t y)
     return rsqrt_step_y2(x, y, (uint32_t)(fx_umul64(y, y) >> 31));
 }
 
-/* 2^31 / sqrt(x / 2^30) for x in [2^30, 2^32), within 2^-13 and never
- * above it: a line per 2^25 of x (96 of them; x^-1/2 is convex, so each
+/* 2^31 / sqrt(x / 2^30) for x in [2^30, 2^32), within 2^-11.4 and never
+ * above it: a line per 2^26 of x (48 of them; x^-1/2 is convex, so each
  * is its chord moved down to touch it, its slope rounded steeper). Entry
  * i is the line's value at the start of its interval, whose low 11 bits
- * are the line's drop per unit of x's bits 24..9. One 32-bit product. */
+ * are the line's drop per unit of x's bits 25..10. One 32-bit product. */
 static inline uint32_t rsqrt_line(uint32_t x)
 {
-    static const uint32_t line[96] = {
-        0x7FFD11F5u, 0x7E08F9DFu, 0x7C2B19CAu, 0x7A61D9B7u, 0x78ABC1A5u, 0x77079194u,
-        0x75740985u, 0x73F02976u, 0x727AE168u, 0x7113595Bu, 0x6FB8B94Fu, 0x6E6A4944u,
-        0x6D274939u, 0x6BEF212Fu, 0x6AC13125u, 0x699CF11Cu, 0x6881D913u, 0x676F810Bu,
-        0x66656903u, 0x656328FBu, 0x646868F4u, 0x6374D0EDu, 0x6287F8E7u, 0x61A1A8E1u,
-        0x60C180DBu, 0x5FE748D5u, 0x5F12C0D0u, 0x5E43A0CAu, 0x5D79B8C5u, 0x5CB4C8C1u,
-        0x5BF4A0BCu, 0x5B3910B8u, 0x5A81E8B3u, 0x59CF00AFu, 0x592030ABu, 0x587548A8u,
-        0x57CE28A4u, 0x572AB0A0u, 0x568AC09Du, 0x55EE309Au, 0x5554E897u, 0x54BEC894u,
-        0x542BB091u, 0x539B908Eu, 0x530E508Bu, 0x5283C888u, 0x51FBF086u, 0x5176B083u,
-        0x50F3F881u, 0x5073A87Eu, 0x4FF5B07Cu, 0x4F7A007Au, 0x4F008878u, 0x4E893876u,
-        0x4E140074u, 0x4DA0C872u, 0x4D2F9070u, 0x4CC0406Eu, 0x4C52C86Cu, 0x4BE7286Au,
-        0x4B7D4069u, 0x4B151867u, 0x4AAE9065u, 0x4A49B064u, 0x49E66062u, 0x4984A061u,
-        0x4924585Fu, 0x48C5885Eu, 0x4868285Cu, 0x480C305Bu, 0x47B1885Au, 0x47583859u,
-        0x47003857u, 0x46A97856u, 0x4653F055u, 0x45FF9854u, 0x45AC7053u, 0x455A7051u,
-        0x45099050u, 0x44B9C84Fu, 0x446B104Eu, 0x441D604Du, 0x43D0C04Cu, 0x4385184Bu,
-        0x433A704Au, 0x42F0B849u, 0x42A7F848u, 0x42602047u, 0x42192847u, 0x41D31846u,
-        0x418DE845u, 0x41498844u, 0x41060043u, 0x40C35042u, 0x40816042u, 0x40404041u,
+    static const uint32_t line[48] = {
+        0x7FF4DBD3u, 0x7C23FB80u, 0x78A59338u, 0x756EA2FAu, 0x72761AC3u, 0x6FB47A92u,
+        0x6D237A67u, 0x6ABDC240u, 0x687ECA1Du, 0x6662A1FEu, 0x6465E1E1u, 0x6285B1C7u,
+        0x60BF69AFu, 0x5F10D19Au, 0x5D77F186u, 0x5BF2F973u, 0x5A806162u, 0x591EC953u,
+        0x57CCD944u, 0x56898936u, 0x5553C12Au, 0x542AA11Eu, 0x530D5113u, 0x51FB0909u,
+        0x50F318FFu, 0x4FF4D8F6u, 0x4EFFC0EDu, 0x4E1340E5u, 0x4D2EE0DDu, 0x4C5220D6u,
+        0x4B7CA0CFu, 0x4AADF8C9u, 0x49E5D0C3u, 0x4923D0BDu, 0x4867A8B7u, 0x47B110B2u,
+        0x46FFC0ADu, 0x465380A8u, 0x45AC08A3u, 0x4509289Fu, 0x446AB09Bu, 0x43D06097u,
+        0x433A1893u, 0x42A7A08Fu, 0x4218D88Cu, 0x418D9888u, 0x4105B885u, 0x40811882u,
     };
-    uint32_t c = line[(x >> 25) - 32];
-    return c - (c & 0x7FFu) * ((x >> 9) & 0xFFFFu);
+    uint32_t c = line[(x >> 26) - 16];
+    return c - (c & 0x7FFu) * ((x >> 10) & 0xFFFFu);
 }
 
 /* 1/sqrt(x / 2^30) in Q.31 for x in [2^30, 2^32): the line above and one
- * Newton step (relative error below 2^-25, the step's own rounding
- * included). fx_unit3's bits are these. */
+ * Newton step (relative error below 2^-22, the step's own rounding
+ * included; checked for every x). fx_unit3's bits are these. */
 static uint32_t rsqrt_q31(uint32_t x) { return rsqrt_step(x, rsqrt_line(x)); }
 
 /* 2^31 / sqrt(x / 2^30) for square roots, where only the accuracy
- * counts: the line (within 2^-13), then one Newton step on high words
+ * counts: the line (within 2^-11.4), then one Newton step on high words
  * (the step above with 2^-27 more rounding) and 8 units off: within
- * 2^-25 under 2^31 / sqrt((x + 1) / 2^30) and never above it (checked
+ * 2^-22 under 2^31 / sqrt((x + 1) / 2^30) and never above it (checked
  * for every x). */
 static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
 {
@@ -131,7 +123,7 @@ static inline uint32_t rsqrt_q31_sqrt(uint32_t x)
 }
 
 /* round(sqrt(v)) for 0 <= v < 2^60. With v = u 2^-2k, u in [2^62, 2^64)
- * and k >= 2: g, under sqrt(u) by less than 2^-25 relative, then one
+ * and k >= 2: g, under sqrt(u) by less than 2^-22 relative, then one
  * Newton step g + (u - g^2) / (2 sqrt(u)) on the exact residual, never
  * above sqrt(u) and less than 1.01 under it (checked for every x). So
  * g / 2^k is less than 0.26 under sqrt(v), its floor r is the answer or

@@ -141,6 +141,17 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     return c;
 }
 
+#if RT_USE_SPECULAR || RT_USE_REFLECTION
+/* D mirrored about N, made once for the highlights and the reflection
+ * ray. D and N are unit (a sphere's N within 2^-15: sphere_normal), so M
+ * is within 2^-12 of unit before v3_renorm. Out of line: its temporaries
+ * stay out of the recursive trace_ray frame. */
+RT_NOINLINE static vec3_t mirror_dir(vec3_t d, vec3_t n)
+{
+    return v3_renorm(v3_madd_in_range(d, -2 * v3_dot_in_range(d, n), n));
+}
+#endif
+
 /* Whether a child ray of this weight is worth tracing. */
 static inline bool worth_tracing(const tracer_t *tr, real_t weight)
 {
@@ -240,11 +251,8 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
     (void)mirrors;
 #if RT_USE_SPECULAR || RT_USE_REFLECTION
-    /* made once for the highlights and the reflection ray; D and N are
-     * unit (a sphere's N within 2^-15: sphere_normal), so M is within
-     * 2^-12 of unit before v3_renorm */
     if (mirrors)
-        s.mirror = v3_renorm(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s.n), s.n));
+        s.mirror = mirror_dir(ray->dir, s.n);
 #endif
     colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
