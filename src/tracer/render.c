@@ -120,6 +120,7 @@ static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
 struct rt_worker {
     rt_render_ctx_t ctx; /* rt_render's */
     camera_t cam;
+    camera_row_t row; /* the row of eye rays being made: off the stack */
     tracer_t tr;
     prim_ref_t last_blocker[RT_MAX_LIGHTS];
     material_terms_t terms[RT_MAX_DEPTH];
@@ -147,11 +148,10 @@ static RT_INLINE void eye_sample(struct rt_worker *wk, int32_t k, int32_t m)
 /* One row of SPD corner samples: corners x0 .. x0 + w of grid row j. */
 static void corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, colour_t *row)
 {
-    camera_row_t r;
-    camera_row(&wk->cam, x0, j, &r);
+    camera_row(&wk->cam, x0, j, &wk->row);
     for (int32_t i = 0; i <= w; i++) {
-        eye_sample(wk, r.k, r.m);
-        ray_t ray = camera_next(&wk->cam, &r);
+        eye_sample(wk, wk->row.k, wk->row.m);
+        ray_t ray = camera_next(&wk->cam, &wk->row);
         wk->scratch.stats.eye_rays++;
         row[i] = trace_ray(&wk->tr, &ray, 1, R_ONE);
     }
@@ -335,11 +335,10 @@ static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 {
     struct rt_worker *wk = ctx->worker;
-    camera_row_t row;
-    camera_row(&wk->cam, ctx->x0, y, &row);
+    camera_row(&wk->cam, ctx->x0, y, &wk->row);
     for (uint16_t x = 0; x < ctx->w; x++) {
-        eye_sample(wk, row.k, row.m);
-        ray_t ray = camera_next(&wk->cam, &row);
+        eye_sample(wk, wk->row.k, wk->row.m);
+        ray_t ray = camera_next(&wk->cam, &wk->row);
         wk->scratch.stats.eye_rays++;
         put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE), dither_at(ctx, ctx->x0 + x, y));
     }

@@ -8,19 +8,27 @@
 typedef struct {
     vec3_t point;
     vec3_t n;        /* shading normal, facing the incoming ray */
-    vec3_t n_out;    /* geometric normal, facing the incoming ray */
+#if RT_USE_PATCHES
+    vec3_t n_out;    /* geometric normal, facing the incoming ray (N_OUT) */
+#endif
     bool entering;   /* D . Ng < 0 */
     bool smooth;     /* a patch: n and n_out may disagree */
     prim_ref_t ref;  /* the primitive, PRIM_NONE for a solid */
     bool far_root;   /* a ray going through meets it again only at its far root */
     uint32_t leaf;   /* its BVH leaf (ray_t) */
-    vec3_t mirror;   /* the incoming ray mirrored about n, unit, where the surface mirrors (trace_ray) */
     real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
 } surface_t;
+/* The geometric normal: n itself but on a patch (one vector less in the
+ * recursive frame where the build has no patches). */
+#if RT_USE_PATCHES
+#define N_OUT(s) ((s)->n_out)
+#else
+#define N_OUT(s) ((s)->n)
+#endif
 
-/* Inline in find_surface, its one caller. */
-static RT_INLINE void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
+/* Out of line: its temporaries are not on the stack under the search. */
+RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
     prim_surface_t ps;
     s->point = v3_madd_in_range(ray->origin, h->t, ray->dir); /* a point of the scene */
@@ -31,9 +39,9 @@ static RT_INLINE void surface_at(const scene_t *sc, const hit_t *h, const ray_t 
     s->smooth = ps.smooth;
     s->offset = ps.offset;
     s->entering = v3_wdot(ray->dir, ps.ng) < 0; /* the sign alone: no rounding */
-    s->n_out = s->entering ? ps.ng : v3_neg(ps.ng);
-    s->n = s->n_out; /* n = Ng but on a patch */
+    s->n = s->entering ? ps.ng : v3_neg(ps.ng); /* n = Ng but on a patch */
 #if RT_USE_PATCHES
+    s->n_out = s->n;
     if (ps.smooth)
         s->n = v3_dot_in_range(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
 #endif
@@ -49,7 +57,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 {
     out->origin = s->point;
     if (s->offset != 0)
-        out->origin = v3_madd_in_range(s->point, through ? -s->offset : s->offset, s->n_out);
+        out->origin = v3_madd_in_range(s->point, through ? -s->offset : s->offset, N_OUT(s));
     out->from = s->ref;
     out->from_far = s->far_root && through == s->entering;
     out->leaf = s->leaf;
@@ -76,7 +84,7 @@ RT_NOINLINE static void add_light(colour_t *c, const material_terms_t *t, const 
     if (t->iks > 0) {
         /* Phong's R.V, R = 2 (N.L) N - L and V = -D, is L.M for the
          * mirror direction M = D - 2 (N.D) N the surface already has */
-        real_t rv = v3_dot_in_range(*ldir, s->mirror);
+        real_t rv = v3_dot_in_range(*ldir, t->mirror);
         real_t spec = r_mul_in_range(t->iks, r_pow_unit(rv, s->m->shine)); /* the power is <= 1 */
         lit = c3_add(lit, v3(spec, spec, spec));
     }
@@ -127,7 +135,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
 #if RT_USE_PATCHES
         /* the patch policy of docs/shading-model.md: a light below the
          * geometric surface is blocked by the patch itself (at t = 0) */
-        if (s->smooth && v3_dot_in_range(s->n_out, ldir) <= 0)
+        if (s->smooth && v3_dot_in_range(N_OUT(s), ldir) <= 0)
             continue;
 #endif
         shadow.dir = ldir;
@@ -175,14 +183,14 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 /* The mirror ray leaving s. On a patch, a mirror direction about the
  * shading normal that would go into the geometric surface is taken about
  * the geometric normal instead (the patch policy). */
-RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, ray_t *out)
+RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, const vec3_t *mirror, ray_t *out)
 {
     (void)ray; /* only the patch policy looks at it */
     leave(s, false, out);
-    out->dir = s->mirror;
+    out->dir = *mirror;
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) <= 0)
-        out->dir = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, s->n_out), s->n_out));
+    if (s->smooth && v3_dot_in_range(out->dir, N_OUT(s)) <= 0)
+        out->dir = v3_unit(v3_madd_in_range(ray->dir, -2 * v3_dot_in_range(ray->dir, N_OUT(s)), N_OUT(s)));
 #endif
 }
 #endif
@@ -209,8 +217,8 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
     if (!snell(ray->dir, s->n, cos_i, eta, &out->dir))
         return false;
 #if RT_USE_PATCHES
-    if (s->smooth && v3_dot_in_range(out->dir, s->n_out) >= 0 &&
-        !snell(ray->dir, s->n_out, -v3_dot_in_range(ray->dir, s->n_out), eta, &out->dir))
+    if (s->smooth && v3_dot_in_range(out->dir, N_OUT(s)) >= 0 &&
+        !snell(ray->dir, N_OUT(s), -v3_dot_in_range(ray->dir, N_OUT(s)), eta, &out->dir))
         return false;
 #endif
     leave(s, true, out);
@@ -251,8 +259,8 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
     (void)mirrors;
 #if RT_USE_SPECULAR || RT_USE_REFLECTION
-    if (mirrors)
-        s.mirror = mirror_dir(ray->dir, s.n);
+    if (mirrors) /* kept per depth, off the recursive frame */
+        tr->terms[depth - 1].mirror = mirror_dir(ray->dir, s.n);
 #endif
     colour_t c = direct_light(tr, &s, ray, depth);
     if (depth >= tr->max_depth)
@@ -262,7 +270,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     (void)weight, (void)next;
 #if RT_USE_REFLECTION
     if (mirrors && worth_tracing(tr, r_mul(weight, m->ks))) {
-        reflected(ray, &s, &next);
+        reflected(ray, &s, &tr->terms[depth - 1].mirror, &next);
         tr->scratch->stats.reflect_rays++;
         colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
