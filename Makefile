@@ -133,14 +133,14 @@ stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
 # The fixed-point unit test links the fixed scalar layer alone.
-build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h tests/testlib.h Makefile
+build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
 
 # The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
 # binary search.
-build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h tests/testlib.h Makefile
+build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
 	    tests/test_fx.c src/numeric/fx.c -lm

@@ -15,6 +15,7 @@
  * the macro, and the reference products below are the plain C product. */
 #define FX_MUL64_PARTIAL 1
 #include "numeric/fx.h"
+#include "numeric/fx_rsqrt_line.h"
 #include "numeric/real.h"
 #include "testlib.h"
 
@@ -336,16 +337,7 @@ static void test_sqrt_exact(void)
  * made with (tests/image-tests.sh), so a change to them shows here. */
 static uint32_t ref_rsqrt_q31(uint32_t x)
 {
-    static const uint32_t line[48] = { /* per 2^26 of x: the value at its start, the drop in the low 11 bits */
-        0x7FF4DBD3u, 0x7C23FB80u, 0x78A59338u, 0x756EA2FAu, 0x72761AC3u, 0x6FB47A92u,
-        0x6D237A67u, 0x6ABDC240u, 0x687ECA1Du, 0x6662A1FEu, 0x6465E1E1u, 0x6285B1C7u,
-        0x60BF69AFu, 0x5F10D19Au, 0x5D77F186u, 0x5BF2F973u, 0x5A806162u, 0x591EC953u,
-        0x57CCD944u, 0x56898936u, 0x5553C12Au, 0x542AA11Eu, 0x530D5113u, 0x51FB0909u,
-        0x50F318FFu, 0x4FF4D8F6u, 0x4EFFC0EDu, 0x4E1340E5u, 0x4D2EE0DDu, 0x4C5220D6u,
-        0x4B7CA0CFu, 0x4AADF8C9u, 0x49E5D0C3u, 0x4923D0BDu, 0x4867A8B7u, 0x47B110B2u,
-        0x46FFC0ADu, 0x465380A8u, 0x45AC08A3u, 0x4509289Fu, 0x446AB09Bu, 0x43D06097u,
-        0x433A1893u, 0x42A7A08Fu, 0x4218D88Cu, 0x418D9888u, 0x4105B885u, 0x40811882u,
-    };
+    static const uint32_t line[FX_RSQRT_LINES] = FX_RSQRT_LINE_INIT; /* fx.c's seed; test_rsqrt_line checks it */
     uint64_t c = line[(x >> 26) - 16];
     uint64_t y = c - (c & 0x7FF) * ((x >> 10) & 0xFFFF);
     uint64_t y2 = (y * y) >> 31; /* one step: y (3 - x y^2) / 2 */
@@ -377,6 +369,28 @@ static void ref_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
     int shift = 62 - s / 2 - FX_FRAC_BITS;
     for (int i = 0; i < 3; i++)
         out[i] = (fx_t)((v[i] * r + ((int64_t)1 << (shift - 1))) >> shift);
+}
+
+/* The seed lines of fx.c's reciprocal square root, against the function
+ * they stand for: under it, within 2^-11.3, at every 997th x and at both
+ * ends of each line's interval. */
+static void test_rsqrt_line(void)
+{
+    static const uint32_t line[FX_RSQRT_LINES] = FX_RSQRT_LINE_INIT;
+    long above = 0;
+    double worst = 0;
+    for (uint64_t x = (uint64_t)1 << 30; x < (uint64_t)1 << 32;) {
+        uint32_t c = line[(x >> 26) - 16];
+        double y = (double)(c - (c & 0x7FFu) * ((x >> 10) & 0xFFFFu));
+        double f = 2147483648.0 / sqrt((double)x / 1073741824.0);
+        above += y > f;
+        worst = (f - y) / f > worst ? (f - y) / f : worst;
+        /* the next sample, or the last x of this interval, or the first of the next */
+        uint64_t end = (x | 0x3FFFFFFu);
+        x = (x == end) ? x + 1 : (x + 997 > end ? end : x + 997);
+    }
+    CHECK(above == 0 && worst < 0x1.ap-12, "rsqrt seed lines: %ld values above the function, worst %.2e below "
+          "(bound 2^-11.3 = 4.0e-4)", above, worst);
 }
 
 static void test_unit3(void)
@@ -606,6 +620,7 @@ int main(void)
     test_sqrt();
     test_sqrt_exact();
     test_unit3();
+    test_rsqrt_line();
     test_pow();
     test_tan();
     test_decimal();
