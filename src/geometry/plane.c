@@ -20,9 +20,8 @@ bool ray_hit_plane(const plane_t *pl, const ray_t *r, real_t tmin, real_t *t)
      * the range, and its quotient would overflow */
     real_t den, num;
     if (pl->axis != V3_ANY_AXIS) { /* N = +-1 along the axis: no products */
-        bool up = v3_axis(&pl->normal, pl->axis) > 0;
-        den = up ? v3_axis(&r->dir, pl->axis) : -v3_axis(&r->dir, pl->axis);
-        num = pl->offset - (up ? v3_axis(&r->origin, pl->axis) : -v3_axis(&r->origin, pl->axis));
+        den = v3_dot_along(&pl->normal, pl->axis, &r->dir);
+        num = pl->offset - v3_dot_along(&pl->normal, pl->axis, &r->origin);
     } else {
         den = v3_dot_in_range(pl->normal, r->dir); /* unit vectors */
         num = pl->offset - v3_dot_in_range(pl->normal, r->origin); /* |origin| < 2^10 */

@@ -32,11 +32,9 @@ typedef struct {
     real_slab_t entry;
 } bvh_stack_t;
 
-/* Every eye ray lies on a line through the eye: per sphere of a flat
- * scene (scene_hit.c), its centre from the eye and the least squared
- * length of that line's closest approach to the centre that still
- * misses the sphere (|l|^2 - r^2, less a margin for rounding), so an eye
- * ray rejects it with one dot product. */
+/* Per sphere of a flat scene (scene_hit.c): the box of samples whose
+ * eye rays may meet it, made once a frame, so an eye ray outside the box
+ * skips the sphere with four compares. */
 typedef struct {
     int32_t box[4]; /* the eye samples that may meet it (camera_sphere_box) */
 } eye_sphere_t;

@@ -66,21 +66,16 @@ static int64_t sdiv64(int64_t n, int64_t d)
 }
 
 /* One Newton step y' = y (3 - x y^2) / 2 towards 2^31 / sqrt(x / 2^30),
- * for x in [2^30, 2^32) and y within 3.2% of it, never above 2^31, given
- * y2 = y^2 / 2^31. Every operand fits 32 bits (x y^2 / 2^30 is within 7%
- * of 2^31), so each product is one 32x32->64 multiply, and the bits are
- * those of the same step on 64-bit operands: y (2^32 + e) >> 32 =
- * y + (y e >> 32). */
-static inline uint32_t rsqrt_step_y2(uint32_t x, uint32_t y, uint32_t y2)
+ * for x in [2^30, 2^32) and y within 3.2% of it, never above 2^31. Every
+ * operand fits 32 bits (x y^2 / 2^30 is within 7% of 2^31), so each
+ * product is one 32x32->64 multiply, and the bits are those of the same
+ * step on 64-bit operands: y (2^32 + e) >> 32 = y + (y e >> 32). */
+static inline uint32_t rsqrt_step(uint32_t x, uint32_t y)
 {
+    uint32_t y2 = (uint32_t)(fx_umul64(y, y) >> 31);   /* y^2 / 2^31 */
     uint32_t xy2 = (uint32_t)(fx_umul64(x, y2) >> 30); /* ~2^31 */
     int32_t e = (int32_t)(0x80000000u - xy2);          /* 2^31 - x y^2 */
     return y + (uint32_t)(int32_t)(fx_mul64((int32_t)y, e) >> 32);
-}
-
-static inline uint32_t rsqrt_step(uint32_t x, uint32_t y)
-{
-    return rsqrt_step_y2(x, y, (uint32_t)(fx_umul64(y, y) >> 31));
 }
 
 /* 2^31 / sqrt(x / 2^30) for x in [2^30, 2^32), within 2^-11.4 and never

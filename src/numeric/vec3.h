@@ -100,12 +100,15 @@ static inline uint8_t v3_axis_of(vec3_t u)
             return (uint8_t)a;
     return V3_ANY_AXIS;
 }
+/* u . v for u = +-1 along axis (not V3_ANY_AXIS): v's component, signed */
+static inline real_t v3_dot_along(const vec3_t *u, uint8_t axis, const vec3_t *v)
+{
+    return v3_axis(u, axis) > 0 ? v3_axis(v, axis) : -v3_axis(v, axis);
+}
 /* u . v for unit u along axis (v3_axis_of), or any u where axis is V3_ANY_AXIS */
 static inline real_t v3_dot_axis(vec3_t u, uint8_t axis, vec3_t v)
 {
-    if (axis == V3_ANY_AXIS)
-        return v3_dot_in_range(u, v);
-    return v3_axis(&u, axis) > 0 ? v3_axis(&v, axis) : -v3_axis(&v, axis);
+    return axis == V3_ANY_AXIS ? v3_dot_in_range(u, v) : v3_dot_along(&u, axis, &v);
 }
 
 #endif
