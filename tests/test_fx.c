@@ -610,6 +610,41 @@ static void test_mul64(void)
           (long)FX_ONE + 5);
 }
 
+/* fx_mul_weight (split into 16-bit halves here, FX_MUL64_PARTIAL) against
+ * the long product of the same rounded weight, and within |c| 2^-16 + 1/2
+ * unit of the exact c w; fx_mul_small within 1/2 + 4 |e| units of a e. */
+static void test_weight(void)
+{
+    long bad_bits = 0, bad_err = 0, n = 0;
+    double worst = 0;
+    for (int i = 0; i < 400000; i++) {
+        fx_t c = i < 8 ? (i & 1 ? FX_MAX : FX_MIN + (i >> 1)) : i & 1 ? (fx_t)rnd_bits(31, true) : rnd_fx(-4, 4);
+        fx_t w = i % 7 == 0 ? FX_ONE + (i % 5) : i % 11 == 0 ? 0 : rnd_fx(0, 1);
+        fx_t got = fx_mul_weight(c, w);
+        int32_t w15 = (int32_t)((w + ((fx_t)1 << (FX_FRAC_BITS - 16))) >> (FX_FRAC_BITS - 15));
+        if (w15 > 32768)
+            w15 = 32768;
+        bad_bits += got != (fx_t)(((int64_t)c * w15 + (1 << 14)) >> 15);
+        double exact = (double)c * ((w > FX_ONE ? FX_ONE : w) / (double)FX_ONE);
+        double err = fabs(got - exact), bound = fabs((double)c) / 65536 + 0.5;
+        bad_err += err > bound;
+        worst = fmax(worst, err / bound);
+        n++;
+    }
+    CHECK(bad_bits == 0, "fx_mul_weight's 16-bit halves: %ld of %ld cases differ from the long product", bad_bits, n);
+    CHECK(bad_err == 0, "fx_mul_weight within |c| 2^-16 + 1/2 unit of c w: %ld of %ld over (worst %.3f of the bound)",
+          bad_err, n, worst);
+    long bad = 0;
+    n = 0;
+    for (int i = 0; i < 400000; i++) {
+        fx_t a = rnd_fx(-2, 2), e = rnd_fx(-1.0 / 1024, 1.0 / 1024);
+        double err = fabs(fx_mul_small(a, e) - (double)a * e / FX_ONE);
+        bad += err > 0.5 + 4 * fabs((double)e) / FX_ONE;
+        n++;
+    }
+    CHECK(bad == 0, "fx_mul_small within 1/2 + 4 |e| units of a e: %ld of %ld over", bad, n);
+}
+
 int main(void)
 {
     printf("test_fx (Q%d.%d)\n", 31 - FX_FRAC_BITS, FX_FRAC_BITS);
@@ -625,5 +660,6 @@ int main(void)
     test_tan();
     test_decimal();
     test_mul64();
+    test_weight();
     return tl_summary("test_fx");
 }

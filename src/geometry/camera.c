@@ -57,21 +57,33 @@ void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
     row->row[1] = r_to_wide(c->at.y) - r_wmul(b, c->v.y);
     row->row[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
     row->k = 2 * i - c->cx;
-    row->a = c->half_span * row->k;
+#if RT_BACKEND_FIXED
+    /* the fixed build walks T along the row in the wide format: a u and
+     * its step each rounded once to 2^-2F, their sum good to 2^-2F a
+     * sample (under 2^-(F+8) across the widest row), for three additions
+     * a sample instead of three 64-bit products */
+    real_wide_t a = c->half_span * row->k, step = 2 * c->half_span;
+    const real_t u[3] = { c->u.x, c->u.y, c->u.z };
+    for (int n = 0; n < 3; n++) {
+        row->t[n] = row->row[n] + r_wmul_real(a, u[n]);
+        row->dt[n] = r_wmul_real(step, u[n]);
+    }
+#endif
 }
 
 ray_t camera_next(const camera_t *c, camera_row_t *row)
 {
 #if RT_BACKEND_FIXED
-    real_t a = r_from_wide_in_range(row->a);
-    row->a += 2 * c->half_span; /* exact: the next product, without a 64-bit multiply */
+    vec3_t t = v3(r_from_wide_in_range(row->t[0]), r_from_wide_in_range(row->t[1]), r_from_wide_in_range(row->t[2]));
+    for (int n = 0; n < 3; n++)
+        row->t[n] += row->dt[n];
 #else
     real_t a = r_from_wide_in_range(c->half_span * row->k);
-#endif
-    row->k += 2;
     vec3_t t = v3(r_from_wide_in_range(row->row[0] + r_wmul(a, c->u.x)),
                   r_from_wide_in_range(row->row[1] + r_wmul(a, c->u.y)),
                   r_from_wide_in_range(row->row[2] + r_wmul(a, c->u.z)));
+#endif
+    row->k += 2;
     vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
     r.dir = v3_unit(to_t);

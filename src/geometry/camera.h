@@ -50,7 +50,9 @@ void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max);
  * next column's offset a (its 2i - cx half spans). */
 typedef struct {
     real_wide_t row[3];
-    real_wide_t a; /* the fixed build steps it, the same integers as the products */
+#if RT_BACKEND_FIXED
+    real_wide_t t[3], dt[3]; /* the next sample's T, and the step to the one after (wide) */
+#endif
     int32_t k;     /* the next sample's 2i - cx */
     int32_t m;     /* the row's 2j - cy */
 } camera_row_t;

@@ -318,6 +318,46 @@ static inline fx_t fx_mul(fx_t a, fx_t b)
 }
 
 static inline fx_wide_t fx_wmul(fx_t a, fx_t b) { return fx_mul64(a, b); }
+/* a e for |a| <= 2 and a small |e| <= 2^-10 (a correction term, such
+ * as a Newton step's): one 32-bit product of a / 4 and e, whose product
+ * stays under 2^(2F-11), within half a unit plus 4 |e| units of a e. e is
+ * held to +-2^-10, so no input overflows. */
+static inline fx_t fx_mul_small(fx_t a, fx_t e)
+{
+#if FX_FRAC_BITS >= 12
+    const fx_t lim = (fx_t)1 << (FX_FRAC_BITS - 10);
+    e = e > lim ? lim : e < -lim ? -lim : e;
+    return ((a >> 2) * e + ((fx_t)1 << (FX_FRAC_BITS - 3))) >> (FX_FRAC_BITS - 2);
+#else /* 2^-10 is a few units: the plain product */
+    return fx_mul(a, e);
+#endif
+}
+
+/* c w for a weight 0 <= w <= 1 (a cosine, a reflectance, a blend factor)
+ * in two 32-bit products, no 64-bit one (on ARMv6-M a third of fx_mul's
+ * instructions): w rounded to Q.15, c split into its signed high and
+ * unsigned low 16 bits, c w15 / 2^15 = 2 ch w15 + cl w15 / 2^15, rounded
+ * once. Within |c| 2^-16 + 1/2 unit of c w. No saturation test: with w15
+ * held to 2^15 (a cosine a few units over 1 still counts as 1), |2 ch
+ * w15| <= 2^31 - 2^16 and the low part adds under 2^16. Cores with a
+ * long multiply take the same bits from it. */
+static inline fx_t fx_mul_weight(fx_t c, fx_t w)
+{
+#if FX_FRAC_BITS > 15
+    int32_t w15 = (w + ((fx_t)1 << (FX_FRAC_BITS - 16))) >> (FX_FRAC_BITS - 15);
+#else
+    int32_t w15 = w * ((fx_t)1 << (15 - FX_FRAC_BITS));
+#endif
+    w15 = w15 < ((int32_t)1 << 15) ? w15 : (int32_t)1 << 15;
+#if FX_MUL64_PARTIAL
+    int32_t ch = c >> 16;
+    uint32_t cl = (uint32_t)c & 0xFFFFu;
+    return 2 * ch * w15 + (int32_t)((cl * (uint32_t)w15 + (1u << 14)) >> 15);
+#else /* the same bits from one long product */
+    return (fx_t)(((int64_t)c * w15 + (1 << 14)) >> 15);
+#endif
+}
+
 
 static inline fx_t fx_from_wide(fx_wide_t w) { return fx_sat64(fx_round_shift(w, FX_FRAC_BITS)); }
 

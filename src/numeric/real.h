@@ -54,6 +54,8 @@ typedef real_t shine_t;
 static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_in_range(real_t a, real_t b) { return a * b; }
+static inline real_t r_mul_weight(real_t c, real_t w) { return c * w; }
+static inline real_t r_mul_small(real_t a, real_t e) { return a * e; }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
 static inline real_t r_recip(real_t b) { return R_ONE / b; }
 /* BVH slab distances (scene_hit.c): plain products here; see the fixed
@@ -180,6 +182,10 @@ static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }
  * test, so the same bits in 4 to 6 fewer instructions. */
 static inline real_t r_from_wide_in_range(real_wide_t w) { return (fx_t)fx_round_shift(w, FX_FRAC_BITS); }
 static inline real_t r_mul_in_range(real_t a, real_t b) { return r_from_wide_in_range(fx_mul64(a, b)); }
+/* c w for a weight w in [0, 1]: within |c| 2^-16 of it (fx_mul_weight) */
+static inline real_t r_mul_weight(real_t c, real_t w) { return fx_mul_weight(c, w); }
+/* a e for |a| <= 2 and |e| <= 2^-10 (a correction): fx_mul_small */
+static inline real_t r_mul_small(real_t a, real_t e) { return fx_mul_small(a, e); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the

@@ -52,6 +52,11 @@ static inline vec3_t v3_scale_in_range(vec3_t a, real_t s)
 {
     return v3(r_mul_in_range(a.x, s), r_mul_in_range(a.y, s), r_mul_in_range(a.z, s));
 }
+/* a colour times a weight w in [0, 1] (r_mul_weight) */
+static inline colour_t c3_scale_weight(colour_t c, real_t w)
+{
+    return v3(r_mul_weight(c.x, w), r_mul_weight(c.y, w), r_mul_weight(c.z, w));
+}
 static inline vec3_t v3_madd_in_range(vec3_t a, real_t s, vec3_t b)
 {
     return v3(a.x + r_mul_in_range(s, b.x), a.y + r_mul_in_range(s, b.y), a.z + r_mul_in_range(s, b.z));
@@ -69,8 +74,8 @@ static inline vec3_t v3_unit(vec3_t a)
  * rounding, for six products instead of a square root and a division. */
 static inline vec3_t v3_renorm(vec3_t a)
 {
-    real_t k = R_RATIO(3, 2) - r_from_wide_in_range(v3_wdot(a, a)) / 2; /* |a| <= 2 */
-    return v3(r_mul_in_range(a.x, k), r_mul_in_range(a.y, k), r_mul_in_range(a.z, k));
+    real_t e = (R_ONE - r_from_wide_in_range(v3_wdot(a, a))) / 2; /* k - 1, |a| <= 2 */
+    return v3(a.x + r_mul_small(a.x, e), a.y + r_mul_small(a.y, e), a.z + r_mul_small(a.z, e));
 }
 /* unit vector along a x b, from the exact (wide) cross product */
 static inline vec3_t v3_unit_cross(vec3_t a, vec3_t b)

@@ -68,7 +68,10 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale(c, k); }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated */
-RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, v3_scale(b, k)); }
+RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
+{
+    return c3_add(a, k >= 0 && k <= R_ONE ? c3_scale_weight(b, k) : v3_scale(b, k));
+}
 #endif
 
 #if RT_USE_SHADOWS
@@ -78,14 +81,14 @@ RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) 
 RT_NOINLINE static void add_light(colour_t *c, const material_terms_t *t, const surface_t *s, const light_t *l,
                                   const vec3_t *ldir, real_t ndl)
 {
-    colour_t lit = v3_scale_in_range(t->ambient, ndl); /* N.L <= 1 */
+    colour_t lit = c3_scale_weight(t->ambient, ndl); /* 0 < N.L <= 1 */
     (void)s, (void)ldir; /* only the specular term looks at them */
 #if RT_USE_SPECULAR
     if (t->iks > 0) {
         /* Phong's R.V, R = 2 (N.L) N - L and V = -D, is L.M for the
          * mirror direction M = D - 2 (N.D) N the surface already has */
         real_t rv = v3_dot_in_range(*ldir, t->mirror);
-        real_t spec = r_mul_in_range(t->iks, r_pow_unit(rv, s->m->shine)); /* the power is <= 1 */
+        real_t spec = r_mul_weight(t->iks, r_pow_unit(rv, s->m->shine)); /* the power is in [0, 1] */
         lit = c3_add(lit, v3(spec, spec, spec));
     }
 #endif
