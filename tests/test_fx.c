@@ -429,6 +429,29 @@ static void test_unit3(void)
     }
     CHECK(bad == 0, "fx_unit3: %ld of %ld random vectors (scales 2^0..2^62) differ from the plain 64-bit "
           "formulation", bad, n);
+
+    /* fx_unit3_narrow_len: the unit of fx_unit3_narrow, the length within
+     * 2^-21 relative and a unit (saturated past FX_MAX) */
+    bad = n = 0;
+    long bad_len = 0;
+    double worst_len = 0;
+    for (long i = 0; i < 1000000; i++) {
+        int bits = 1 + (int)(tl_rand() % 31);
+        fx_t w[3];
+        for (int k = 0; k < 3; k++)
+            w[k] = (fx_t)rnd_bits(i & 1 ? bits : 31, true);
+        fx_t u[3], r[3], len;
+        fx_unit3_narrow_len(w[0], w[1], w[2], u, &len);
+        fx_unit3_narrow(w[0], w[1], w[2], r);
+        bad += u[0] != r[0] || u[1] != r[1] || u[2] != r[2];
+        double l = sqrt((double)w[0] * w[0] + (double)w[1] * w[1] + (double)w[2] * w[2]);
+        double want = l > FX_MAX ? FX_MAX : l, e = fabs(len - want);
+        bad_len += e > 1 + want * pow(2, -21);
+        worst_len = fmax(worst_len, e / (1 + want * pow(2, -21)));
+        n++;
+    }
+    CHECK(bad == 0 && bad_len == 0, "fx_unit3_narrow_len: %ld of %ld units differ from fx_unit3_narrow, %ld lengths "
+          "beyond 2^-21 relative and a unit (worst %.2f of that)", bad, n, bad_len, worst_len);
 }
 
 static void test_pow(void)
@@ -643,6 +666,29 @@ static void test_weight(void)
         n++;
     }
     CHECK(bad == 0, "fx_mul_small within 1/2 + 4 |e| units of a e: %ld of %ld over", bad, n);
+    /* random pairs, and pairs made near perpendicular (b less its part along a) */
+    bad = n = 0;
+    long near = 0;
+    for (int i = 0; i < 400000; i++) {
+        fx_t a[3], b[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = rnd_fx(-1.15, 1.15);
+            b[k] = rnd_fx(-1.15, 1.15);
+        }
+        if (i & 1) {
+            double ab = 0, aa = 0;
+            for (int k = 0; k < 3; k++)
+                ab += d(a[k]) * d(b[k]), aa += d(a[k]) * d(a[k]);
+            for (int k = 0; k < 3; k++)
+                b[k] -= (fx_t)llround(ab / aa * a[k] * (i % 3 ? 1 : 1 - 1e-4));
+        }
+        int64_t v = (int64_t)a[0] * b[0] + (int64_t)a[1] * b[1] + (int64_t)a[2] * b[2];
+        bad += fx_dot3_negative(a[0], a[1], a[2], b[0], b[1], b[2]) != (v < 0);
+        near += llabs(v) < ((int64_t)1 << (2 * FX_FRAC_BITS - 9));
+        n++;
+    }
+    CHECK(bad == 0 && near > n / 4, "fx_dot3_negative (the 32-bit filter) is the exact sign's: %ld of %ld differ (%ld near "
+          "perpendicular)", bad, n, near);
 }
 
 int main(void)

@@ -86,12 +86,13 @@ ray_t camera_next(const camera_t *c, camera_row_t *row)
     row->k += 2;
     vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
-    r.dir = v3_unit(to_t);
+    real_t dist;
+    r.dir = v3_unit_len(to_t, &dist);
     /* back from T along the rounded direction to `start` from the eye
-     * (|to_t| as to_t . dir: an error along the ray moves nothing). The
+     * (an error in |to_t| moves the origin along the ray: nothing). The
      * step is inside the range: |to_t| near 2048 needs the eye far out,
      * and then `start` is almost as long. */
-    r.origin = v3_madd_in_range(t, c->start - v3_dot(to_t, r.dir), r.dir);
+    r.origin = v3_madd_in_range(t, c->start - dist, r.dir);
     r.from = PRIM_NONE;
     r.from_far = false;
     r.leaf = RT_NO_LEAF;

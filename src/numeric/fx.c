@@ -419,8 +419,9 @@ static inline int32_t shr_to32(int64_t v, int n)
 }
 
 /* v / |v| for v brought to 28 bits in its largest component (the
- * squared length then lies in [2^54, 2^58) and each v y fits 64 bits) */
-static void unit3_scaled(int32_t vx, int32_t vy, int32_t vz, fx_t out[3])
+ * squared length then lies in [2^54, 2^58) and each v y fits 64 bits);
+ * returns 4 |v| (below 2^31), within 2^-21 relative and a unit */
+static uint32_t unit3_scaled(int32_t vx, int32_t vy, int32_t vz, fx_t out[3])
 {
     uint64_t len2 = (uint64_t)(fx_mul64(vx, vx) + fx_mul64(vy, vy) + fx_mul64(vz, vz));
     /* len2 = (xn / 2^30) 2^(62 - s), s even: 6 or 8 (its high word is in
@@ -440,6 +441,10 @@ static void unit3_scaled(int32_t vx, int32_t vy, int32_t vz, fx_t out[3])
     out[0] = ((int32_t)(fx_mul64(vx, r) >> 32) + half) >> shift;
     out[1] = ((int32_t)(fx_mul64(vy, r) >> 32) + half) >> shift;
     out[2] = ((int32_t)(fx_mul64(vz, r) >> 32) + half) >> shift;
+    /* |v| = len2 / |v| = (xn / 2^30) (r / 2^31) 2^(31 - s/2), r within
+     * 2^-21 of the root's reciprocal: so is the length. 4 |v| is the
+     * product's high word (at least 2^28) times 2^(4 - s/2). */
+    return (uint32_t)(fx_umul64(xn, (uint32_t)r) >> 32) << (4 - s / 2);
 }
 
 void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
@@ -461,20 +466,30 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
 
 /* The same for a vector of fx_t: 32-bit magnitudes and shifts, the same
  * bits. (|INT32_MIN| is 2^31 as a uint32_t, as abs_u64 gives it.) */
-void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3])
+void fx_unit3_narrow_len(fx_t x, fx_t y, fx_t z, fx_t out[3], fx_t *len)
 {
     uint32_t m = (x < 0 ? 0u - (uint32_t)x : (uint32_t)x) | (y < 0 ? 0u - (uint32_t)y : (uint32_t)y) |
                  (z < 0 ? 0u - (uint32_t)z : (uint32_t)z);
     if (m == 0) {
         out[0] = out[1] = out[2] = 0;
+        if (len)
+            *len = 0;
         return;
     }
     int n = 32 - fx_clz32(m) - 28;
-    if (n <= 0)
-        unit3_scaled(x * ((int32_t)1 << -n), y * ((int32_t)1 << -n), z * ((int32_t)1 << -n), out);
+    uint32_t l4 = n <= 0 ? unit3_scaled(x * ((int32_t)1 << -n), y * ((int32_t)1 << -n), z * ((int32_t)1 << -n), out)
+                         : unit3_scaled(x >> n, y >> n, z >> n, out);
+    if (!len)
+        return;
+    /* |(x, y, z)| = (l4 / 4) 2^n: n <= 3 (a sum of three 31-bit squares) */
+    int sh = 2 - n;
+    if (sh > 0)
+        *len = (fx_t)((l4 + ((uint32_t)1 << (sh - 1))) >> sh);
     else
-        unit3_scaled(x >> n, y >> n, z >> n, out);
+        *len = l4 >> (31 + sh) ? FX_MAX : (fx_t)(l4 << -sh);
 }
+
+void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3]) { fx_unit3_narrow_len(x, y, z, out, 0); }
 
 /* log2(x) for x > 0 in Q.F, result in Q.24 (always < 0 for x < 1), bit
  * by bit: squaring the mantissa m in [1, 2) (Q.30, truncated) doubles its

@@ -447,6 +447,24 @@ static inline int32_t fx_mul_hi(int32_t a, int32_t b)
     return (int32_t)((uint64_t)fx_mul64(a, b) >> 32);
 }
 
+/* Whether a . b < 0 for |a_k|, |b_k| <= 2, exactly. Without a long
+ * multiply, 32-bit products of a and b cut to Q.13 first: each cut
+ * product is within |a'| + |b'| + 1 <= 2^15 + 1 of the exact one (in
+ * their units, 2^-26), so a sum beyond 3 (2^15 + 1) has the exact sum's
+ * sign; only near-perpendicular pairs (|a . b| below 2^-9.4) take the
+ * 64-bit products. */
+static inline bool fx_dot3_negative(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
+{
+#if FX_MUL64_PARTIAL && FX_FRAC_BITS > 13
+    const int s = FX_FRAC_BITS - 13;
+    const int32_t sure = 3 * (((int32_t)1 << 15) + 1);
+    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s);
+    if (q > sure || q < -sure)
+        return q < 0;
+#endif
+    return fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz) < 0;
+}
+
 /* Sign of d . n for a Q.F vector d (|d_k| <= 2) and a Q.2F vector n, at
  * full precision: n is shifted right just enough for the products to fit
  * 64 bits (the same shift for the same n, so equal inputs give equal
@@ -485,6 +503,8 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s);/* x^s for x in [0,1]; 0 for x <= 0 */
 void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3]);
 /* fx_unit3 of a vector of fx_t, the same bits in 32-bit operations */
 void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3]);
+/* the same and |v| (len, saturated), within 2^-21 relative and a unit */
+void fx_unit3_narrow_len(fx_t x, fx_t y, fx_t z, fx_t out[3], fx_t *len);
 
 /* tan(deg degrees) as Q.2F, for 0 <= deg < 90. */
 fx_wide_t fx_tan_deg_wide(fx_t deg);

@@ -56,6 +56,10 @@ static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_in_range(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_weight(real_t c, real_t w) { return c * w; }
 static inline real_t r_mul_small(real_t a, real_t e) { return a * e; }
+static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
+{
+    return ax * bx + ay * by + az * bz < 0;
+}
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
 static inline real_t r_recip(real_t b) { return R_ONE / b; }
 /* BVH slab distances (scene_hit.c): plain products here; see the fixed
@@ -135,6 +139,13 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
 #endif
 }
 static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { r_unit3(x, y, z, out); }
+/* the unit vector and the length as (x, y, z) . unit, as the reference
+ * has always measured it (the fixed build has the length at hand) */
+static inline void r_unit3_narrow_len(real_t x, real_t y, real_t z, real_t out[3], real_t *len)
+{
+    r_unit3(x, y, z, out);
+    *len = x * out[0] + y * out[1] + z * out[2];
+}
 /* round(255 c) of c clamped to [0, 1] */
 static RT_INLINE uint8_t r_to_u8(real_t c)
 {
@@ -186,6 +197,11 @@ static inline real_t r_mul_in_range(real_t a, real_t b) { return r_from_wide_in_
 static inline real_t r_mul_weight(real_t c, real_t w) { return fx_mul_weight(c, w); }
 /* a e for |a| <= 2 and |e| <= 2^-10 (a correction): fx_mul_small */
 static inline real_t r_mul_small(real_t a, real_t e) { return fx_mul_small(a, e); }
+/* whether a . b < 0 for |a_k|, |b_k| <= 2: fx_dot3_negative */
+static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
+{
+    return fx_dot3_negative(ax, ay, az, bx, by, bz);
+}
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the
@@ -259,6 +275,10 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
     fx_unit3(x, y, z, out);
 }
 static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { fx_unit3_narrow(x, y, z, out); }
+static inline void r_unit3_narrow_len(real_t x, real_t y, real_t z, real_t out[3], real_t *len)
+{
+    fx_unit3_narrow_len(x, y, z, out, len);
+}
 static inline void r_sincos_deg(real_t deg, real_t *s, real_t *c) { fx_sincos_deg(deg, s, c); }
 static inline uint8_t r_to_u8(real_t c)
 {

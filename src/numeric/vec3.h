@@ -42,6 +42,8 @@ static inline real_wide_t v3_wdot(vec3_t a, vec3_t b)
 {
     return r_wmul(a.x, b.x) + r_wmul(a.y, b.y) + r_wmul(a.z, b.z);
 }
+/* whether a . b < 0 for vectors of length <= 2 (directions, normals), exactly */
+static inline bool v3_dot_negative(vec3_t a, vec3_t b) { return r_dot3_negative(a.x, a.y, a.z, b.x, b.y, b.z); }
 static inline real_t v3_dot(vec3_t a, vec3_t b) { return r_from_wide(v3_wdot(a, b)); }
 /* The same for directions (unit vectors, or a few units long) times
  * cosines, and a distance along a ray to a point of the scene: the caller
@@ -66,6 +68,14 @@ static inline vec3_t v3_unit(vec3_t a)
 {
     real_t u[3];
     r_unit3_narrow(a.x, a.y, a.z, u);
+    return v3(u[0], u[1], u[2]);
+}
+/* a / |a|, and |a| in *len (the fixed build's from the unit's making,
+ * the others' as a . unit: either within a few ulps) */
+static inline vec3_t v3_unit_len(vec3_t a, real_t *len)
+{
+    real_t u[3];
+    r_unit3_narrow_len(a.x, a.y, a.z, u, len);
     return v3(u[0], u[1], u[2]);
 }
 /* a made unit again where it is within 2^-10 of unit already (the mirror

@@ -38,7 +38,7 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
     s->leaf = h->leaf;
     s->smooth = ps.smooth;
     s->offset = ps.offset;
-    s->entering = v3_wdot(ray->dir, ps.ng) < 0; /* the sign alone: no rounding */
+    s->entering = v3_dot_negative(ray->dir, ps.ng); /* the sign alone: no rounding */
     s->n = s->entering ? ps.ng : v3_neg(ps.ng); /* n = Ng but on a patch */
 #if RT_USE_PATCHES
     s->n_out = s->n;
@@ -129,8 +129,8 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     leave(s, false, &shadow);
     for (uint32_t i = 0; i < sc->n_lights; i++) {
         const light_t *l = &sc->lights[i];
-        vec3_t to_light = v3_sub(l->pos, s->point);
-        vec3_t ldir = v3_unit(to_light);
+        real_t dist;
+        vec3_t ldir = v3_unit_len(v3_sub(l->pos, s->point), &dist);
         real_t ndl = v3_dot_in_range(s->n, ldir);
         if (ndl <= 0)
             continue;
@@ -142,9 +142,11 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
             continue;
 #endif
         shadow.dir = ldir;
-        /* the light's distance along the ray as (L - O) . ldir: within a
-         * few ulps of |L - O| (ldir's error), without a square root */
-        real_t dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
+        /* the light's distance: |L - P| from ldir's making, or where
+         * the ray starts off the surface (solids), (L - O) . ldir, within
+         * a few ulps of |L - O| */
+        if (s->offset != 0)
+            dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
         if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
             add_light(&c, t, s, l, &shadow.dir, ndl);
     }
