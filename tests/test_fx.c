@@ -689,6 +689,35 @@ static void test_weight(void)
     }
     CHECK(bad == 0 && near > n / 4, "fx_dot3_negative (the 32-bit filter) is the exact sign's: %ld of %ld differ (%ld near "
           "perpendicular)", bad, n, near);
+
+    /* fx_norm2 within 2 units of |a|^2 (|a| <= 2); fx_cos3 within 2^-12
+     * of a . b for unit a, b */
+    long bad_n = 0, bad_c = 0;
+    double worst_c = 0;
+    for (int i = 0; i < 400000; i++) {
+        double v[3], w[3], lv = 0, lw = 0;
+        for (int k = 0; k < 3; k++) {
+            v[k] = tl_uniform(-1, 1), w[k] = tl_uniform(-1, 1);
+            lv += v[k] * v[k], lw += w[k] * w[k];
+        }
+        double sv = (i & 1 ? 1 : tl_uniform(0, 2)) / sqrt(lv), sw = 1 / sqrt(lw);
+        fx_t a[3], b[3];
+        for (int k = 0; k < 3; k++) {
+            a[k] = (fx_t)llround(v[k] * sv * FX_ONE);
+            b[k] = (fx_t)llround(w[k] * sw * FX_ONE);
+        }
+        double n2 = (d(a[0]) * d(a[0]) + d(a[1]) * d(a[1]) + d(a[2]) * d(a[2]));
+        bad_n += fabs(d(fx_norm2(a[0], a[1], a[2])) - n2) > 2 * ULP;
+        if (i & 1) {
+            double c = d(a[0]) * d(b[0]) + d(a[1]) * d(b[1]) + d(a[2]) * d(b[2]);
+            double e = fabs(d(fx_cos3(a[0], a[1], a[2], b[0], b[1], b[2])) - c);
+            bad_c += e > 1.0 / 4096;
+            worst_c = fmax(worst_c, e);
+        }
+    }
+    CHECK(bad_n == 0, "fx_norm2 within 2 units of |a|^2 (|a| <= 2): %ld of 400000 over", bad_n);
+    CHECK(bad_c == 0, "fx_cos3 within 2^-12 of a . b for unit vectors: %ld of 200000 over (worst 2^%.1f)", bad_c,
+          log2(worst_c));
 }
 
 int main(void)

@@ -447,6 +447,37 @@ static inline int32_t fx_mul_hi(int32_t a, int32_t b)
     return (int32_t)((uint64_t)fx_mul64(a, b) >> 32);
 }
 
+/* |a|^2 for |a| <= 2, within 2 units, in 32-bit products: each component
+ * split at bit k = F/2 into h = a >> k and l = a - h 2^k in [0, 2^k),
+ * a^2 / 2^F = h^2 + 2 h l / 2^k + l^2 / 2^F. */
+static inline fx_t fx_norm2(fx_t ax, fx_t ay, fx_t az)
+{
+#if FX_FRAC_BITS % 2 == 0 && FX_FRAC_BITS >= 12
+    const int k = FX_FRAC_BITS / 2;
+    const uint32_t low = ((uint32_t)1 << k) - 1;
+    int32_t hx = ax >> k, hy = ay >> k, hz = az >> k;
+    int32_t lx = (int32_t)((uint32_t)ax & low), ly = (int32_t)((uint32_t)ay & low), lz = (int32_t)((uint32_t)az & low);
+    int32_t mid = 2 * (hx * lx + hy * ly + hz * lz) + (int32_t)((uint32_t)(lx * lx + ly * ly + lz * lz) >> k);
+    return hx * hx + hy * hy + hz * hz + ((mid + ((int32_t)1 << (k - 1))) >> k);
+#else
+    return (fx_t)fx_round_shift(fx_mul64(ax, ax) + fx_mul64(ay, ay) + fx_mul64(az, az), FX_FRAC_BITS);
+#endif
+}
+
+/* a . b for unit vectors a and b, good to 2^-12 (a cosine that weighs a
+ * colour): 32-bit products of the components cut to Q.14, each product
+ * within (|a_k| + |b_k|) 2^-14 of the exact one, their sum under 2^30. */
+static inline fx_t fx_cos3(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
+{
+#if FX_FRAC_BITS > 14
+    const int s = FX_FRAC_BITS - 14;
+    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s); /* Q.28 */
+    return (q + ((int32_t)1 << (27 - FX_FRAC_BITS))) >> (28 - FX_FRAC_BITS);
+#else
+    return (fx_t)fx_round_shift(fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz), FX_FRAC_BITS);
+#endif
+}
+
 /* Whether a . b < 0 for |a_k|, |b_k| <= 2, exactly. Without a long
  * multiply, 32-bit products of a and b cut to Q.13 first: each cut
  * product is within |a'| + |b'| + 1 <= 2^15 + 1 of the exact one (in

@@ -55,10 +55,13 @@ static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_in_range(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_weight(real_t c, real_t w) { return c * w; }
-static inline real_t r_mul_small(real_t a, real_t e) { return a * e; }
 static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
 {
     return ax * bx + ay * by + az * bz < 0;
+}
+static inline real_t r_cos3(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
+{
+    return ax * bx + ay * by + az * bz;
 }
 static inline real_t r_div(real_t a, real_t b) { return a / b; }
 static inline real_t r_recip(real_t b) { return R_ONE / b; }
@@ -202,6 +205,13 @@ static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, r
 {
     return fx_dot3_negative(ax, ay, az, bx, by, bz);
 }
+/* a . b of unit vectors to 2^-12, for shading weights: fx_cos3 */
+static inline real_t r_cos3(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
+{
+    return fx_cos3(ax, ay, az, bx, by, bz);
+}
+/* |a|^2 for |a| <= 2, within 2 units: fx_norm2 */
+static inline real_t r_norm2(real_t ax, real_t ay, real_t az) { return fx_norm2(ax, ay, az); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the

@@ -42,6 +42,8 @@ static inline real_wide_t v3_wdot(vec3_t a, vec3_t b)
 {
     return r_wmul(a.x, b.x) + r_wmul(a.y, b.y) + r_wmul(a.z, b.z);
 }
+/* a . b of unit vectors as a shading weight: the fixed build's to 2^-12 */
+static inline real_t v3_cos(vec3_t a, vec3_t b) { return r_cos3(a.x, a.y, a.z, b.x, b.y, b.z); }
 /* whether a . b < 0 for vectors of length <= 2 (directions, normals), exactly */
 static inline bool v3_dot_negative(vec3_t a, vec3_t b) { return r_dot3_negative(a.x, a.y, a.z, b.x, b.y, b.z); }
 static inline real_t v3_dot(vec3_t a, vec3_t b) { return r_from_wide(v3_wdot(a, b)); }
@@ -84,8 +86,13 @@ static inline vec3_t v3_unit_len(vec3_t a, real_t *len)
  * rounding, for six products instead of a square root and a division. */
 static inline vec3_t v3_renorm(vec3_t a)
 {
-    real_t e = (R_ONE - r_from_wide_in_range(v3_wdot(a, a))) / 2; /* k - 1, |a| <= 2 */
+#if RT_BACKEND_FIXED /* a + a (k - 1), whose small products are 32-bit ones */
+    real_t e = (R_ONE - r_norm2(a.x, a.y, a.z)) / 2; /* k - 1, |a| <= 2 */
     return v3(a.x + r_mul_small(a.x, e), a.y + r_mul_small(a.y, e), a.z + r_mul_small(a.z, e));
+#else
+    real_t k = R_RATIO(3, 2) - v3_dot_in_range(a, a) / 2;
+    return v3(a.x * k, a.y * k, a.z * k);
+#endif
 }
 /* unit vector along a x b, from the exact (wide) cross product */
 static inline vec3_t v3_unit_cross(vec3_t a, vec3_t b)

@@ -65,13 +65,16 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 
 /* Colour arithmetic, out of line: a few calls per light and bounce, where
  * each inline copy of three rounded products costs ~100 bytes of flash. */
-RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return v3_scale(c, k); }
+/* c k: a weight's product (r_mul_weight) for k in [0, 1], the most a
+ * scene's reflectances and intensities are */
+static RT_INLINE colour_t colour_times(colour_t c, real_t k)
+{
+    return k >= 0 && k <= R_ONE ? c3_scale_weight(c, k) : v3_scale(c, k);
+}
+RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return colour_times(c, k); }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated */
-RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
-{
-    return c3_add(a, k >= 0 && k <= R_ONE ? c3_scale_weight(b, k) : v3_scale(b, k));
-}
+RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, colour_times(b, k)); }
 #endif
 
 #if RT_USE_SHADOWS
@@ -120,7 +123,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     if (!same) {
         t->material = m;
         t->base = base;
-        t->ambient = colour_scale(colour_scale(base, m->kd), I);
+        t->ambient = colour_scale(base, r_mul(I, m->kd));
         t->iks = r_mul_in_range(I, m->ks);
     }
     colour_t c = t->ambient;
@@ -131,7 +134,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         const light_t *l = &sc->lights[i];
         real_t dist;
         vec3_t ldir = v3_unit_len(v3_sub(l->pos, s->point), &dist);
-        real_t ndl = v3_dot_in_range(s->n, ldir);
+        real_t ndl = v3_cos(s->n, ldir); /* only weighs the light */
         if (ndl <= 0)
             continue;
         tr->scratch->stats.shadow_rays++;
