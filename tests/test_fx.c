@@ -690,7 +690,7 @@ static void test_weight(void)
     CHECK(bad == 0 && near > n / 4, "fx_dot3_negative (the 32-bit filter) is the exact sign's: %ld of %ld differ (%ld near "
           "perpendicular)", bad, n, near);
 
-    /* fx_norm2 within 2 units of |a|^2 (|a| <= 2); fx_cos3 within 2^-12
+    /* fx_norm2 the rounded 64-bit |a|^2 (|a| <= 2); fx_cos3 within 2^-12
      * of a . b for unit a, b */
     long bad_n = 0, bad_c = 0;
     double worst_c = 0;
@@ -706,8 +706,8 @@ static void test_weight(void)
             a[k] = (fx_t)llround(v[k] * sv * FX_ONE);
             b[k] = (fx_t)llround(w[k] * sw * FX_ONE);
         }
-        double n2 = (d(a[0]) * d(a[0]) + d(a[1]) * d(a[1]) + d(a[2]) * d(a[2]));
-        bad_n += fabs(d(fx_norm2(a[0], a[1], a[2])) - n2) > 2 * ULP;
+        int64_t n2_bits = (int64_t)a[0] * a[0] + (int64_t)a[1] * a[1] + (int64_t)a[2] * a[2];
+        bad_n += fx_norm2(a[0], a[1], a[2]) != (fx_t)((n2_bits + FX_HALF) >> FX_FRAC_BITS);
         if (i & 1) {
             double c = d(a[0]) * d(b[0]) + d(a[1]) * d(b[1]) + d(a[2]) * d(b[2]);
             double e = fabs(d(fx_cos3(a[0], a[1], a[2], b[0], b[1], b[2])) - c);
@@ -715,7 +715,7 @@ static void test_weight(void)
             worst_c = fmax(worst_c, e);
         }
     }
-    CHECK(bad_n == 0, "fx_norm2 within 2 units of |a|^2 (|a| <= 2): %ld of 400000 over", bad_n);
+    CHECK(bad_n == 0, "fx_norm2 (32-bit halves) is the rounded 64-bit |a|^2 (|a| <= 2): %ld of 400000 differ", bad_n);
     CHECK(bad_c == 0, "fx_cos3 within 2^-12 of a . b for unit vectors: %ld of 200000 over (worst 2^%.1f)", bad_c,
           log2(worst_c));
 }

@@ -49,7 +49,7 @@ RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
  * 513 (camera_init), so up to a lens of 179.8 degrees none needs a
  * saturation test (a wider one would only saturate its edges). The row
  * part at - b v is made once a row. */
-void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
+RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
 {
     row->m = 2 * j - c->cy;
     real_t b = r_from_wide_in_range(c->half_span * row->m);
@@ -58,15 +58,14 @@ void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
     row->row[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
     row->k = 2 * i - c->cx;
 #if RT_BACKEND_FIXED
-    /* the fixed build walks T along the row in the wide format: a u and
-     * its step each rounded once to 2^-2F, their sum good to 2^-2F a
-     * sample (under 2^-(F+8) across the widest row), for three additions
-     * a sample instead of three 64-bit products */
-    real_wide_t a = c->half_span * row->k, step = 2 * c->half_span;
+    /* the fixed build walks T along the row in the wide format: the step
+     * s u rounded once to 2^-2F, so T is good to 2^-2F a sample (under
+     * 2^-(F+8) across the widest row), for three additions a sample
+     * instead of three 64-bit products */
     const real_t u[3] = { c->u.x, c->u.y, c->u.z };
     for (int n = 0; n < 3; n++) {
-        row->t[n] = row->row[n] + r_wmul_real(a, u[n]);
-        row->dt[n] = r_wmul_real(step, u[n]);
+        row->dt[n] = r_wmul_real(2 * c->half_span, u[n]);
+        row->t[n] = row->row[n] + (fx_mul64x(row->k, row->dt[n]) >> 1); /* k (s/2) u */
     }
 #endif
 }

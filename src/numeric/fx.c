@@ -483,10 +483,8 @@ void fx_unit3_narrow_len(fx_t x, fx_t y, fx_t z, fx_t out[3], fx_t *len)
         return;
     /* |(x, y, z)| = (l4 / 4) 2^n: n <= 3 (a sum of three 31-bit squares) */
     int sh = 2 - n;
-    if (sh > 0)
-        *len = (fx_t)((l4 + ((uint32_t)1 << (sh - 1))) >> sh);
-    else
-        *len = l4 >> (31 + sh) ? FX_MAX : (fx_t)(l4 << -sh);
+    uint32_t q = sh > 0 ? (l4 + ((uint32_t)1 << (sh - 1))) >> sh : l4 << -sh; /* l4 < 2^31: no wrap */
+    *len = q > (uint32_t)FX_MAX ? FX_MAX : (fx_t)q;
 }
 
 void fx_unit3_narrow(fx_t x, fx_t y, fx_t z, fx_t out[3]) { fx_unit3_narrow_len(x, y, z, out, 0); }

@@ -447,18 +447,20 @@ static inline int32_t fx_mul_hi(int32_t a, int32_t b)
     return (int32_t)((uint64_t)fx_mul64(a, b) >> 32);
 }
 
-/* |a|^2 for |a| <= 2, within 2 units, in 32-bit products: each component
- * split at bit k = F/2 into h = a >> k and l = a - h 2^k in [0, 2^k),
- * a^2 / 2^F = h^2 + 2 h l / 2^k + l^2 / 2^F. */
+/* |a|^2 for |a| <= 2, rounded once: the bits of the 64-bit sum. Without a
+ * long multiply, from 32-bit products: each component split at bit k =
+ * F/2 into h = a >> k and l = a - h 2^k in [0, 2^k), so a^2 = h^2 2^F + 2
+ * h l 2^k + l^2, and the rounding's floors nest: (2 M 2^k + L + 2^(F-1))
+ * >> F = (2 M + ((L + 2^(F-1)) >> k)) >> k, M = sum h l, L = sum l^2. */
 static inline fx_t fx_norm2(fx_t ax, fx_t ay, fx_t az)
 {
-#if FX_FRAC_BITS % 2 == 0 && FX_FRAC_BITS >= 12
+#if FX_MUL64_PARTIAL && FX_FRAC_BITS % 2 == 0 && FX_FRAC_BITS >= 12
     const int k = FX_FRAC_BITS / 2;
     const uint32_t low = ((uint32_t)1 << k) - 1;
     int32_t hx = ax >> k, hy = ay >> k, hz = az >> k;
     int32_t lx = (int32_t)((uint32_t)ax & low), ly = (int32_t)((uint32_t)ay & low), lz = (int32_t)((uint32_t)az & low);
-    int32_t mid = 2 * (hx * lx + hy * ly + hz * lz) + (int32_t)((uint32_t)(lx * lx + ly * ly + lz * lz) >> k);
-    return hx * hx + hy * hy + hz * hz + ((mid + ((int32_t)1 << (k - 1))) >> k);
+    int32_t l2 = lx * lx + ly * ly + lz * lz + ((int32_t)1 << (FX_FRAC_BITS - 1));
+    return hx * hx + hy * hy + hz * hz + ((2 * (hx * lx + hy * ly + hz * lz) + (l2 >> k)) >> k);
 #else
     return (fx_t)fx_round_shift(fx_mul64(ax, ax) + fx_mul64(ay, ay) + fx_mul64(az, az), FX_FRAC_BITS);
 #endif

@@ -210,7 +210,7 @@ static inline real_t r_cos3(real_t ax, real_t ay, real_t az, real_t bx, real_t b
 {
     return fx_cos3(ax, ay, az, bx, by, bz);
 }
-/* |a|^2 for |a| <= 2, within 2 units: fx_norm2 */
+/* |a|^2 for |a| <= 2, rounded once: fx_norm2 */
 static inline real_t r_norm2(real_t ax, real_t ay, real_t az) { return fx_norm2(ax, ay, az); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }

@@ -67,14 +67,17 @@ static void leave(const surface_t *s, bool through, ray_t *out)
  * each inline copy of three rounded products costs ~100 bytes of flash. */
 /* c k: a weight's product (r_mul_weight) for k in [0, 1], the most a
  * scene's reflectances and intensities are */
-static RT_INLINE colour_t colour_times(colour_t c, real_t k)
+RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k)
 {
     return k >= 0 && k <= R_ONE ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
-RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k) { return colour_times(c, k); }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
-/* a + b k, the sum saturated */
-RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k) { return c3_add(a, colour_times(b, k)); }
+/* a + b k, the sum saturated (a weight's product inline, the rare
+ * reflectance over 1 by colour_scale) */
+RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
+{
+    return c3_add(a, k >= 0 && k <= R_ONE ? c3_scale_weight(b, k) : colour_scale(b, k));
+}
 #endif
 
 #if RT_USE_SHADOWS
