@@ -15,6 +15,13 @@
  *   fx_wdiv_fx            truncated to 2^-2F while |w| < 2^(62-F)
  *   fx_sqrt, fx_wsqrt     correctly rounded (<= 0.5 ulp)
  *   fx_unit3              each component within 1 ulp of the true unit vector
+ *   fx_unit3_narrow_len   fx_unit3_narrow's unit, the length within 2^-21
+ *                         relative + 1 ulp
+ *   fx_norm2              correctly rounded (the 64-bit sum's bits)
+ *   fx_dot3_negative      exact
+ *   fx_mul_weight(c, w)   within |c| 2^-16 + 0.5 ulp (w in [0, 1] to Q.15)
+ *   fx_mul_small(a, e)    within 0.5 ulp + 4 |e| (|e| <= 2^-10)
+ *   fx_cos3               within 2^-12 for unit vectors (a shading weight)
  *   fx_pow_unit(x, s)     within 2 ulp + 1e-7 * s relative of x^s for the
  *                         exact value of x (x itself carries 0.5 ulp); 0.5 ulp
  *                         + 2^-26 for s = 1, 2, 4, .., 64
