@@ -34,11 +34,15 @@
 #if RT_BACKEND_FLOAT
 typedef float real_t;
 #define R_BACKEND_NAME "float"
+#define R_WEIGHT_CHEAPER 0
+#define R_UNIT_LEN_FREE 0
 #define R_FN(name) __builtin_##name##f
 #define R_EPSILON 0x1p-23f
 #else
 typedef double real_t;
 #define R_BACKEND_NAME "double"
+#define R_WEIGHT_CHEAPER 0
+#define R_UNIT_LEN_FREE 0
 #define R_FN(name) __builtin_##name
 #define R_EPSILON 0x1p-52
 #endif
@@ -188,6 +192,10 @@ typedef fx_shine_t shine_t;
 #define R_BIG FX_MAX
 #define R_ULPS(n) ((fx_t)(n))
 #define R_BACKEND_NAME "fixed"
+/* a weight's product (r_mul_weight) costs less than r_mul; a unit
+ * vector's length comes with it (r_unit3_narrow_len) */
+#define R_WEIGHT_CHEAPER 1
+#define R_UNIT_LEN_FREE 1
 
 static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
 static inline real_t r_mul(real_t a, real_t b) { return fx_mul(a, b); }

@@ -69,14 +69,14 @@ static void leave(const surface_t *s, bool through, ray_t *out)
  * scene's reflectances and intensities are */
 RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k)
 {
-    return k >= 0 && k <= R_ONE ? c3_scale_weight(c, k) : v3_scale(c, k);
+    return R_WEIGHT_CHEAPER && k >= 0 && k <= R_ONE ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated (a weight's product inline, the rare
- * reflectance over 1 by colour_scale) */
+ * reflectance over 1 by colour_scale; floating point's are all alike) */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 {
-    return c3_add(a, k >= 0 && k <= R_ONE ? c3_scale_weight(b, k) : colour_scale(b, k));
+    return c3_add(a, !R_WEIGHT_CHEAPER || (k >= 0 && k <= R_ONE) ? c3_scale_weight(b, k) : colour_scale(b, k));
 }
 #endif
 
@@ -136,7 +136,11 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     for (uint32_t i = 0; i < sc->n_lights; i++) {
         const light_t *l = &sc->lights[i];
         real_t dist;
+#if R_UNIT_LEN_FREE
         vec3_t ldir = v3_unit_len(v3_sub(l->pos, s->point), &dist);
+#else
+        vec3_t ldir = v3_unit(v3_sub(l->pos, s->point));
+#endif
         real_t ndl = v3_cos(s->n, ldir); /* only weighs the light */
         if (ndl <= 0)
             continue;
@@ -148,10 +152,10 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
             continue;
 #endif
         shadow.dir = ldir;
-        /* the light's distance: |L - P| from ldir's making, or where
-         * the ray starts off the surface (solids), (L - O) . ldir, within
-         * a few ulps of |L - O| */
-        if (s->offset != 0)
+        /* the light's distance: in the fixed build |L - P| from ldir's
+         * making; else, or where the ray starts off the surface (solids),
+         * (L - O) . ldir, within a few ulps of |L - O| */
+        if (!R_UNIT_LEN_FREE || s->offset != 0)
             dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
         if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
             add_light(&c, t, s, l, &shadow.dir, ndl);
