@@ -21,7 +21,7 @@
  *   fx_dot3_negative      exact
  *   fx_mul_weight(c, w)   within |c| 2^-16 + 0.5 ulp (w in [0, 1] to Q.15)
  *   fx_mul_small(a, e)    within 0.5 ulp + 4 |e| (|e| <= 2^-10)
- *   fx_cos3               within 2^-12 for unit vectors (a shading weight)
+ *   fx_cos3               within 2^-13 for unit vectors (a shading weight)
  *   fx_pow_unit(x, s)     within 2 ulp + 1e-7 * s relative of x^s for the
  *                         exact value of x (x itself carries 0.5 ulp); 0.5 ulp
  *                         + 2^-26 for s = 1, 2, 4, .., 64
@@ -473,15 +473,16 @@ static inline fx_t fx_norm2(fx_t ax, fx_t ay, fx_t az)
 #endif
 }
 
-/* a . b for unit vectors a and b, good to 2^-12 (a cosine that weighs a
- * colour): 32-bit products of the components cut to Q.14, each product
- * within (|a_k| + |b_k|) 2^-14 of the exact one, their sum under 2^30. */
+/* a . b for unit vectors a and b (or up to 1.4 long), good to 2^-13 (a
+ * cosine that weighs a colour): 32-bit products of the components cut to
+ * Q.15, each within (|a_k| + |b_k|) 2^-15 of the exact one; every partial
+ * sum of |a_k b_k| is at most |a| |b| (Cauchy-Schwarz), under 2^31. */
 static inline fx_t fx_cos3(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
 {
-#if FX_FRAC_BITS > 14
-    const int s = FX_FRAC_BITS - 14;
-    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s); /* Q.28 */
-    return (q + ((int32_t)1 << (27 - FX_FRAC_BITS))) >> (28 - FX_FRAC_BITS);
+#if FX_FRAC_BITS > 15
+    const int s = FX_FRAC_BITS - 15;
+    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s); /* Q.30 */
+    return (q + ((int32_t)1 << (29 - FX_FRAC_BITS))) >> (30 - FX_FRAC_BITS);
 #else
     return (fx_t)fx_round_shift(fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz), FX_FRAC_BITS);
 #endif

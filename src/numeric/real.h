@@ -213,7 +213,7 @@ static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, r
 {
     return fx_dot3_negative(ax, ay, az, bx, by, bz);
 }
-/* a . b of unit vectors to 2^-12, for shading weights: fx_cos3 */
+/* a . b of unit vectors to 2^-13, for shading weights: fx_cos3 */
 static inline real_t r_cos3(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
 {
     return fx_cos3(ax, ay, az, bx, by, bz);

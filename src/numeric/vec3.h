@@ -42,7 +42,7 @@ static inline real_wide_t v3_wdot(vec3_t a, vec3_t b)
 {
     return r_wmul(a.x, b.x) + r_wmul(a.y, b.y) + r_wmul(a.z, b.z);
 }
-/* a . b of unit vectors as a shading weight: the fixed build's to 2^-12 */
+/* a . b of unit vectors as a shading weight: the fixed build's to 2^-13 */
 static inline real_t v3_cos(vec3_t a, vec3_t b) { return r_cos3(a.x, a.y, a.z, b.x, b.y, b.z); }
 /* whether a . b < 0 for vectors of length <= 2 (directions, normals), exactly */
 static inline bool v3_dot_negative(vec3_t a, vec3_t b) { return r_dot3_negative(a.x, a.y, a.z, b.x, b.y, b.z); }
