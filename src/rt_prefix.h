@@ -34,6 +34,7 @@
 #define fx_umul64_call           rt_fx_umul64_call
 #define fx_unit3                 rt_fx_unit3
 #define fx_unit3_narrow          rt_fx_unit3_narrow
+#define fx_unit3_narrow_len      rt_fx_unit3_narrow_len
 #define fx_wdiv                  rt_fx_wdiv
 #define fx_wdiv_fx               rt_fx_wdiv_fx
 #define fx_wdiv_int              rt_fx_wdiv_int
