@@ -53,9 +53,8 @@ RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *r
 {
     row->m = 2 * j - c->cy;
     real_t b = r_from_wide_in_range(c->half_span * row->m);
-    row->row[0] = r_to_wide(c->at.x) - r_wmul(b, c->v.x);
-    row->row[1] = r_to_wide(c->at.y) - r_wmul(b, c->v.y);
-    row->row[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
+    const real_wide_t part[3] = { r_to_wide(c->at.x) - r_wmul(b, c->v.x), r_to_wide(c->at.y) - r_wmul(b, c->v.y),
+                                  r_to_wide(c->at.z) - r_wmul(b, c->v.z) };
     row->k = 2 * i - c->cx;
 #if RT_BACKEND_FIXED
     /* the fixed build walks T along the row in the wide format: the step
@@ -65,8 +64,11 @@ RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *r
     const real_t u[3] = { c->u.x, c->u.y, c->u.z };
     for (int n = 0; n < 3; n++) {
         row->dt[n] = r_wmul_real(2 * c->half_span, u[n]);
-        row->t[n] = row->row[n] + (fx_mul64x(row->k, row->dt[n]) >> 1); /* k (s/2) u */
+        row->t[n] = part[n] + (fx_mul64x(row->k, row->dt[n]) >> 1); /* k (s/2) u */
     }
+#else
+    for (int n = 0; n < 3; n++)
+        row->row[n] = part[n];
 #endif
 }
 

@@ -46,12 +46,13 @@ static inline const char *camera_init_cells(camera_t *c, const view_t *view, int
  * (the scene's bounds), if the eye is outside it. */
 void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max);
 
-/* A row of samples walked left to right: T's row part at - b v, and the
- * next column's offset a (its 2i - cx half spans). */
+/* A row of samples walked left to right: the fixed build's next T and
+ * its step, the others' row part at - b v of T. */
 typedef struct {
-    real_wide_t row[3];
 #if RT_BACKEND_FIXED
     real_wide_t t[3], dt[3]; /* the next sample's T, and the step to the one after (wide) */
+#else
+    real_wide_t row[3];      /* T's row part */
 #endif
     int32_t k;     /* the next sample's 2i - cx */
     int32_t m;     /* the row's 2j - cy */

@@ -365,7 +365,6 @@ static inline fx_t fx_mul_weight(fx_t c, fx_t w)
 #endif
 }
 
-
 static inline fx_t fx_from_wide(fx_wide_t w) { return fx_sat64(fx_round_shift(w, FX_FRAC_BITS)); }
 
 static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
@@ -454,6 +453,19 @@ static inline int32_t fx_mul_hi(int32_t a, int32_t b)
     return (int32_t)((uint64_t)fx_mul64(a, b) >> 32);
 }
 
+/* a . b, exact (Q.2F) */
+static inline fx_wide_t fx_wdot3(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
+{
+    return fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz);
+}
+
+/* a . b from components cut to Q(F - s) (arithmetic shifts), in 32-bit
+ * products: the caller bounds the sum */
+static inline int32_t fx_dot3_cut(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz, int s)
+{
+    return (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s);
+}
+
 /* |a|^2 for |a| <= 2, rounded once: the bits of the 64-bit sum. Without a
  * long multiply, from 32-bit products: each component split at bit k =
  * F/2 into h = a >> k and l = a - h 2^k in [0, 2^k), so a^2 = h^2 2^F + 2
@@ -469,7 +481,7 @@ static inline fx_t fx_norm2(fx_t ax, fx_t ay, fx_t az)
     int32_t l2 = lx * lx + ly * ly + lz * lz + ((int32_t)1 << (FX_FRAC_BITS - 1));
     return hx * hx + hy * hy + hz * hz + ((2 * (hx * lx + hy * ly + hz * lz) + (l2 >> k)) >> k);
 #else
-    return (fx_t)fx_round_shift(fx_mul64(ax, ax) + fx_mul64(ay, ay) + fx_mul64(az, az), FX_FRAC_BITS);
+    return (fx_t)fx_round_shift(fx_wdot3(ax, ay, az, ax, ay, az), FX_FRAC_BITS);
 #endif
 }
 
@@ -480,11 +492,10 @@ static inline fx_t fx_norm2(fx_t ax, fx_t ay, fx_t az)
 static inline fx_t fx_cos3(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
 {
 #if FX_FRAC_BITS > 15
-    const int s = FX_FRAC_BITS - 15;
-    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s); /* Q.30 */
+    int32_t q = fx_dot3_cut(ax, ay, az, bx, by, bz, FX_FRAC_BITS - 15); /* Q.30 */
     return (q + ((int32_t)1 << (29 - FX_FRAC_BITS))) >> (30 - FX_FRAC_BITS);
 #else
-    return (fx_t)fx_round_shift(fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz), FX_FRAC_BITS);
+    return (fx_t)fx_round_shift(fx_wdot3(ax, ay, az, bx, by, bz), FX_FRAC_BITS);
 #endif
 }
 
@@ -497,13 +508,12 @@ static inline fx_t fx_cos3(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
 static inline bool fx_dot3_negative(fx_t ax, fx_t ay, fx_t az, fx_t bx, fx_t by, fx_t bz)
 {
 #if FX_MUL64_PARTIAL && FX_FRAC_BITS > 13
-    const int s = FX_FRAC_BITS - 13;
     const int32_t sure = 3 * (((int32_t)1 << 15) + 1);
-    int32_t q = (ax >> s) * (bx >> s) + (ay >> s) * (by >> s) + (az >> s) * (bz >> s);
+    int32_t q = fx_dot3_cut(ax, ay, az, bx, by, bz, FX_FRAC_BITS - 13);
     if (q > sure || q < -sure)
         return q < 0;
 #endif
-    return fx_mul64(ax, bx) + fx_mul64(ay, by) + fx_mul64(az, bz) < 0;
+    return fx_wdot3(ax, ay, az, bx, by, bz) < 0;
 }
 
 /* Sign of d . n for a Q.F vector d (|d_k| <= 2) and a Q.2F vector n, at

@@ -34,14 +34,12 @@
 #if RT_BACKEND_FLOAT
 typedef float real_t;
 #define R_BACKEND_NAME "float"
-#define R_WEIGHT_CHEAPER 0
 #define R_UNIT_LEN_FREE 0
 #define R_FN(name) __builtin_##name##f
 #define R_EPSILON 0x1p-23f
 #else
 typedef double real_t;
 #define R_BACKEND_NAME "double"
-#define R_WEIGHT_CHEAPER 0
 #define R_UNIT_LEN_FREE 0
 #define R_FN(name) __builtin_##name
 #define R_EPSILON 0x1p-52
@@ -59,6 +57,8 @@ static inline real_t r_from_int(int32_t i) { return (real_t)i; }
 static inline real_t r_mul(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_in_range(real_t a, real_t b) { return a * b; }
 static inline real_t r_mul_weight(real_t c, real_t w) { return c * w; }
+/* whether r_mul_weight may take k: any k, a product is a product here */
+static inline bool r_is_weight(real_t k) { return (void)k, true; }
 static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
 {
     return ax * bx + ay * by + az * bz < 0;
@@ -192,9 +192,7 @@ typedef fx_shine_t shine_t;
 #define R_BIG FX_MAX
 #define R_ULPS(n) ((fx_t)(n))
 #define R_BACKEND_NAME "fixed"
-/* a weight's product (r_mul_weight) costs less than r_mul; a unit
- * vector's length comes with it (r_unit3_narrow_len) */
-#define R_WEIGHT_CHEAPER 1
+/* a unit vector's length comes with it (r_unit3_narrow_len) */
 #define R_UNIT_LEN_FREE 1
 
 static inline real_t r_from_int(int32_t i) { return fx_from_int(i); }
@@ -206,6 +204,8 @@ static inline real_t r_from_wide_in_range(real_wide_t w) { return (fx_t)fx_round
 static inline real_t r_mul_in_range(real_t a, real_t b) { return r_from_wide_in_range(fx_mul64(a, b)); }
 /* c w for a weight w in [0, 1]: within |c| 2^-16 of it (fx_mul_weight) */
 static inline real_t r_mul_weight(real_t c, real_t w) { return fx_mul_weight(c, w); }
+/* whether r_mul_weight may take k: k in [0, 1] */
+static inline bool r_is_weight(real_t k) { return k >= 0 && k <= R_ONE; }
 /* a e for |a| <= 2 and |e| <= 2^-10 (a correction): fx_mul_small */
 static inline real_t r_mul_small(real_t a, real_t e) { return fx_mul_small(a, e); }
 /* whether a . b < 0 for |a_k|, |b_k| <= 2: fx_dot3_negative */

@@ -69,14 +69,14 @@ static void leave(const surface_t *s, bool through, ray_t *out)
  * scene's reflectances and intensities are */
 RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k)
 {
-    return R_WEIGHT_CHEAPER && k >= 0 && k <= R_ONE ? c3_scale_weight(c, k) : v3_scale(c, k);
+    return r_is_weight(k) ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated (a weight's product inline, the rare
- * reflectance over 1 by colour_scale; floating point's are all alike) */
+ * reflectance over 1 by colour_scale) */
 RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 {
-    return c3_add(a, !R_WEIGHT_CHEAPER || (k >= 0 && k <= R_ONE) ? c3_scale_weight(b, k) : colour_scale(b, k));
+    return c3_add(a, r_is_weight(k) ? c3_scale_weight(b, k) : colour_scale(b, k));
 }
 #endif
 
