@@ -21,7 +21,9 @@
 #define camera_start_at_bounds   rt_camera_start_at_bounds
 #define cone_init                rt_cone_init
 #define cone_normal              rt_cone_normal
+#define decimal_cmp              rt_decimal_cmp
 #define decimal_exp2_bound       rt_decimal_exp2_bound
+#define decimal_recip_scaled     rt_decimal_recip_scaled
 #define fx_div                   rt_fx_div
 #define fx_from_decimal          rt_fx_from_decimal
 #define fx_mul64_call            rt_fx_mul64_call
@@ -50,6 +52,7 @@
 #define lex_over_capacity        rt_lex_over_capacity
 #define lex_real                 rt_lex_real
 #define lex_scalar               rt_lex_scalar
+#define lex_scalar_scaled        rt_lex_scalar_scaled
 #define lex_start                rt_lex_start
 #define lex_tok_decimal          rt_lex_tok_decimal
 #define lex_vec3                 rt_lex_vec3

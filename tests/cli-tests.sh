@@ -10,18 +10,20 @@ pass=0 fail=0
 ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 
-echo "bad-input tests: exact 'file:line: message', exit status 2, no image written"
+echo "bad-input tests: exact 'file:line: message', exit status 2, no image written, the same in every backend"
 for f in tests/bad/*.nff; do
     name=$(basename "$f" .nff)
     want="$f:$(cat "tests/bad/$name.expect")"
-    rm -f "$OUT/out.png"
-    got=$("$RT" "$f" -o "$OUT/out.png" 2>&1 >/dev/null)
-    status=$?
-    if [ $status -eq 2 ] && [ "$got" = "$want" ] && [ ! -e "$OUT/out.png" ]; then
-        ok "$name: $got"
-    else
-        bad "$name: status $status, got '$got', want '$want'"
-    fi
+    for backend in --fixed --float --double; do
+        rm -f "$OUT/out.png"
+        got=$("$RT" "$f" -o "$OUT/out.png" $backend 2>&1 >/dev/null)
+        status=$?
+        if [ $status -eq 2 ] && [ "$got" = "$want" ] && [ ! -e "$OUT/out.png" ]; then
+            ok "$name $backend: $got"
+        else
+            bad "$name $backend: status $status, got '$got', want '$want'"
+        fi
+    done
 done
 
 # expect_cli NAME STATUS MESSAGE-SUBSTRING -- command...

@@ -633,25 +633,29 @@ void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
     *cos_out = fx_sat64(fx_round_shift(c, 30 - FX_FRAC_BITS));
 }
 
-bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits, uint32_t max, int32_t *out)
+bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, int32_t frac_bits, uint32_t max, int32_t *out)
 {
     uint64_t result;
+    /* frac_bits < 0 (down to -24): multiples of 2^drop, found as the
+     * multiples of 1 and then rounded at bit drop */
+    uint32_t drop = frac_bits < 0 ? (uint32_t)-frac_bits : 0;
+    uint32_t frac = frac_bits < 0 ? 0 : (uint32_t)frac_bits;
+    uint64_t whole_max = ((uint64_t)max << drop | (((uint64_t)1 << drop) - 1)) >> frac;
     if (mant == 0) {
         *out = 0;
         return true;
     }
     if (exp10 >= 0) {
         /* An integer: scale up with an overflow check at every step. */
-        uint64_t limit = (uint64_t)max >> frac_bits;
         uint64_t v = mant;
         for (int32_t i = 0; i < exp10; i++) {
-            if (v > limit)
+            if (v > whole_max)
                 return false;
             v *= 10;
         }
-        if (v > limit)
+        if (v > whole_max)
             return false;
-        result = v << frac_bits;
+        result = drop ? (v + ((uint64_t)1 << (drop - 1))) >> drop : v << frac;
     } else {
         /* mant / 10^k by long division into binary fraction bits. */
         uint32_t k = (uint32_t)-exp10;
@@ -663,19 +667,23 @@ bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits,
         for (uint32_t i = 0; i < k; i++)
             d *= 10;
         uint64_t q = mant / d, r = mant % d;
-        if (q > ((uint64_t)max >> frac_bits))
+        if (q > whole_max)
             return false;
-        result = q << frac_bits;
-        for (int bit = (int)frac_bits - 1; bit >= 0; bit--) {
-            r <<= 1;
-            if (r >= d) {
-                r -= d;
-                result |= (uint64_t)1 << bit;
+        if (drop) { /* the bits below 2^drop hold at least a half iff bit drop - 1 is set */
+            result = (q >> drop) + (q >> (drop - 1) & 1u);
+        } else {
+            result = q << frac;
+            for (int bit = (int)frac - 1; bit >= 0; bit--) {
+                r <<= 1;
+                if (r >= d) {
+                    r -= d;
+                    result |= (uint64_t)1 << bit;
+                }
             }
+            /* Round to nearest; an exact half goes away from zero. */
+            if (2 * r >= d)
+                result++;
         }
-        /* Round to nearest; an exact half goes away from zero. */
-        if (2 * r >= d)
-            result++;
     }
     if (result > max)
         return false;

@@ -563,10 +563,10 @@ fx_wide_t fx_tan_deg_wide(fx_t deg);
 /* sin and cos of deg degrees (any angle), each within 1 ulp. */
 void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out);
 
-/* Nearest value with `frac_bits` fraction bits to +-mant * 10^exp10
- * (exact for up to 18 fraction digits; digits beyond are truncated).
- * Returns false when the magnitude exceeds `max`. */
-bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, unsigned frac_bits,
+/* Nearest multiple of 2^-frac_bits (-24 <= frac_bits <= 31) to
+ * +-mant * 10^exp10 (exact for up to 18 fraction digits; digits beyond
+ * are truncated). Returns false when the magnitude exceeds `max`. */
+bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, int32_t frac_bits,
                      uint32_t max, int32_t *out);
 
 #endif

@@ -333,7 +333,7 @@ static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
 static inline bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2,
                                          real_t *out)
 {
-    return fx_from_decimal(neg, mant, exp10, (unsigned)(FX_FRAC_BITS + scale_log2), (uint32_t)FX_MAX, out);
+    return fx_from_decimal(neg, mant, exp10, FX_FRAC_BITS + scale_log2, (uint32_t)FX_MAX, out);
 }
 static inline bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
 {

@@ -305,10 +305,12 @@ static bool read_entity(reader_t *r)
     return k->read(r);
 }
 
-/* The power of two that brings the geometry's largest coordinate below
- * 2^RT_SCENE_EXTENT_LOG2 and the camera's and lights' below
+/* The scene scale k (docs/shading-model.md, "The scene scale"): the
+ * largest k that brings every geometry number's value strictly below
+ * 2^RT_SCENE_EXTENT_LOG2 and every camera and light number's below
  * 2^RT_FAR_EXTENT_LOG2 (so distances stay inside the scalar's range), as
- * large as possible (so positions keep the most fraction bits). */
+ * large as possible (so positions keep the most fraction bits). max_exp2
+ * holds the least p with |value| < 2^p over the numbers, exactly. */
 static bool choose_scale(reader_t *r)
 {
     static const int32_t extent[2] = { RT_SCENE_EXTENT_LOG2, RT_FAR_EXTENT_LOG2 };
@@ -327,13 +329,21 @@ static bool choose_scale(reader_t *r)
         r->scale_log2 = 0;
         return true;
     }
-    if (k < RT_SCALE_LOG2_MIN || k > RT_SCALE_LOG2_MAX) {
+    if (k < RT_SCALE_LOG2_MIN) {
         rt_error_set(r->lx.err, r->max_line[f], r->max_what[f]);
-        rt_error_append(r->lx.err, k < RT_SCALE_LOG2_MIN ? ": scene too large for the fixed range (coordinates up to 2^"
-                                                      : ": scene too small for the fixed range (coordinates only up to 2^");
+        rt_error_append(r->lx.err, ": scene too large for the fixed range (a coordinate of 2^");
+        rt_error_append_int(r->lx.err, r->max_exp2[f] - 1);
+        rt_error_append(r->lx.err, " or more; all must stay below 2^");
+        rt_error_append_int(r->lx.err, extent[f] - RT_SCALE_LOG2_MIN);
+        rt_error_append(r->lx.err, ")");
+        return false;
+    }
+    if (k > RT_SCALE_LOG2_MAX) {
+        rt_error_set(r->lx.err, r->max_line[f], r->max_what[f]);
+        rt_error_append(r->lx.err, ": scene too small for the fixed range (every coordinate below 2^");
         rt_error_append_int(r->lx.err, r->max_exp2[f]);
-        rt_error_append(r->lx.err, k < RT_SCALE_LOG2_MIN ? ", at most 2^" : ", at least 2^");
-        rt_error_append_int(r->lx.err, extent[f] - (k < RT_SCALE_LOG2_MIN ? RT_SCALE_LOG2_MIN : RT_SCALE_LOG2_MAX));
+        rt_error_append(r->lx.err, "; the largest must reach 2^");
+        rt_error_append_int(r->lx.err, extent[f] - RT_SCALE_LOG2_MAX - 1);
         rt_error_append(r->lx.err, ")");
         return false;
     }

@@ -55,9 +55,9 @@ bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg)
 bool lex_out_of_range(lexer_t *lx, const char *what)
 {
     rt_error_set(lx->err, lx->tok_line, what);
-    rt_error_append(lx->err, ": number out of range for the ");
-    rt_error_append(lx->err, R_BACKEND_NAME);
-    rt_error_append(lx->err, " build");
+    rt_error_append(lx->err, ": number out of range (its size must round below 2^");
+    rt_error_append_int(lx->err, 31 - FX_FRAC_BITS);
+    rt_error_append(lx->err, ")");
     return false;
 }
 
@@ -216,11 +216,19 @@ bool lex_decimal(lexer_t *lx, const char *what, decimal_t *d)
     return lex_next(lx) && lex_tok_decimal(lx, what, ": expected a number", d);
 }
 
-bool lex_scalar(lexer_t *lx, const char *what, const decimal_t *d, real_t *out)
+bool lex_scalar_scaled(lexer_t *lx, const char *what, const decimal_t *d, int32_t scale_log2, real_t *out)
 {
-    if (!r_from_decimal(d->neg, d->mant, d->exp10, out))
+    /* |d| 2^scale < (2^32 - 1) 2^-(F+1): it rounds to at most FX_MAX,
+     * decided on the value, so every build accepts the same numbers */
+    if (decimal_cmp(d, UINT32_MAX, -(FX_FRAC_BITS + 1) - scale_log2) >= 0 ||
+        !r_from_decimal_scaled(d->neg, d->mant, d->exp10, scale_log2, out))
         return lex_out_of_range(lx, what);
     return true;
+}
+
+bool lex_scalar(lexer_t *lx, const char *what, const decimal_t *d, real_t *out)
+{
+    return lex_scalar_scaled(lx, what, d, 0, out);
 }
 
 bool lex_real(lexer_t *lx, const char *what, real_t *out)
@@ -252,14 +260,4 @@ bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t
     }
     *out = (uint32_t)v;
     return true;
-}
-
-int32_t decimal_exp2_bound(const decimal_t *d)
-{
-    int32_t bits = 0;
-    while (bits < 64 && (d->mant >> bits) != 0)
-        bits++;
-    /* log2(10) = 3.3219...: round up for 10^e, down for 10^-e */
-    int64_t e = d->exp10; /* |exp10| <= 200000: the products fit */
-    return (int32_t)(e >= 0 ? bits + (e * 3322 + 999) / 1000 : bits - (-e * 3321) / 1000);
 }

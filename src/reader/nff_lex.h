@@ -20,6 +20,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "numeric/decimal.h"
 #include "numeric/real.h"
 #include "rt_error.h"
 #include "numeric/vec3.h"
@@ -32,12 +33,6 @@ typedef struct {
     size_t tok_len;
     rt_error_t *err;
 } lexer_t;
-
-typedef struct {
-    bool neg;
-    uint64_t mant;   /* up to 19 significant digits */
-    int32_t exp10;
-} decimal_t;
 
 void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err);
 
@@ -62,10 +57,10 @@ bool lex_decimal(lexer_t *lx, const char *what, decimal_t *d);
 bool lex_real(lexer_t *lx, const char *what, real_t *out);
 bool lex_vec3(lexer_t *lx, const char *what, vec3_t *v);
 bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t *out);
-/* A decimal to the scalar, or the out-of-range error. */
+/* A decimal (times 2^scale_log2) to the scalar, or the out-of-range
+ * error: one rule for every build, |value| rounding into the fixed
+ * range (below 2^(31 - FX_FRAC_BITS) - 2^-(FX_FRAC_BITS + 1)). */
 bool lex_scalar(lexer_t *lx, const char *what, const decimal_t *d, real_t *out);
-
-/* An upper bound p with |d| < 2^p (within 2 of the least); d nonzero. */
-int32_t decimal_exp2_bound(const decimal_t *d);
+bool lex_scalar_scaled(lexer_t *lx, const char *what, const decimal_t *d, int32_t scale_log2, real_t *out);
 
 #endif

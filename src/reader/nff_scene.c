@@ -13,8 +13,15 @@ block_t *rd_top_block(reader_t *r)
 bool rd_pos(reader_t *r, const char *what, real_t *out)
 {
     decimal_t d;
+    return rd_pos_decimal(r, what, &d, out);
+}
+
+bool rd_pos_decimal(reader_t *r, const char *what, decimal_t *dp, real_t *out)
+{
+    decimal_t d;
     if (!lex_decimal(&r->lx, what, &d))
         return false;
+    *dp = d;
     *out = 0;
     if (r->measuring) {
         if (d.mant != 0) {
@@ -30,9 +37,7 @@ bool rd_pos(reader_t *r, const char *what, real_t *out)
         }
         return true;
     }
-    if (!r_from_decimal_scaled(d.neg, d.mant, d.exp10, r->scale_log2, out))
-        return lex_out_of_range(&r->lx, what);
-    return true;
+    return lex_scalar_scaled(&r->lx, what, &d, r->scale_log2, out);
 }
 
 bool rd_pos3(reader_t *r, const char *what, vec3_t *v)

@@ -52,6 +52,8 @@ typedef struct {
 /* A position (or a length): scaled by 2^scale_log2 with the rest of the
  * scene; in the measuring pass only its size is recorded. */
 bool rd_pos(reader_t *r, const char *what, real_t *out);
+/* the same, with the number as written (*d) */
+bool rd_pos_decimal(reader_t *r, const char *what, decimal_t *d, real_t *out);
 bool rd_pos3(reader_t *r, const char *what, vec3_t *v);
 /* The "<what> before any 'f' material line" error unless there is one. */
 bool rd_need_material(reader_t *r, const char *what);

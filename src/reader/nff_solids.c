@@ -273,23 +273,25 @@ bool rd_rotate(reader_t *r)
 bool rd_scale(reader_t *r)
 {
     block_t *b = step_block(r);
-    vec3_t v;
-    if (!b || !lex_vec3(&r->lx, "scale", &v))
+    decimal_t d[3];
+    real_t v[3];
+    if (!b)
         return false;
-    const real_t lo = R_RATIO(1, 64), hi = R_RATIO(64, 1);
-    real_t a[3] = { r_abs(v.x), r_abs(v.y), r_abs(v.z) };
-    for (int i = 0; i < 3; i++)
-        if (a[i] < lo || a[i] > hi)
+    int32_t grow = 0; /* sizes inside grow by up to 2^grow */
+    for (int i = 0; i < 3; i++) {
+        if (!lex_decimal(&r->lx, "scale", &d[i]))
+            return false;
+        if (decimal_cmp(&d[i], 1, -6) < 0 || decimal_cmp(&d[i], 1, 6) > 0)
             return lex_fail(&r->lx, r->lx.tok_line, "scale: factors must be 1/64 to 64 in size (fixed range)");
-    if (r->measuring) {
-        real_t m = r_max(a[0], r_max(a[1], a[2]));
-        while (m > R_ONE) { /* sizes inside grow by up to this */
-            m = m / 2;
-            b->extent_exp2++;
-        }
-    } else {
-        xform_scale(&b->xf, v);
+        while (decimal_cmp(&d[i], 1, grow) > 0)
+            grow++;
+        if (!lex_scalar(&r->lx, "scale", &d[i], &v[i]))
+            return false;
     }
+    if (r->measuring)
+        b->extent_exp2 += grow;
+    else
+        xform_scale(&b->xf, v3(v[0], v[1], v[2]));
     return stepped(b);
 }
 
@@ -324,21 +326,22 @@ bool rd_torus(reader_t *r)
 bool rd_quadric(reader_t *r)
 {
     uint32_t line = r->lx.tok_line;
+    decimal_t d[10];
     real_t q[10];
     vec3_t lo, hi;
     if (!rd_need_material(r, "quadric"))
         return false;
     for (int i = 0; i < 10; i++)
-        if (!lex_real(&r->lx, "quadric", &q[i]))
+        if (!lex_decimal(&r->lx, "quadric", &d[i]))
             return false;
     if (!rd_pos3(r, "quadric", &lo) || !rd_pos3(r, "quadric", &hi))
         return false;
     if (r->measuring)
         return true;
     int32_t k = r->scale_log2;
-    for (int i = 6; i < 10; i++)
-        if (!r_ldexp(q[i], i == 9 ? 2 * k : k, &q[i]))
-            return lex_out_of_range(&r->lx, "quadric");
+    for (int i = 0; i < 10; i++)
+        if (!lex_scalar_scaled(&r->lx, "quadric", &d[i], i < 6 ? 0 : i < 9 ? k : 2 * k, &q[i]))
+            return false;
     shape_t sh = { 0 };
     const char *why = shape_init_quadric(&sh, q, lo, hi);
     return add_shape(r, &sh, why, 0, line);

@@ -32,22 +32,30 @@ bool rd_plane(reader_t *r)
     return true;
 }
 
+/* A texture's size is at least 2^this in the scene's scale: 1 / size
+ * then fits the fixed range. */
+#define TEXTURE_SIZE_MIN_LOG2 (-10)
+
 /* size r g b r g b: the part both textures share. */
 static bool texture_common(reader_t *r, const char *what, texture_t *tx)
 {
     real_t size;
-    if (!rd_need_material(r, what) || !rd_pos(r, what, &size) || !lex_vec3(&r->lx, what, &tx->a) ||
+    decimal_t d;
+    if (!rd_need_material(r, what) || !rd_pos_decimal(r, what, &d, &size) || !lex_vec3(&r->lx, what, &tx->a) ||
         !lex_vec3(&r->lx, what, &tx->b))
         return false;
     if (r->measuring)
         return true;
-    /* 1 / size within range in every build (the fixed one needs it) */
-    if (size < R_RATIO(1, 1024)) {
+    /* 1 / size within range in every build (the fixed one needs it),
+     * decided on the value, then taken from the value itself: a size
+     * rounded to the position grid would make every tile a little too
+     * wide, an error that grows with the distance from the origin */
+    if (d.neg || decimal_cmp(&d, 1, TEXTURE_SIZE_MIN_LOG2 - r->scale_log2) < 0) {
         rt_error_set(r->lx.err, r->lx.tok_line, what);
         rt_error_append(r->lx.err, ": size must be positive, at least 2^-10 in the scene's scale (rt --stats: scene_scale_log2)");
         return false;
     }
-    tx->inv_size = r_div(R_ONE, size);
+    tx->inv_size = decimal_recip_scaled(&d, r->scale_log2);
     return true;
 }
 
