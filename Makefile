@@ -211,7 +211,7 @@ bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
 	python3 bench/run_bench.py --quick --board $(BOARD)
 
-FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float \
+FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_geometry build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
@@ -224,6 +224,8 @@ test: deps
 #   fuzz_nff         the reader and a tiny render, fixed build, default capacities
 #   fuzz_nff_double  the same, double build, host capacities (what rt runs)
 #   fuzz_nff_float   the same, float build, host capacities
+#   fuzz_readers     the fixed, float and double readers side by side: one
+#                    verdict and one message for every input
 #   fuzz_scenec      the scene compiler: reader (board capacities) and emitters
 #   fuzz_scenec_float  the same for the float tables
 #   fuzz_receive     rt receive's UART stream decoder
@@ -246,6 +248,24 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
+
+# $(1) backend id, $(2) its flags: one build of the core for the
+# differential harness, instrumented, exporting only rt_backend_<id>
+define fuzz_core_rule
+build/fuzz/core-$(1).o: $(CORE_SRC) $(CORE_H) platform/hosted/backend.c platform/hosted/backend.h Makefile
+	@rm -rf build/fuzz/$(1) && mkdir -p build/fuzz/$(1)
+	cd build/fuzz/$(1) && clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(HOST_CAPS) $(2) -DBACKEND_ID=$(1) \
+	    $(addprefix -I$(CURDIR)/,include src platform/hosted) -c $(addprefix $(CURDIR)/,$(CORE_SRC) platform/hosted/backend.c)
+	$(LD) -r -o $$@.tmp build/fuzz/$(1)/*.o
+	$(OBJCOPY) -G rt_backend_$(1) $$@.tmp $$@
+	@rm -f $$@.tmp
+endef
+$(eval $(call fuzz_core_rule,fixed,))
+$(eval $(call fuzz_core_rule,float,$(BACKEND_FLAGS_float)))
+$(eval $(call fuzz_core_rule,double,$(BACKEND_FLAGS_double)))
+
+build/fuzz/fuzz_readers: tests/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
+	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(HOST_INC) -o $@ $^ -lm
 
 # $(1) name, $(2) backend flags: the scene compiler with the firmware's
 # capacities, for the fixed tables and for the float ones (hex floats)

@@ -84,7 +84,10 @@
 #define rd_need_material         rt_rd_need_material
 #define rd_paraboloid            rt_rd_paraboloid
 #define rd_plane                 rt_rd_plane
+#define rd_grid                  rt_rd_grid
 #define rd_pos                   rt_rd_pos
+#define rd_pos3_grid             rt_rd_pos3_grid
+#define rd_pos_decimal           rt_rd_pos_decimal
 #define rd_pos3                  rt_rd_pos3
 #define rd_quadcone              rt_rd_quadcone
 #define rd_quadcylinder          rt_rd_quadcylinder

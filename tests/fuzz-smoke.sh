@@ -7,7 +7,7 @@ SECONDS_=${FUZZ_SMOKE:-15}
 pass=0 fail=0
 # Seeds: the corpus, and for the scene readers every input that once broke one.
 nff_seeds=tests/fuzz-corpus+tests/fuzz-found
-for spec in fuzz_nff:$nff_seeds fuzz_nff_double:$nff_seeds fuzz_nff_float:$nff_seeds \
+for spec in fuzz_nff:$nff_seeds fuzz_nff_double:$nff_seeds fuzz_nff_float:$nff_seeds fuzz_readers:$nff_seeds \
             fuzz_scenec:$nff_seeds fuzz_scenec_float:$nff_seeds fuzz_receive:tests/fuzz-corpus-receive; do
     name=${spec%%:*} seeds=${spec#*:}
     seed_dirs=$(echo "$seeds" | tr '+' '\n' | sed 's|^|../../../|' | tr '\n' ' ')

@@ -40,14 +40,19 @@ static bool read_view(reader_t *r)
     r->far = true;
     bool ok = view_key(r, "from") && rd_pos3(r, "from", &v->from);
     r->far = false;
+    bool zero; /* camera_init reports a zero 'up' */
+    decimal_t a;
     if (!ok || !view_key(r, "at") || !rd_pos3(r, "at", &v->at) || !view_key(r, "up") ||
-        !lex_vec3(&r->lx, "up", &v->up) || !view_key(r, "angle"))
+        !lex_direction(&r->lx, "up", &v->up, &zero) || !view_key(r, "angle") || !lex_decimal(&r->lx, "angle", &a))
         return false;
-    ok = lex_real(&r->lx, "angle", &v->angle);
-    /* valid angles only (the fixed tangent's argument must stay in range);
-     * camera_init reports the others */
-    v->tan_half = ok && v->angle > 0 && v->angle < r_from_int(180) ? r_tan_deg_wide(v->angle / 2) : 0;
-    if (!ok || !view_key(r, "hither") || !lex_real(&r->lx, "hither", &hither) || !view_key(r, "resolution"))
+    /* 0 < angle < 180 as every build resolves it: 2^-21 (half the fixed
+     * build's unit) from each end, decided on the value */
+    if (a.neg || decimal_cmp(&a, 1, -21) < 0 || decimal_cmp(&a, 180u * 2097152u - 1u, -21) >= 0)
+        return lex_fail(&r->lx, r->lx.tok_line, "view: angle must be between 0 and 180 degrees (exclusive)");
+    if (!lex_scalar(&r->lx, "angle", &a, &v->angle))
+        return false;
+    v->tan_half = r_tan_deg_wide(v->angle / 2);
+    if (!view_key(r, "hither") || !lex_real(&r->lx, "hither", &hither) || !view_key(r, "resolution"))
         return false;
     ok = lex_count(&r->lx, "resolution", 1, RT_MAX_WIDTH, &w) && lex_count(&r->lx, "resolution", 1, RT_MAX_HEIGHT, &h);
     r->st->scene.width = (uint16_t)w;
@@ -96,17 +101,17 @@ static bool read_material(reader_t *r)
 {
     scene_t *sc = &r->st->scene;
     material_t m;
-    decimal_t d;
     if (!lex_vec3(&r->lx, "f", &m.colour) || !lex_real(&r->lx, "f", &m.kd) || !lex_real(&r->lx, "f", &m.ks) ||
-        !lex_decimal(&r->lx, "f", &d))
+        !lex_shine(&r->lx, "f: Phong exponent must be from 0 to 524287", false, &m.shine))
         return false;
-    if (!shine_from_decimal(d.neg, d.mant, d.exp10, &m.shine))
-        return lex_fail(&r->lx, r->lx.tok_line, "f: Phong exponent must be from 0 to 524287");
-    if (!lex_real(&r->lx, "f", &m.t) || !lex_real(&r->lx, "f", &m.ior))
+    decimal_t t, ior;
+    if (!lex_decimal(&r->lx, "f", &t) || !lex_scalar(&r->lx, "f", &t, &m.t) || !lex_decimal(&r->lx, "f", &ior) ||
+        !lex_scalar(&r->lx, "f", &ior, &m.ior))
         return false;
     m.texture = TEXTURE_NONE;
-    if (m.t > 0 && m.ior <= 0)
-        return lex_fail(&r->lx, r->lx.tok_line, "f: index of refraction must be positive");
+    /* decided on the values: 1 / ior must fit the fixed range too */
+    if (!t.neg && t.mant != 0 && (ior.neg || decimal_cmp(&ior, 1, -10) < 0))
+        return lex_fail(&r->lx, r->lx.tok_line, "f: index of refraction must be at least 2^-10 (1/1024)");
     r->have_material = true;
     if (r->measuring)
         return true;
@@ -135,12 +140,15 @@ static bool read_sphere(reader_t *r)
     uint32_t line = r->lx.tok_line;
     vec3_t c;
     real_t rad;
+    decimal_t d;
     if (!rd_need_material(r, "s") ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_spheres, RT_MAX_SPHERES, "spheres")) ||
-        !rd_pos3(r, "s", &c) || !rd_pos(r, "s", &rad))
+        !rd_pos3(r, "s", &c) || !rd_pos_decimal(r, "s", &d, &rad))
         return false;
     if (r->measuring)
         return true;
+    if (rd_grid(r, &d) == 0)
+        return lex_fail(&r->lx, line, "sphere radius is zero");
     const char *why = sphere_init(&r->st->spheres[sc->n_spheres], c, rad, r->material);
     if (why)
         return lex_fail(&r->lx, line, why);
@@ -154,13 +162,19 @@ static bool read_cone(reader_t *r)
     uint32_t line = r->lx.tok_line;
     vec3_t base, apex;
     real_t rb, ra;
+    decimal_t db, da;
+    int32_t gb[3], ga[3];
     if (!rd_need_material(r, "c") ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_cones, RT_MAX_CONES, "cones")) ||
-        !rd_pos3(r, "c", &base) || !rd_pos(r, "c", &rb) || !rd_pos3(r, "c", &apex) ||
-        !rd_pos(r, "c", &ra))
+        !rd_pos3_grid(r, "c", &base, gb) || !rd_pos_decimal(r, "c", &db, &rb) || !rd_pos3_grid(r, "c", &apex, ga) ||
+        !rd_pos_decimal(r, "c", &da, &ra))
         return false;
     if (r->measuring)
         return true;
+    if (gb[0] == ga[0] && gb[1] == ga[1] && gb[2] == ga[2])
+        return lex_fail(&r->lx, line, "cone base and apex are the same point");
+    if (rd_grid(r, &db) == 0 && rd_grid(r, &da) == 0)
+        return lex_fail(&r->lx, line, "cone radii are both zero");
     const char *why = cone_init(&r->st->cones[sc->n_cones], base, rb, apex, ra, r->material);
     if (why)
         return lex_fail(&r->lx, line, why);
@@ -190,13 +204,14 @@ static bool read_polygon(reader_t *r, bool patch)
             return false;
         if (patch) {
             vec3_t nv;
-            if (!lex_vec3(&r->lx, what, &nv))
+            bool zero;
+            if (!lex_direction(&r->lx, what, &nv, &zero))
                 return false;
+            if (zero)
+                return lex_fail(&r->lx, r->lx.tok_line, "pp: vertex normal is zero");
             if (r->measuring)
                 continue;
             nv = v3_unit(nv);
-            if (nv.x == 0 && nv.y == 0 && nv.z == 0)
-                return lex_fail(&r->lx, r->lx.tok_line, "pp: vertex normal is zero");
             r->st->normals[sc->n_normals + i] = nv;
         }
     }

@@ -242,6 +242,53 @@ bool lex_vec3(lexer_t *lx, const char *what, vec3_t *v)
     return lex_real(lx, what, &v->x) && lex_real(lx, what, &v->y) && lex_real(lx, what, &v->z);
 }
 
+/* floor(log10 |d|), d nonzero: exact, as 10^(digits - 1) <= mant < 10^digits */
+static int32_t decimal_log10_floor(const decimal_t *d)
+{
+    int32_t digits = 0;
+    for (uint64_t m = d->mant; m != 0; m /= 10)
+        digits++;
+    return digits - 1 + d->exp10;
+}
+
+bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
+{
+    decimal_t d[3];
+    int32_t top = INT32_MIN;
+    for (int i = 0; i < 3; i++) {
+        if (!lex_decimal(lx, what, &d[i]))
+            return false;
+        if (d[i].mant != 0 && decimal_log10_floor(&d[i]) > top)
+            top = decimal_log10_floor(&d[i]);
+    }
+    *zero = top == INT32_MIN;
+    if (*zero) {
+        *v = v3(0, 0, 0);
+        return true;
+    }
+    /* times 10^-top, exactly: the largest component is then 1 to 10 in
+     * size, so no build sees zero where another does not */
+    real_t c[3];
+    for (int i = 0; i < 3; i++) {
+        d[i].exp10 -= top;
+        if (!lex_scalar(lx, what, &d[i], &c[i]))
+            return false;
+    }
+    *v = v3(c[0], c[1], c[2]);
+    return true;
+}
+
+bool lex_shine(lexer_t *lx, const char *msg, bool positive, shine_t *out)
+{
+    decimal_t d;
+    if (!lex_decimal(lx, msg, &d))
+        return false;
+    bool low = positive ? d.neg || decimal_cmp(&d, 1, RT_SHINE_MIN_LOG2) < 0 : d.neg && d.mant != 0;
+    if (low || decimal_cmp(&d, RT_SHINE_MAX, 0) > 0 || !shine_from_decimal(false, d.mant, d.exp10, out))
+        return lex_fail(lx, lx->tok_line, msg);
+    return true;
+}
+
 bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t *out)
 {
     decimal_t d;

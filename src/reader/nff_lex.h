@@ -57,6 +57,20 @@ bool lex_decimal(lexer_t *lx, const char *what, decimal_t *d);
 bool lex_real(lexer_t *lx, const char *what, real_t *out);
 bool lex_vec3(lexer_t *lx, const char *what, vec3_t *v);
 bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t *out);
+/* Three numbers giving a direction (any size): *zero when all three are
+ * 0, else the vector times a power of ten that brings its largest
+ * component to 1..10 in size (not unit). */
+bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero);
+/* An exponent (Phong's, the sky's): 0 to RT_SHINE_MAX, or with `positive`
+ * 2^RT_SHINE_MIN_LOG2 (the fixed build's least positive exponent) to
+ * RT_SHINE_MAX; else the error msg. */
+#define RT_SHINE_MAX 524287u
+#define RT_SHINE_MIN_LOG2 (-12)
+#if !RT_BACKEND_DOUBLE && !RT_BACKEND_FLOAT
+_Static_assert(RT_SHINE_MIN_LOG2 == -FX_SHINE_FRAC_BITS && RT_SHINE_MAX == (INT32_MAX >> FX_SHINE_FRAC_BITS),
+               "the exponents' limits are the fixed format's");
+#endif
+bool lex_shine(lexer_t *lx, const char *msg, bool positive, shine_t *out);
 /* A decimal (times 2^scale_log2) to the scalar, or the out-of-range
  * error: one rule for every build, |value| rounding into the fixed
  * range (below 2^(31 - FX_FRAC_BITS) - 2^-(FX_FRAC_BITS + 1)). */

@@ -5,6 +5,8 @@
  */
 #include "nff_scene.h"
 
+#include "numeric/fx.h"
+
 block_t *rd_top_block(reader_t *r)
 {
     return r->n_blocks ? &r->blocks[r->n_blocks - 1] : 0;
@@ -38,6 +40,24 @@ bool rd_pos_decimal(reader_t *r, const char *what, decimal_t *dp, real_t *out)
         return true;
     }
     return lex_scalar_scaled(&r->lx, what, &d, r->scale_log2, out);
+}
+
+int32_t rd_grid(const reader_t *r, const decimal_t *d)
+{
+    int32_t g = 0;
+    (void)fx_from_decimal(d->neg, d->mant, d->exp10, FX_FRAC_BITS + r->scale_log2, INT32_MAX, &g); /* in range: read */
+    return g;
+}
+
+bool rd_pos3_grid(reader_t *r, const char *what, vec3_t *v, int32_t g[3])
+{
+    decimal_t d[3];
+    if (!rd_pos_decimal(r, what, &d[0], &v->x) || !rd_pos_decimal(r, what, &d[1], &v->y) ||
+        !rd_pos_decimal(r, what, &d[2], &v->z))
+        return false;
+    for (int i = 0; i < 3; i++)
+        g[i] = r->measuring ? 0 : rd_grid(r, &d[i]);
+    return true;
 }
 
 bool rd_pos3(reader_t *r, const char *what, vec3_t *v)

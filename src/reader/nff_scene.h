@@ -55,6 +55,12 @@ bool rd_pos(reader_t *r, const char *what, real_t *out);
 /* the same, with the number as written (*d) */
 bool rd_pos_decimal(reader_t *r, const char *what, decimal_t *d, real_t *out);
 bool rd_pos3(reader_t *r, const char *what, vec3_t *v);
+/* A position read (second pass) on the fixed build's position grid, in
+ * units of 2^-FX_FRAC_BITS in the scene's scale, the same in every build:
+ * what a degenerate shape (a zero radius, a point twice) is judged on, so
+ * that every build gives one verdict. */
+int32_t rd_grid(const reader_t *r, const decimal_t *d);
+bool rd_pos3_grid(reader_t *r, const char *what, vec3_t *v, int32_t g[3]);
 /* The "<what> before any 'f' material line" error unless there is one. */
 bool rd_need_material(reader_t *r, const char *what);
 /* The innermost open block, or NULL. */

@@ -261,9 +261,10 @@ bool rd_rotate(reader_t *r)
     block_t *b = step_block(r);
     vec3_t v;
     real_t deg;
-    if (!b || !lex_vec3(&r->lx, "rotate", &v) || !lex_real(&r->lx, "rotate", &deg))
+    bool zero;
+    if (!b || !lex_direction(&r->lx, "rotate", &v, &zero) || !lex_real(&r->lx, "rotate", &deg))
         return false;
-    if (v.x == 0 && v.y == 0 && v.z == 0)
+    if (zero)
         return lex_fail(&r->lx, r->lx.tok_line, "rotate: the axis is zero");
     if (!r->measuring)
         xform_rotate(&b->xf, v, deg);
@@ -301,10 +302,13 @@ bool rd_box(reader_t *r)
 {
     uint32_t line = r->lx.tok_line;
     vec3_t lo, hi;
-    if (!rd_need_material(r, "box") || !rd_pos3(r, "box", &lo) || !rd_pos3(r, "box", &hi))
+    int32_t glo[3], ghi[3];
+    if (!rd_need_material(r, "box") || !rd_pos3_grid(r, "box", &lo, glo) || !rd_pos3_grid(r, "box", &hi, ghi))
         return false;
     if (r->measuring)
         return true;
+    if (!(glo[0] < ghi[0] && glo[1] < ghi[1] && glo[2] < ghi[2]))
+        return lex_fail(&r->lx, line, "box has no volume");
     shape_t sh = { 0 };
     return add_shape(r, &sh, shape_init_box(&sh, lo, hi), 0, line);
 }
@@ -313,10 +317,13 @@ bool rd_torus(reader_t *r)
 {
     uint32_t line = r->lx.tok_line;
     real_t major, minor;
-    if (!rd_need_material(r, "torus") || !rd_pos(r, "torus", &major) || !rd_pos(r, "torus", &minor))
+    decimal_t d;
+    if (!rd_need_material(r, "torus") || !rd_pos(r, "torus", &major) || !rd_pos_decimal(r, "torus", &d, &minor))
         return false;
     if (r->measuring)
         return true;
+    if (rd_grid(r, &d) == 0)
+        return lex_fail(&r->lx, line, "torus minor radius is zero");
     shape_t sh = { 0 };
     return add_shape(r, &sh, shape_init_torus(&sh, major, minor), 0, line);
 }
@@ -419,12 +426,13 @@ bool rd_sphere_solid(reader_t *r)
     uint32_t line = r->lx.tok_line;
     vec3_t c;
     real_t a;
-    if (!rd_need_material(r, "s") || !rd_pos3(r, "s", &c) || !rd_pos(r, "s", &a))
+    decimal_t d;
+    if (!rd_need_material(r, "s") || !rd_pos3(r, "s", &c) || !rd_pos_decimal(r, "s", &d, &a))
         return false;
     if (r->measuring)
         return true;
     a = r_abs(a);
-    if (a == 0)
+    if (rd_grid(r, &d) == 0)
         return lex_fail(&r->lx, line, "sphere radius is zero");
     if (!sizes_ok(r, v3(a, a, a), "s", line))
         return false;

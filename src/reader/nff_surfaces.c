@@ -19,10 +19,13 @@ bool rd_plane(reader_t *r)
     scene_t *sc = &r->st->scene;
     uint32_t line = r->lx.tok_line;
     vec3_t p, n;
+    bool zero;
     if (!rd_need_material(r, "plane") ||
         (!r->measuring && !CHECK_ROOM(r, sc->n_planes, RT_MAX_PLANES, "planes")) || !rd_pos3(r, "plane", &p) ||
-        !lex_vec3(&r->lx, "plane", &n))
+        !lex_direction(&r->lx, "plane", &n, &zero))
         return false;
+    if (zero)
+        return lex_fail(&r->lx, line, "plane normal is zero");
     if (r->measuring)
         return true;
     const char *why = plane_init(&r->st->planes[sc->n_planes], p, n, r->material);
@@ -112,17 +115,16 @@ bool rd_sky(reader_t *r)
     uint32_t line = r->lx.tok_line;
     if (sky->on)
         return lex_fail(&r->lx, line, "sky: a second sky");
-    decimal_t d;
     vec3_t up;
+    bool zero;
     if (!lex_vec3(&r->lx, "sky", &sky->horizon) || !lex_vec3(&r->lx, "sky", &sky->zenith) ||
-        !lex_vec3(&r->lx, "sky", &up) || !lex_decimal(&r->lx, "sky", &d))
+        !lex_direction(&r->lx, "sky", &up, &zero) ||
+        !lex_shine(&r->lx, "sky: exponent must be from 2^-12 to 524287", true, &sky->exponent))
         return false;
-    if (!shine_from_decimal(d.neg, d.mant, d.exp10, &sky->exponent) || sky->exponent == 0)
-        return lex_fail(&r->lx, r->lx.tok_line, "sky: exponent must be above 0 and at most 524287");
+    if (zero)
+        return lex_fail(&r->lx, line, "sky: up direction is zero");
     sky->up = v3_unit(up);
     sky->up_axis = v3_axis_of(sky->up);
-    if (sky->up.x == 0 && sky->up.y == 0 && sky->up.z == 0)
-        return lex_fail(&r->lx, line, "sky: up direction is zero");
     sky->on = !r->measuring;
     return true;
 }
