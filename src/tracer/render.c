@@ -181,7 +181,7 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
 static real_t clamp_unit(real_t c) { return c > 0 ? (c < R_ONE ? c : R_ONE) : 0; }
 
 /* Sample (i, j), whose spacing to its neighbours at its level is 2^shift
- * cells (the eye ray's cone spread). */
+ * cells: its eye ray's cone spreads 2^shift times the camera's. */
 static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j, unsigned shift)
 {
     eye_sample(wk, 2 * i - wk->cam.cx, 2 * j - wk->cam.cy);
@@ -490,6 +490,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 #if RT_RAY_CONES
     if (opts->point_textures) /* cones of no width: every texture at the hit point */
         wk->cam.spread = 0;
+#if RT_USE_AA
+    /* adaptive: a corner stands for the squares around it, which a pixel
+     * weighs by their mean, so its cone spreads half its spacing */
+    if (ctx->aa_levels)
+        wk->cam.spread /= 2;
+#endif
 #endif
     scene_eye_setup(sc, &wk->cam, &wk->scratch);
     /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
