@@ -65,17 +65,17 @@ typedef struct {
      * 0 for both: one sample at the pixel's centre (the default). Neither
      * goes with SPD mode, nor with each other. */
     uint8_t aa_levels, aa_threshold, spp;
-    /* Textures sampled at the hit point, as the pixel-area image takes
-     * them, instead of averaged over each ray's footprint (the default
-     * where the build has RT_TEXTURE_FILTER; docs/shading-model.md,
-     * "Filtered textures"). */
-    bool point_textures;
     void *scratch; /* aligned for the core's real_t (8 bytes will do) */
     size_t scratch_bytes;
     /* Which of the RT_MAX_WORKERS workers (rt_config.h) renders: renders
      * running at the same time, on other cores or threads, each need
      * their own (and their own sink and stats). 0 by default. */
     uint8_t worker;
+    /* Textures sampled at the hit point, as the pixel-area image takes
+     * them, instead of averaged over each ray's footprint (the default
+     * where the build has RT_TEXTURE_FILTER; docs/shading-model.md,
+     * "Filtered textures"). */
+    bool point_textures;
 } rt_render_opts_t;
 
 /* Scratch sizes in colours (three scalars each) and in bytes. SPD mode:
