@@ -258,7 +258,7 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
  * other surface (docs/shading-model.md, "Filtered textures"). */
 static real_t cone_bend(const tracer_t *tr, const surface_t *s)
 {
-    (void)tr;
+    (void)tr, (void)s;
 #if RT_USE_SPHERES
     if (s->ref != PRIM_NONE && PRIM_KIND(s->ref) == PRIM_SPHERE && s->cone_width != 0) {
         const sphere_t *sp = &tr->scene->spheres[PRIM_INDEX(s->ref)];
