@@ -4,7 +4,7 @@
 For every SPD size-1/2 scene and demo scene at 128x128, depth 5, the fixed
 build with one sample a pixel, uniform 2x2 and 4x4 (rt --spp 2, 4) and
 adaptive subdivision at several levels and thresholds (rt --aa L,T) is
-measured against the pixel-area image (rt --double --spp 16,
+measured against the pixel-area image (rt --double --spp 16 --texture-filter off,
 docs/shading-model.md) for
   - PSNR and the share of pixels off by more than 8/255;
   - host time: median of 3 runs of rt --threads 1, seconds;
@@ -128,7 +128,7 @@ def main():
     rows = []
     for s in scenes:
         ref = os.path.join(OUT, s + "-area.png")
-        render(s, ref, ["--double", "--spp", "16", "--threads", "2"])
+        render(s, ref, ["--double", "--spp", "16", "--texture-filter", "off", "--threads", "2"])
         base = None
         for label, opts, variables in MODES:
             out = os.path.join(OUT, "%s-%s.png" % (s, label.replace(" ", "_").replace(",", "_")))
@@ -160,7 +160,7 @@ def main():
     dither_rows = []
     for s in ["showpiece", "balls-2"]:
         for fmt in ("rgb888", "l8"):
-            render(s, os.path.join(OUT, "%s-area-%s.png" % (s, fmt)), ["--double", "--spp", "16", "--format", fmt,
+            render(s, os.path.join(OUT, "%s-area-%s.png" % (s, fmt)), ["--double", "--spp", "16", "--texture-filter", "off", "--format", fmt,
                                                                        "--threads", "2"])
         for fmt, src in (("rgb565", "rgb888"), ("l8", "l8"), ("l4", "l8")):
             ref = os.path.join(OUT, "%s-area-%s.png" % (s, src))
@@ -188,7 +188,7 @@ def main():
         write_svg(os.path.join(ROOT, "bench", "aa-plot.svg"), agg)
     md = ["# Anti-aliasing: error against the pixel-area image, and cost", "",
           "From `bench/aa_bench.py` (`make bench`): %s, depth 5, fixed build; reference the pixel-area image "
-          "(`rt --double --spp 16`). Cost: board instructions a pixel on mps2-an385 (QEMU `-icount shift=0`) "
+          "(`rt --double --spp 16 --texture-filter off`). Cost: board instructions a pixel on mps2-an385 (QEMU `-icount shift=0`) "
           "and its ratio to one sample; host time is the median of 3 runs of `rt --threads 1` on this "
           "machine (noisy; the instruction counts are exact)." % SIZE, ""]
     if agg:

@@ -14,7 +14,8 @@ shows more of the scene and costs about 10% less a pixel), and this records
     as cycles per instruction times the instructions per pixel;
   - the error against the exact double build at the same samples (the
     number format's) and against the pixel-area image (rt --double
-    --spp 16: what a viewer sees; one sample per pixel aliases).
+    --spp 16 --texture-filter off: what a viewer sees; one sample per
+    pixel aliases).
 It writes bench/scenes.md and bench/scenes.csv.
 
   bench/scenes_bench.py [--boards a,b] [--scenes a,b] [--size WxH] [--no-cycles] [--update]
@@ -65,7 +66,8 @@ def reference(scene, size, fmt, spp):
     ref = os.path.join(OUT, "ref-%s-%s-%s-spp%d.png" % (scene, size, fmt, spp))
     if not os.path.exists(ref):
         run(["build/host/rt", scene_path(scene), "-o", ref, "--double", "--size", size, "--depth",
-             str(SCENES[scene]), "--format", fmt, "--spp", str(spp), "--quiet"])
+             str(SCENES[scene]), "--format", fmt, "--spp", str(spp), "--quiet"]
+            + (["--texture-filter", "off"] if spp > 1 else []))  # the pixel-area image: point-sampled
     return ref
 
 
@@ -138,7 +140,7 @@ def main():
                 "over the whole render (its Cortex-M0+ timing: no flash wait states or XIP\n"
                 "cache; its SIO divider charged 16 cycles a division, the silicon's 8; one core,\n"
                 "the second is not emulated); PSNR against the exact double build at the same samples and\n"
-                "against the pixel-area image (rt --double --spp 16).\n\n" % a.size)
+                "against the pixel-area image (rt --double --spp 16 --texture-filter off).\n\n" % a.size)
         f.write("Published figures, cycles per pixel at 320x240 (time x clock / 76,800):\n\n")
         f.write("| chip | FPU | scene | clock | time | cycles/px |\n|---|---|---|---|---|---|\n")
         for chip, fpu, s, hz, t in PUBLISHED:

@@ -215,6 +215,11 @@
 #define RT_USE_MARBLE 1
 #endif
 #define RT_USE_TEXTURES (RT_USE_CHECKER || RT_USE_MARBLE)
+#ifndef RT_TEXTURE_FILTER           /* textures averaged over each ray's footprint (ray cones), */
+#define RT_TEXTURE_FILTER 1         /* not sampled at the hit point (rt_render_opts_t.point_textures) */
+#endif
+/* Rays carry a cone (width and spread) only where a texture filters. */
+#define RT_RAY_CONES (RT_USE_TEXTURES && RT_TEXTURE_FILTER)
 #ifndef RT_USE_SKY                  /* a sky (by direction) instead of a background colour */
 #define RT_USE_SKY 1
 #endif

@@ -71,6 +71,11 @@ typedef struct {
      * running at the same time, on other cores or threads, each need
      * their own (and their own sink and stats). 0 by default. */
     uint8_t worker;
+    /* Textures sampled at the hit point, as the pixel-area image takes
+     * them, instead of averaged over each ray's footprint (the default
+     * where the build has RT_TEXTURE_FILTER; docs/shading-model.md,
+     * "Filtered textures"). */
+    bool point_textures;
 } rt_render_opts_t;
 
 /* Scratch sizes in colours (three scalars each) and in bytes. SPD mode:

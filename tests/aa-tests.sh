@@ -32,7 +32,7 @@ spd_path() { [ -f "scenes/spd/$1.nff" ] && echo "scenes/spd/$1.nff" || echo "sce
 target="balls-2 rings-1 teapot-1 showpiece"
 others="balls-1 gears-1 rings-2 tetra-1 tetra-2 teapot-2 boxes csg quadrics torus transforms"
 for s in $target $others; do
-    if ! "$RT_FAST" "$(spd_path $s)" -o "$OUT/$s-ref.png" --double --spp 16 --size $SIZE --quiet 2>"$OUT/$s.err"; then
+    if ! "$RT_FAST" "$(spd_path $s)" -o "$OUT/$s-ref.png" --double --spp 16 --texture-filter off --size $SIZE --quiet 2>"$OUT/$s.err"; then
         bad "$s: reference render failed: $(cat "$OUT/$s.err")"
     fi
 done

@@ -4,7 +4,7 @@
  * shares no code with src/ and favours obviousness over speed: no
  * acceleration structure, every ray tests every primitive.
  *
- *   ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F]
+ *   ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F] [--texture-filter on|off]
  *
  * --far F: the half side of the far cube that ends planes (the model
  * derives it from the reader's scale: F = 2^(9 - scene_scale_log2) of
@@ -668,21 +668,77 @@ static double noise(Vec q)
     return sum;
 }
 
-/* C at P */
-static Vec colour_at(const Material *m, Vec P)
+/* ---- filtered textures (docs/shading-model.md, "Filtered textures") ---- */
+
+static int texture_filter = 1; /* --texture-filter off: 0, point samples */
+
+static double triangle(double y) /* the integral of the square wave: 1 - |(y mod 2) - 1| */
 {
+    double m = y - 2 * floor(y / 2);
+    return 1 - fabs(m - 1);
+}
+
+/* the mean of the square wave (+1 on even cells) over [x - h, x + h] */
+static double square_mean(double x, double h)
+{
+    if (floor(x - h) == floor(x + h))
+        return fmod(floor(x), 2) != 0 ? -1 : 1;
+    return (triangle(x + h) - triangle(x - h)) / (2 * h);
+}
+
+/* the integral of |2 frac(y) - 1| from 0 */
+static double stripes_integral(double y)
+{
+    double n = floor(y), f = y - n;
+    return n / 2 + (f <= 0.5 ? f - f * f : 0.25 + (f - 0.5) * (f - 0.5));
+}
+
+/* the mean of |2 frac(y) - 1| over [y - h, y + h] */
+static double stripes_mean(double y, double h)
+{
+    double lo = y - h, hi = y + h;
+    if (floor(2 * lo) == floor(2 * hi)) /* one straight piece */
+        return fabs(2 * (y - floor(y)) - 1);
+    return (stripes_integral(hi) - stripes_integral(lo)) / (2 * h);
+}
+
+static double fade_octave(double x) { return fmin(1, fmax(0, 2 - 2 * x)); }
+
+/* Half-extents along the axes, in cells of `size`, of the ellipse where a
+ * cone of width w along d meets the surface of normal n (facing d). */
+static void extents(double size, Vec d, Vec n, double w, double h[3])
+{
+    double rho = fmin(fabs(w) / (2 * size), 1024), cs = -dot(d, n), c = fmax(cs, 1.0 / 256);
+    Vec T = add(d, mul(n, cs));
+    int a;
+    for (a = 0; a < 3; a++) {
+        double na = comp(n, a), ta = comp(T, a);
+        h[a] = fmin(rho * sqrt(c * c * (1 - na * na) + ta * ta) / c, 1024);
+    }
+}
+
+/* C at P, seen along d on the surface of normal n by a cone of width w */
+static Vec colour_at(const Material *m, Vec P, Vec d, Vec n, double w)
+{
+    double h[3] = { 0, 0, 0 };
+    if (m->tex != TEX_NONE && w != 0)
+        extents(m->size, d, n, w, h);
     if (m->tex == TEX_CHECKER) {
-        long n = 0;
+        double prod = 1;
         int i;
         for (i = 0; i < 3; i++)
             if (m->axes >> i & 1)
-                n += (long)floor(comp(P, i) / m->size);
-        return n % 2 ? m->cb : m->ca;
+                prod *= square_mean(comp(P, i) / m->size, h[i]);
+        return add(m->ca, mul(sub(m->cb, m->ca), (1 - prod) / 2));
     }
     if (m->tex == TEX_MARBLE) {
         Vec q = mul(P, 1 / m->size);
-        double w = q.x + m->amount * (noise(q) + noise(mul(q, 2)) / 2), f = w - floor(w);
-        return add(m->ca, mul(sub(m->cb, m->ca), fabs(2 * f - 1)));
+        double rho = fmax(h[0], fmax(h[1], h[2]));
+        double o1 = fade_octave(2 * rho), o2 = fade_octave(4 * rho);
+        double nz = (o1 > 0 ? o1 * noise(q) : 0) + (o2 > 0 ? o2 * noise(mul(q, 2)) / 2 : 0);
+        double y = q.x + m->amount * nz;
+        double k = stripes_mean(y, h[0] + m->amount * rho * (o1 + o2));
+        return add(m->ca, mul(sub(m->cb, m->ca), k));
     }
     return m->c;
 }
@@ -706,7 +762,9 @@ static int refract(Vec d, Vec n, double eta, Vec *out)
     return 1;
 }
 
-static Vec trace(Vec o, Vec d, int depth)
+/* The colour along o + t d; the ray's cone has width w0 at o and grows
+ * by spread a unit of t. */
+static Vec trace(Vec o, Vec d, int depth, double w0, double spread)
 {
     double t, I = nlights ? sqrt((double)nlights) / (2.0 * (double)nlights) : 0;
     long h = nearest(o, d, INFINITY, 0, &t);
@@ -715,6 +773,7 @@ static Vec trace(Vec o, Vec d, int depth)
     Vec P, ng, ngo, n, col, out, C;
     size_t i;
     int entering;
+    double w, bend;
     if (h < 0)
         return missed(d);
     p = &prims[h];
@@ -727,7 +786,10 @@ static Vec trace(Vec o, Vec d, int depth)
         n = mul(n, -1);
     /* secondary rays on the side they leave, clear of the surface */
     out = add(P, mul(ngo, eps_offset));
-    C = colour_at(m, P);
+    w = w0 + spread * t; /* the cone's width at P */
+    /* its bend: w times the curvature, +-1/r on a sphere (+ from outside) */
+    bend = p->kind == SPHERE ? (entering ? w / p->r : -w / p->r) : 0;
+    C = colour_at(m, P, d, n, w);
     col = mul(C, I * m->kd);
     for (i = 0; i < nlights; i++) {
         Vec L = norm(sub(lights[i].pos, P)), toward = sub(lights[i].pos, out), R;
@@ -751,7 +813,7 @@ static Vec trace(Vec o, Vec d, int depth)
              * surface is mirrored about the geometric normal instead */
             if (dot(r, ngo) <= 0)
                 r = sub(d, mul(ngo, 2 * dot(d, ngo)));
-            col = add(col, mul(trace(out, norm(r), depth + 1), m->ks));
+            col = add(col, mul(trace(out, norm(r), depth + 1, w, spread + 2 * bend), m->ks));
         }
         if (m->t > 0) {
             double eta = entering ? 1 / m->ior : m->ior;
@@ -763,7 +825,8 @@ static Vec trace(Vec o, Vec d, int depth)
                 ok = refract(d, ngo, eta, &dir);
             if (ok) { /* else total internal reflection: no ray */
                 Vec in = sub(P, mul(ngo, eps_offset));
-                col = add(col, mul(trace(in, dir, depth + 1), m->t));
+                double ci = -dot(d, n), ct = -dot(dir, n);
+                col = add(col, mul(trace(in, dir, depth + 1, w, eta * spread + (eta * ci - ct) * bend), m->t));
             }
         }
     }
@@ -784,7 +847,7 @@ static unsigned char byte(double c)
 
 static void usage(void)
 {
-    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F]\n", stderr);
+    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F] [--texture-filter on|off]\n", stderr);
     exit(2);
 }
 
@@ -831,6 +894,11 @@ int main(int argc, char **argv)
             spp = whole(argv[++i], &end, 1, 64);
             if (*end)
                 usage();
+        } else if (!strcmp(argv[i], "--texture-filter") && i + 1 < argc) {
+            i++;
+            if (strcmp(argv[i], "on") && strcmp(argv[i], "off"))
+                usage();
+            texture_filter = !strcmp(argv[i], "on");
         } else if (argv[i][0] != '-' && !scene) {
             scene = argv[i];
         } else {
@@ -889,7 +957,7 @@ int main(int argc, char **argv)
                 for (a = 0; a < spp; a++) {
                     double x = i - 0.5 + (a + 0.5) / spp, y = j - 0.5 + (b + 0.5) / spp;
                     Vec dir = norm(add(w, add(mul(u, (x - (X - 1) / 2.0) * s), mul(v, -(y - (Y - 1) / 2.0) * s))));
-                    Vec c = trace(from, dir, 1);
+                    Vec c = trace(from, dir, 1, 0, texture_filter ? s / spp : 0);
                     sum = add(sum, vec(clamp01(c.x), clamp01(c.y), clamp01(c.z)));
                 }
             }

@@ -303,8 +303,8 @@ run: deps-board
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
 	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))$(if $(RUN_DITHER), $(RUN_DITHER))) vs $(RUN_REF_IS) with the same samples (the number format): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
-	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board vs the pixel-area image (rt --double --spp 16, $(RUN_AREA_FORMAT): what a viewer sees): '
+	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@printf 'board vs the pixel-area image (rt --double --spp 16 --texture-filter off, $(RUN_AREA_FORMAT): what a viewer sees): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA)
 	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1

@@ -46,6 +46,10 @@ static const char usage_text[] =
     "                      L times (1..%d)\n"
     "  --spp N             uniform anti-aliasing: N x N samples a pixel (2..%d;\n"
     "                      --double --spp 16 is the converged pixel-area image)\n"
+    "  --texture-filter on|off\n"
+    "                      textures averaged over each pixel's footprint (on, the\n"
+    "                      default) or sampled at the hit point (off: the model\n"
+    "                      of the pixel-area image, --double --spp 16 --texture-filter off)\n"
     "  --adaptive W        skip child rays whose share of the pixel is below W\n"
     "                      (0.001..1; off by default)\n"
     "  --threads N         render with N threads, 1..%d (default: the online CPUs,\n"
@@ -156,7 +160,7 @@ static void print_usage(void)
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_TEXTURE_FILTER, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR, OPT_BLUR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -175,6 +179,7 @@ static const struct option render_options[] = {
     { "spd", no_argument, NULL, OPT_SPD },
     { "aa", required_argument, NULL, OPT_AA },
     { "spp", required_argument, NULL, OPT_SPP },
+    { "texture-filter", required_argument, NULL, OPT_TEXTURE_FILTER },
     { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
     { "threads", required_argument, NULL, OPT_THREADS },
     { "quiet", no_argument, NULL, OPT_QUIET },
@@ -186,7 +191,7 @@ static const struct option render_options[] = {
 static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
     { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" },
-    { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" },
+    { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" }, { OPT_TEXTURE_FILTER, "on or off" },
     { OPT_THREADS, "a number" }, { 0, NULL },
 };
 
@@ -328,6 +333,11 @@ static int cmd_render(int argc, char **argv)
             opts.spp = (uint8_t)n;
             break;
         }
+        case OPT_TEXTURE_FILTER:
+            if (strcmp(optarg, "on") != 0 && strcmp(optarg, "off") != 0)
+                return render_usage_error("--texture-filter: expected on or off, got '%s'", optarg);
+            opts.point_textures = !strcmp(optarg, "off");
+            break;
         case OPT_ADAPTIVE: {
             double v;
             if (!parse_double(optarg, &v) || v < 0.001 || v > 1)

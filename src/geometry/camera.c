@@ -32,6 +32,9 @@ RT_COLD const char *camera_setup(camera_t *c, const view_t *view, int32_t span, 
         dist = R_ONE;
     }
     c->half_span = r_wmul_real(half_step, dist);
+#if RT_RAY_CONES
+    c->spread = r_from_wide(half_step + half_step);
+#endif
     return 0;
 }
 
@@ -97,6 +100,10 @@ ray_t camera_next(const camera_t *c, camera_row_t *row)
     r.from = PRIM_NONE;
     r.from_far = false;
     r.leaf = RT_NO_LEAF;
+#if RT_RAY_CONES
+    r.cone_spread = c->spread; /* the cone's apex is at the eye */
+    r.cone_width = r_mul(c->spread, c->start);
+#endif
     return r;
 }
 

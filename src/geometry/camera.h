@@ -17,6 +17,10 @@ typedef struct {
     real_t start;             /* rays start this far from the eye */
     int32_t cx, cy;           /* sample (i, j) lies (2i - cx, 2j - cy) half
                                * spans from T's reference point */
+#if RT_RAY_CONES
+    real_t spread;            /* eye rays' cone spread: the spacing of
+                               * adjacent samples at unit distance, s / sub */
+#endif
 } camera_t;
 
 /* NULL, or why the view cannot make a camera (rays start at the eye) whose

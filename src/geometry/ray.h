@@ -41,6 +41,12 @@ typedef struct {
     prim_ref_t from;
     bool from_far;
     uint32_t leaf;
+#if RT_RAY_CONES
+    /* The ray's cone (docs/shading-model.md, "Filtered textures"): its
+     * signed width at the origin and its spread, the width's growth per
+     * unit of distance (negative: converging). */
+    real_t cone_width, cone_spread;
+#endif
 } ray_t;
 
 static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin, t, r->dir); }

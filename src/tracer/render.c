@@ -180,10 +180,18 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
  * samples are every other corner: the cells' centres) to a pixel side. */
 static real_t clamp_unit(real_t c) { return c > 0 ? (c < R_ONE ? c : R_ONE) : 0; }
 
-static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j)
+/* Sample (i, j), whose spacing to its neighbours at its level is 2^shift
+ * cells: its eye ray's cone spreads 2^shift times the camera's. */
+static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j, unsigned shift)
 {
     eye_sample(wk, 2 * i - wk->cam.cx, 2 * j - wk->cam.cy);
     ray_t ray = camera_ray(&wk->cam, i, j);
+#if RT_RAY_CONES
+    ray.cone_spread *= (int32_t)1 << shift; /* exact: a power of two */
+    ray.cone_width *= (int32_t)1 << shift;
+#else
+    (void)shift;
+#endif
     wk->scratch.stats.eye_rays++;
     colour_t c = trace_ray(&wk->tr, &ray, 1, R_ONE);
     return v3(clamp_unit(c.x), clamp_unit(c.y), clamp_unit(c.z));
@@ -198,7 +206,7 @@ static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
         colour_t sum = v3(0, 0, 0);
         for (int32_t b = 0; b < n; b++)
             for (int32_t a = 0; a < n; a++)
-                sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1));
+                sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1, 1));
         put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale), dither_at(ctx, ctx->x0 + x, y));
     }
 }
@@ -213,7 +221,7 @@ static void aa_corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t
     for (uint32_t i = 0; i <= (uint32_t)w << levels; i++)
         row[i].x = NOT_TRACED;
     for (uint32_t i = 0; i <= w; i++)
-        row[i << levels] = aa_sample(wk, (int32_t)(x0 + i) << levels, j);
+        row[i << levels] = aa_sample(wk, (int32_t)(x0 + i) << levels, j, levels);
 }
 
 /* The largest difference of one channel among four corners. */
@@ -235,12 +243,28 @@ typedef struct {
     bool dirty;    /* a corner of mid traced since mid was last cleared */
 } aa_grid_t;
 
+/* The level of corner (x, y) of a pixel of sub cells a side: its spacing
+ * in the coarsest grid of squares that has it, 2^shift cells (sub: the
+ * pixel's corners). By position alone, so the same wherever it is traced. */
+static unsigned corner_shift(unsigned x, unsigned y, unsigned sub)
+{
+    unsigned shift = 0;
+#if RT_RAY_CONES
+    unsigned m = x | y | sub;
+    while (!(m >> shift & 1u))
+        shift++;
+#else
+    (void)x, (void)y, (void)sub; /* no cones to spread */
+#endif
+    return shift;
+}
+
 /* Corner (x, y) of the pixel, traced if it is not yet. */
 static const colour_t *aa_corner(struct rt_worker *wk, aa_grid_t *p, unsigned x, unsigned y)
 {
     colour_t *c = y == 0 ? &p->top[x] : y == p->sub ? &p->bottom[x] : &p->mid[(y - 1) * (p->sub + 1) + x];
     if (c->x < 0) {
-        *c = aa_sample(wk, p->i + (int32_t)x, p->j + (int32_t)y);
+        *c = aa_sample(wk, p->i + (int32_t)x, p->j + (int32_t)y, corner_shift(x, y, p->sub));
         p->dirty |= y != 0 && y != p->sub;
     }
     return c;
@@ -463,6 +487,16 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, why);
         return -1;
     }
+#if RT_RAY_CONES
+    if (opts->point_textures) /* cones of no width: every texture at the hit point */
+        wk->cam.spread = 0;
+#if RT_USE_AA
+    /* adaptive: a corner stands for the squares around it, which a pixel
+     * weighs by their mean, so its cone spreads half its spacing */
+    if (ctx->aa_levels)
+        wk->cam.spread /= 2;
+#endif
+#endif
     scene_eye_setup(sc, &wk->cam, &wk->scratch);
     /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
     if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)

@@ -18,6 +18,9 @@ typedef struct {
     uint32_t leaf;   /* its BVH leaf (ray_t) */
     real_t offset;   /* origin offset of rays leaving it (tolerance.h) */
     const material_t *m;
+#if RT_RAY_CONES
+    real_t cone_width; /* the incoming ray's cone here (signed) */
+#endif
 } surface_t;
 /* The geometric normal: n itself but on a patch (one vector less in the
  * recursive frame where the build has no patches). */
@@ -46,6 +49,9 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
         s->n = v3_dot_in_range(ps.n, ray->dir) < 0 ? ps.n : v3_neg(ps.n);
 #endif
     s->m = &sc->materials[ps.material];
+#if RT_RAY_CONES
+    s->cone_width = r_add_sat(ray->cone_width, r_mul(ray->cone_spread, h->t));
+#endif
 }
 
 /* The start of a ray leaving surface s: to the side the incoming ray came
@@ -109,7 +115,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
     const scene_t *sc = tr->scene;
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
-    (void)ray; /* only the lights' shares look at it */
+    (void)ray; /* only the lights' shares and a filtered texture look at it */
     material_terms_t *t = &tr->terms[depth - 1];
     /* Kd C and I Kd C are kept per depth until the material or, under a
      * texture, C changes: a checker's tile mostly repeats ray after ray. */
@@ -117,7 +123,12 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
 #if RT_USE_TEXTURES
     colour_t base = m->colour;
     if (m->texture != TEXTURE_NONE) {
-        base = texture_colour(&sc->textures[m->texture], s->point);
+#if RT_RAY_CONES
+        const footprint_t fp = { ray->dir, s->n, s->cone_width };
+        base = texture_colour(&sc->textures[m->texture], s->point, &fp);
+#else
+        base = texture_colour(&sc->textures[m->texture], s->point, 0);
+#endif
         same = same && base.x == t->base.x && base.y == t->base.y && base.z == t->base.z;
     }
 #else
@@ -241,6 +252,52 @@ RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t c
 }
 #endif
 
+#if RT_RAY_CONES && (RT_USE_REFLECTION || RT_USE_REFRACTION)
+/* The cone's bend at s: its width there times the surface's curvature,
+ * 1/r on a sphere met from outside and -1/r from inside, 0 on every
+ * other surface (docs/shading-model.md, "Filtered textures"). */
+static real_t cone_bend(const tracer_t *tr, const surface_t *s)
+{
+    (void)tr, (void)s;
+#if RT_USE_SPHERES
+    if (s->ref != PRIM_NONE && PRIM_KIND(s->ref) == PRIM_SPHERE && s->cone_width != 0) {
+        const sphere_t *sp = &tr->scene->spheres[PRIM_INDEX(s->ref)];
+        real_t bend = r_mul(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius));
+        return s->entering ? bend : -bend;
+    }
+#endif
+    return 0;
+}
+#endif
+
+#if RT_RAY_CONES && RT_USE_REFLECTION
+/* The mirror ray's cone: the same width, the spread grown by twice the
+ * bend (a convex mirror spreads it). */
+static void cone_reflected(const tracer_t *tr, const ray_t *ray, const surface_t *s, ray_t *out)
+{
+    real_t bend = cone_bend(tr, s);
+    out->cone_width = s->cone_width;
+    out->cone_spread = r_add_sat(ray->cone_spread, r_add_sat(bend, bend));
+}
+#endif
+
+#if RT_RAY_CONES && RT_USE_REFRACTION
+/* The refracted ray's cone: the same width, the spread eta times the
+ * incoming one plus (eta cos_i - cos_t) times the bend (a convex surface
+ * into a denser medium focuses it). */
+static void cone_refracted(const tracer_t *tr, const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+{
+    real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior;
+    real_t bend = cone_bend(tr, s);
+    out->cone_width = s->cone_width;
+    out->cone_spread = r_mul(eta, ray->cone_spread);
+    if (bend != 0) {
+        real_t cos_t = -v3_dot_in_range(out->dir, s->n);
+        out->cone_spread = r_add_sat(out->cone_spread, r_mul(r_mul(eta, cos_i) - cos_t, bend));
+    }
+}
+#endif
+
 /* What a ray that meets nothing sees. */
 static colour_t background(const scene_t *sc, const ray_t *ray)
 {
@@ -286,6 +343,9 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
 #if RT_USE_REFLECTION
     if (mirrors && worth_tracing(tr, r_mul(weight, m->ks))) {
         reflected(ray, &s, &tr->terms[depth - 1].mirror, &next);
+#if RT_RAY_CONES
+        cone_reflected(tr, ray, &s, &next);
+#endif
         tr->scratch->stats.reflect_rays++;
         colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
         if (m->ks > 0)
@@ -296,6 +356,9 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
     if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
         tr->scratch->stats.refract_rays++;
+#if RT_RAY_CONES
+        cone_refracted(tr, ray, &s, cos_i, &next);
+#endif
         c = colour_add_scaled(c, trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t);
     }
 #endif
