@@ -7,6 +7,7 @@
 #include "reader/nff.h"
 #include "geometry/prims.h"
 #include "geometry/scene_hit.h"
+#include "tracer/texture.h"
 #include "tracer/trace.h"
 
 /* BACKEND_ID (from the Makefile) names this build: rt_backend_<id>. */
@@ -184,7 +185,18 @@ static double pow_unit(double x, double s)
     return to_double(r_pow_unit(to_real(x), sh));
 }
 
+static bool texture_at(uint32_t texture, const double p[3], double rgb[3])
+{
+    if (texture >= store.scene.n_textures)
+        return false;
+    double w = world_per_unit();
+    vec3_t q = v3(to_real(p[0] / w), to_real(p[1] / w), to_real(p[2] / w));
+    colour_t c = texture_colour(&store.scene.textures[texture], q, 0);
+    rgb[0] = to_double(c.x), rgb[1] = to_double(c.y), rgb[2] = to_double(c.z);
+    return true;
+}
+
 const rt_backend_t BACKEND_SYMBOL = {
     load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, rt_stats_add, probe, probe_leaf, occluded,
-    bounds, eye_dir, pow_unit,
+    bounds, eye_dir, pow_unit, texture_at,
 };

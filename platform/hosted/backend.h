@@ -69,6 +69,10 @@ typedef struct {
     /* x^s as the shading computes it (r_pow_unit), x and s first
      * converted to the backend's real_t and shine_t. */
     double (*pow_unit)(double x, double s);
+    /* Texture `texture` of the loaded scene at point p (file units, first
+     * converted to the backend's real_t), point-sampled; false if there is
+     * no such texture. */
+    bool (*texture_at)(uint32_t texture, const double p[3], double rgb[3]);
 } rt_backend_t;
 
 /* The builds of the core in the host tools, one row each: X(id, name,

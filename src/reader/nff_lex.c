@@ -295,9 +295,13 @@ bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t
     if (!lex_decimal(lx, what, &d))
         return false;
     uint64_t v = d.mant;
+    while (d.exp10 < 0 && v % 10 == 0 && v != 0) { /* 32.0 and 3.2e1 are 32 too */
+        v /= 10;
+        d.exp10++;
+    }
     for (int32_t i = 0; i < d.exp10 && v <= hi; i++)
         v *= 10;
-    if (d.neg || d.exp10 < 0 || v < lo || v > hi) {
+    if ((d.neg && v != 0) || (d.exp10 < 0 && v != 0) || v < lo || v > hi) {
         rt_error_set(lx->err, lx->tok_line, what);
         rt_error_append(lx->err, ": expected a whole number from ");
         rt_error_append_int(lx->err, (int32_t)lo);
