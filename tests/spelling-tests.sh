@@ -1,0 +1,33 @@
+#!/bin/sh
+# Images depend on the numbers' values, not on how they are written: every
+# scene of scenes/ and tests/ (the fuzz seeds and the bad inputs too) is
+# rewritten with trailing zeros, leading zeros, exponents and '+' signs
+# (tests/respell.py) and must render byte-identical images, or fail with
+# the same message (but for the token it quotes), in the fixed, float and
+# double builds.
+RT=${1:-build/asan/rt}
+OUT=${2:-build/test-spelling}
+pass=0 fail=0
+mkdir -p "$OUT"
+echo "spelling tests: 16x16 depth 3, each scene as written and respelled, every backend"
+for f in scenes/*.nff scenes/*/*.nff tests/fuzz-corpus/*.nff tests/bad/*.nff; do
+    name=$(echo "$f" | tr '/' '_')
+    python3 tests/respell.py "$f" "$OUT/$name" || { fail=$((fail + 1)); echo "  FAIL  $f: respell.py"; continue; }
+    for b in --fixed --float --double; do
+        "$RT" "$f" -o "$OUT/a.ppm" --size 16x16 --depth 3 $b 2>"$OUT/a.err"; sa=$?
+        "$RT" "$OUT/$name" -o "$OUT/b.ppm" --size 16x16 --depth 3 $b 2>"$OUT/b.err"; sb=$?
+        # (a message quoting the token it found quotes it as written)
+        ea=$(sed "s|^$f:||; s|, found '.*'||" "$OUT/a.err") eb=$(sed "s|^$OUT/$name:||; s|, found '.*'||" "$OUT/b.err")
+        if [ $sa -ne $sb ] || [ "$ea" != "$eb" ]; then
+            fail=$((fail + 1)); echo "  FAIL  $f $b: status $sa/$sb, '$ea' / '$eb'"
+        elif [ $sa -eq 0 ] && ! cmp -s "$OUT/a.ppm" "$OUT/b.ppm"; then
+            fail=$((fail + 1)); echo "  FAIL  $f $b: the respelled scene renders a different image"
+        else
+            pass=$((pass + 1))
+        fi
+        rm -f "$OUT/a.ppm" "$OUT/b.ppm"
+    done
+done
+echo "  ($pass scene and backend pairs identical)"
+echo "spelling: $pass passed, $fail failed"
+[ $fail -eq 0 ]
