@@ -29,5 +29,18 @@ for f in scenes/*.nff scenes/*/*.nff tests/fuzz-corpus/*.nff tests/bad/*.nff; do
     done
 done
 echo "  ($pass scene and backend pairs identical)"
+# the scale itself: one sphere's radius written five ways
+for b in --fixed --float --double; do
+    ks=""
+    for r in 1.5 1.50 15e-1 +0001.5000 0.15E+1; do
+        printf 'v\nfrom 0 -20 0\nat 0 0 0\nup 0 0 1\nangle 45\nhither 1\nresolution 8 8\nf 1 1 1 1 0 1 0 1\ns 0 0 0 %s\n' "$r" >"$OUT/k.nff"
+        ks="$ks $("$RT" "$OUT/k.nff" -o "$OUT/k.ppm" --stats $b 2>&1 | awk '/scene_scale_log2/ { print $2 }')"
+    done
+    if [ "$ks" = " 3 3 3 3 3" ]; then
+        pass=$((pass + 1)); echo "  ok    $b: radius 1.5, 1.50, 15e-1, +0001.5000, 0.15E+1: scene scale 2^3 each (1.5 < 2 = 2^(4-3))"
+    else
+        fail=$((fail + 1)); echo "  FAIL  $b: radius 1.5 written five ways gives scales$ks, want 3 each"
+    fi
+done
 echo "spelling: $pass passed, $fail failed"
 [ $fail -eq 0 ]
