@@ -108,7 +108,8 @@ def cycles(m, estimate):
 
 
 def error(scene, png, fmt, size):
-    ref = os.path.join(OUT, "ref-%s-%s-%s.png" % (scene, fmt, size))
+    # cached per build of rt: a reference from an older build would be stale
+    ref = os.path.join(OUT, "ref-%s-%s-%s-%d.png" % (scene, fmt, size, int(os.path.getmtime("build/host/rt"))))
     if not os.path.exists(ref):
         run(["build/host/rt", scene_path(scene), "-o", ref, "--double", "--size", size, "--depth", "5",
              "--format", fmt, "--quiet"])

@@ -63,7 +63,9 @@ def measure(board, backend, scene, size, variant=""):
 
 
 def reference(scene, size, fmt, spp):
-    ref = os.path.join(OUT, "ref-%s-%s-%s-spp%d.png" % (scene, size, fmt, spp))
+    # cached per build of rt: a reference from an older build would be stale
+    ref = os.path.join(OUT, "ref-%s-%s-%s-spp%d-%d.png" % (scene, size, fmt, spp,
+                                                           int(os.path.getmtime("build/host/rt"))))
     if not os.path.exists(ref):
         run(["build/host/rt", scene_path(scene), "-o", ref, "--double", "--size", size, "--depth",
              str(SCENES[scene]), "--format", fmt, "--spp", str(spp), "--quiet"]
