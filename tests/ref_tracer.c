@@ -6,15 +6,17 @@
  *
  *   ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F] [--texture-filter on|off]
  *
- * --far F: the half side of the far cube that ends planes (the model
- * derives it from the reader's scale: F = 2^(9 - scene_scale_log2) of
- * `rt --stats`); without it planes go on for ever.
+ * --far F: the half side of the far cube that ends planes; --far rule:
+ * the model's, F = 2^(9 - k) with k the scene scale found here by the
+ * page's rule (and printed to stderr, "far cube F"); without it planes go
+ * on for ever.
  *
  * Exit status: 0 success, 1 output failure, 2 bad scene or usage.
  * Scene errors read "file:line: message". The environment variable
  * REF_TRACER_EPS_SCALE multiplies the surface offset of secondary rays,
  * to check that images do not depend on it.
  */
+#include <limits.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -87,6 +89,7 @@ static double extent;             /* largest absolute coordinate */
 static double eps_offset, eps_t;  /* derived from extent, see main() */
 static int max_depth = 5;
 static double far_cube = INFINITY;  /* --far */
+static int far_rule;                /* --far rule */
 static int sky_on;
 static Vec sky_horizon, sky_zenith, sky_up;
 static double sky_exp;
@@ -110,6 +113,35 @@ static void *grow(void *p, size_t *cap, size_t need, size_t size)
     }
     *cap = c;
     return p;
+}
+
+/* The scene scale (docs/shading-model.md, "The scene scale"): the least
+ * p with |x| < 2^p over the geometry numbers and over the camera and
+ * light numbers, each number on its own (INT_MIN: none yet). */
+static int scale_p[2] = { INT_MIN, INT_MIN };
+static void scale_number(double x, int far)
+{
+    int e;
+    if (x == 0)
+        return;
+    (void)frexp(fabs(x), &e); /* |x| = m 2^e, 1/2 <= m < 1: |x| < 2^e */
+    if (e > scale_p[far])
+        scale_p[far] = e;
+}
+static void scale_vec(Vec v, int far)
+{
+    scale_number(v.x, far), scale_number(v.y, far), scale_number(v.z, far);
+}
+/* 2^(9 - k), k the largest with the geometry below 2^4 and the camera and
+ * lights below 2^9 */
+static double rule_far_cube(void)
+{
+    int k = INT_MAX;
+    if (scale_p[0] != INT_MIN)
+        k = 4 - scale_p[0];
+    if (scale_p[1] != INT_MIN && 9 - scale_p[1] < k)
+        k = 9 - scale_p[1];
+    return ldexp(1, 9 - (k == INT_MAX ? 0 : k));
 }
 
 static void see(Vec p, double r) /* widen the extent by a position (+ radius) */
@@ -268,6 +300,8 @@ static void read_view(Reader *r, int line)
         fail(r, line, "v: angle must be between 0 and 180 degrees");
     see(from, 0);
     see(at, 0);
+    scale_vec(from, 1);
+    scale_vec(at, 0);
     have_view = 1;
 }
 
@@ -294,6 +328,7 @@ static void read_polygon(Reader *r, int line, int patch, const Material *m)
         verts = grow(verts, &capverts, nverts + 1, sizeof *verts);
         norms = grow(norms, &capnorms, nverts + 1, sizeof *norms);
         verts[nverts] = vector(r, what);
+        scale_vec(verts[nverts], 0); /* a polygon skipped as flat counts too */
         if (patch) {
             nv = vector(r, what);
             if (len(nv) == 0)
@@ -389,6 +424,7 @@ static void read_scene(const char *name)
                     fail(&r, line, "l: a light colour needs three numbers on the line");
             }
             see(l.pos, 0);
+            scale_vec(l.pos, 1);
             lights = grow(lights, &caplights, nlights + 1, sizeof *lights);
             lights[nlights++] = l;
         } else if (is(t, "f")) {
@@ -408,6 +444,7 @@ static void read_scene(const char *name)
                                                   : "marble before any 'f' material line");
             m.tex = is(t, "checker") ? TEX_CHECKER : TEX_MARBLE;
             m.size = number(&r, "texture");
+            scale_number(m.size, 0);
             m.ca = vector(&r, "texture");
             m.cb = vector(&r, "texture");
             if (!(m.size > 0))
@@ -447,6 +484,7 @@ static void read_scene(const char *name)
             p->ng = norm(nv);
             p->d = dot(p->ng, pt);
             see(pt, 0);
+            scale_vec(pt, 0);
         } else if (is(t, "s") || is(t, "c") || is(t, "p") || is(t, "pp")) {
             if (!have_material) {
                 char buf[80];
@@ -463,6 +501,8 @@ static void read_scene(const char *name)
                 p->a = c;
                 p->r = rad;
                 see(c, rad);
+                scale_vec(c, 0);
+                scale_number(rad, 0);
             } else if (is(t, "c")) {
                 Vec base = vector(&r, "c");
                 double rb = fabs(number(&r, "c"));
@@ -481,6 +521,8 @@ static void read_scene(const char *name)
                 p->k = (ra - rb) / p->h;
                 see(base, rb);
                 see(apex, ra);
+                scale_vec(base, 0), scale_vec(apex, 0);
+                scale_number(rb, 0), scale_number(ra, 0);
             } else {
                 read_polygon(&r, t.line, is(t, "pp"), &m);
             }
@@ -847,7 +889,7 @@ static unsigned char byte(double c)
 
 static void usage(void)
 {
-    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F] [--texture-filter on|off]\n", stderr);
+    fputs("usage: ref_tracer SCENE.nff -o OUT.ppm [--size WxH] [--depth N] [--spp N] [--far F|rule] [--texture-filter on|off]\n", stderr);
     exit(2);
 }
 
@@ -887,7 +929,11 @@ int main(int argc, char **argv)
             if (*end)
                 usage();
         } else if (!strcmp(argv[i], "--far") && i + 1 < argc) {
-            far_cube = strtod(argv[++i], &end);
+            if (!strcmp(argv[++i], "rule")) {
+                far_rule = 1;
+                continue;
+            }
+            far_cube = strtod(argv[i], &end);
             if (*end || !(far_cube > 0))
                 usage();
         } else if (!strcmp(argv[i], "--spp") && i + 1 < argc) {
@@ -908,6 +954,10 @@ int main(int argc, char **argv)
     if (!scene || !outname)
         usage();
     read_scene(scene);
+    if (far_rule) {
+        far_cube = rule_far_cube();
+        fprintf(stderr, "far cube %g\n", far_cube);
+    }
     X = sx ? (int)sx : resx;
     Y = sx ? (int)sy : resy;
 
