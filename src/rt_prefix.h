@@ -42,6 +42,7 @@
 #define fx_wdiv_int              rt_fx_wdiv_int
 #define fx_wsqrt                 rt_fx_wsqrt
 #define lex_count                rt_lex_count
+#define lex_direction            rt_lex_direction
 #define lex_decimal              rt_lex_decimal
 #define lex_fail                 rt_lex_fail
 #define lex_fail_tok             rt_lex_fail_tok
@@ -53,6 +54,7 @@
 #define lex_real                 rt_lex_real
 #define lex_scalar               rt_lex_scalar
 #define lex_scalar_scaled        rt_lex_scalar_scaled
+#define lex_shine                rt_lex_shine
 #define lex_start                rt_lex_start
 #define lex_tok_decimal          rt_lex_tok_decimal
 #define lex_vec3                 rt_lex_vec3

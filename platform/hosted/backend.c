@@ -109,6 +109,9 @@ static ray_t probe_ray(const double o[3], const double d[3], uint32_t leaf)
     r.from = PRIM_NONE;
     r.from_far = false;
     r.leaf = leaf;
+#if RT_RAY_CONES
+    r.cone_width = r.cone_spread = 0; /* a probe has no footprint */
+#endif
     return r;
 }
 
