@@ -61,7 +61,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2
+.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -206,6 +206,10 @@ bench: deps
 	python3 bench/aa_bench.py
 	@echo
 	python3 bench/scenes_bench.py
+
+# The README's and docs' pictures (docs/*.png but demos.png and oled.png).
+pictures: build/host/rt
+	sh bench/pictures.sh
 
 bench-quick: deps
 	$(MAKE) -j2 build/host/rt build/cfg-q20/rt build/cfg-q16/rt
