@@ -205,6 +205,8 @@ bench: deps
 	@echo
 	python3 bench/aa_bench.py
 	@echo
+	python3 bench/filter_bench.py
+	@echo
 	python3 bench/scenes_bench.py
 
 # The README's and docs' pictures (docs/*.png but demos.png and oled.png).

@@ -139,14 +139,18 @@ AA_TAG := $(if $(filter-out 0,$(AA_LEVELS)),-aa$(AA_LEVELS)$(if $(filter-out 0,$
 # (the default) links none of it (RT_USE_DITHER=0).
 DITHER ?= 0
 DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))$(BOARD_TAG)
+# TEXTURE_FILTER=0: textures sampled at the hit point (rt --texture-filter
+# off), no ray cones linked; 1 (the default) filters them over the footprint.
+TEXTURE_FILTER ?= 1
+TEXTURE_FILTER_FLAGS := $(if $(filter 0,$(TEXTURE_FILTER)),-DRT_TEXTURE_FILTER=0)
+FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(TEXTURE_FILTER)),-pointtex)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))$(BOARD_TAG)
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(TEXTURE_FILTER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (render.c: set-up and once per pixel), errors and
@@ -289,7 +293,7 @@ board-run:
 	@QEMU="$(BOARD_QEMU)" QEMU_ICOUNT="$(BOARD_ICOUNT)" QEMU_ACCEL="$(QEMU_ACCEL)" \
 	    RUN_END=$(if $(filter semihost,$(BOARD_ARCH_SKIP)),report,exit) $(BOARD_RUN) $(FW_ELF) $(RUN_OUT) $(RUN_RT) $(BOARD_CLOCK_HZ)
 
-RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 1,$(SPP)),--spp $(SPP))
+RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 1,$(SPP)),--spp $(SPP))$(if $(filter 0,$(TEXTURE_FILTER)), --texture-filter off)
 # the pixel-area image in the colours the format keeps: 8-bit grey for l8
 # and l4, 8-bit RGB for the others (so the figure includes the format's
 # own rounding, and dithering's effect on it)
@@ -297,9 +301,9 @@ RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
 RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
 RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
 run: deps-board
-	$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER)
+	$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER)
 	@mkdir -p out
-	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
+	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
 	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))$(if $(RUN_DITHER), $(RUN_DITHER))) vs $(RUN_REF_IS) with the same samples (the number format): '
 	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
