@@ -1,6 +1,7 @@
 # Fixed-point Whitted ray tracer: host build, board firmware, tests.
 #
-#   make            build the hosted CLI (build/host/rt)
+#   make            build the hosted CLI (build/host/rt); V=1 shows the
+#                   full commands
 #   make run        render SCENE on an emulated board (BOARD=mps2-an385 by
 #                   default, BACKEND=fixed; platform/firmware/firmware.mk),
 #                   write out/<scene>-<board>-<backend>.png, print instructions per pixel,
@@ -42,6 +43,21 @@ CC      ?= cc
 LD      ?= ld
 OBJCOPY ?= objcopy
 
+# Quiet by default: one short line a file (what is done, to which file);
+# V=1 prints the full commands, as kbuild and CMake do.
+V ?= 0
+ifeq ($(V),1)
+Q :=
+show = @:
+else ifneq ($(findstring s,$(firstword -$(MAKEFLAGS))),)
+Q := @
+show = @:
+else
+Q := @
+show = @printf '  %-7s %s\n'
+MAKEFLAGS += --no-print-directory
+endif
+
 # Capacities for the host: large enough for every SPD "default" scene,
 # and workers for `rt --threads` up to 64 (1.8 KiB each a backend).
 HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 \
@@ -76,15 +92,18 @@ BACKEND_FLAGS_double_ftol = -DRT_BACKEND_DOUBLE=1 -DRT_TOLERANCES_FIXED=1
 define core_rules
 build/$(1)/$(2)/%.o: src/%.c $(CORE_H) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Iinclude -Isrc -c $$< -o $$@
+	$$(show) CC $$@
+	$$(Q)$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Iinclude -Isrc -c $$< -o $$@
 
 build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(CORE_H) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
+	$$(show) CC $$@
+	$$(Q)$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
 
 build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) build/$(1)/$(2)/backend.o
-	$$(LD) -r -o $$@.tmp $$^
-	$$(OBJCOPY) -G rt_backend_$(2) $$@.tmp $$@
+	$$(show) LD $$@
+	$$(Q)$$(LD) -r -o $$@.tmp $$^
+	$$(Q)$$(OBJCOPY) -G rt_backend_$(2) $$@.tmp $$@
 	@rm -f $$@.tmp
 endef
 
@@ -95,16 +114,19 @@ $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_
 
 build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
+	$$(show) CC $$@
+	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
 
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
 build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
                build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
-	$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
+	$$(show) LD $$@
+	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
 build/$(1)/test_%: tests/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/testlib.h tests/probe_jump.h
-	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
+	$$(show) CC $$@
+	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
 	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
 endef
 
@@ -135,14 +157,16 @@ $(eval $(call host_rules,stress))
 # The fixed-point unit test links the fixed scalar layer alone.
 build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
 
 # The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
 # binary search.
 build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
 	    tests/test_fx.c src/numeric/fx.c -lm
 
 # The coarse sphere test of cores without a long multiply, against the
@@ -150,7 +174,8 @@ build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/n
 build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c src/numeric/fx.c \
                                tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
 	    src/geometry/sphere.c src/numeric/fx.c -lm
 
 # The sample boxes by which a flat scene's eye rays skip spheres, against
@@ -158,13 +183,14 @@ build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h 
 build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry/camera.h src/geometry/sphere.h \
                          src/geometry/sphere.c src/numeric/fx.c src/rt_error.c tests/testlib.h Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
 	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
 
 NAME := $(basename $(notdir $(SCENE)))
 
 host-run: deps-board
-	$(MAKE) build/host/rt
+	$(Q)$(MAKE) build/host/rt
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
 	build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
@@ -223,7 +249,7 @@ TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
 
 test: deps
-	$(MAKE) -j2 $(TESTS)
+	$(Q)$(MAKE) -j2 $(TESTS)
 	@FUZZ_SMOKE=$(FUZZ_SMOKE) tests/run-all.sh build/asan
 
 # Fuzzing (clang's libFuzzer) under ASan and UBSan:
@@ -244,15 +270,18 @@ FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
 build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
 build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
 
 build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
 	    tests/fuzz_nff.c $(CORE_SRC)
 
 # $(1) backend id, $(2) its flags: one build of the core for the
@@ -260,10 +289,11 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 define fuzz_core_rule
 build/fuzz/core-$(1).o: $(CORE_SRC) $(CORE_H) platform/hosted/backend.c platform/hosted/backend.h Makefile
 	@rm -rf build/fuzz/$(1) && mkdir -p build/fuzz/$(1)
-	cd build/fuzz/$(1) && clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(HOST_CAPS) $(2) -DBACKEND_ID=$(1) \
+	$(show) CC $$@
+	$(Q)cd build/fuzz/$(1) && clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(HOST_CAPS) $(2) -DBACKEND_ID=$(1) \
 	    $(addprefix -I$(CURDIR)/,include src platform/hosted) -c $(addprefix $(CURDIR)/,$(CORE_SRC) platform/hosted/backend.c)
-	$(LD) -r -o $$@.tmp build/fuzz/$(1)/*.o
-	$(OBJCOPY) -G rt_backend_$(1) $$@.tmp $$@
+	$(Q)$(LD) -r -o $$@.tmp build/fuzz/$(1)/*.o
+	$(Q)$(OBJCOPY) -G rt_backend_$(1) $$@.tmp $$@
 	@rm -f $$@.tmp
 endef
 $(eval $(call fuzz_core_rule,fixed,))
@@ -271,7 +301,8 @@ $(eval $(call fuzz_core_rule,float,$(BACKEND_FLAGS_float)))
 $(eval $(call fuzz_core_rule,double,$(BACKEND_FLAGS_double)))
 
 build/fuzz/fuzz_readers: tests/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(HOST_INC) -o $@ $^ -lm
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(HOST_INC) -o $@ $^ -lm
 
 # $(1) name, $(2) backend flags: the scene compiler with the firmware's
 # capacities, for the fixed tables and for the float ones (hex floats)
@@ -279,7 +310,8 @@ define fuzz_scenec_rule
 build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
                         $(wildcard platform/hosted/*.h) $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 endef
 $(eval $(call fuzz_scenec_rule,fuzz_scenec,))
@@ -288,7 +320,8 @@ $(eval $(call fuzz_scenec_rule,fuzz_scenec_float,-DRT_BACKEND_FLOAT=1))
 build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
                          platform/hosted/image.h include/rt_fb.h Makefile
 	@mkdir -p $(@D)
-	clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iplatform/hosted -o $@ \
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz
 
 fuzz: deps build/fuzz/$(FUZZER)

@@ -189,18 +189,21 @@ FW_NAMES = $(CORE_NAMES) $(basename $(notdir $(FW_PORT_SRC)))
 
 $(SCENEC_DIR)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -c $< -o $@
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -c $< -o $@
 
 $(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst src/%.c,$(SCENEC_DIR)/%.o,$(CORE_SRC)) \
                          $(wildcard platform/hosted/*.h) $(CORE_H)
-	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iplatform/hosted -o $@ \
+	$(show) LD $@
+	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    $(filter %.c %.o,$^)
 
 # ---- firmware ------------------------------------------------------------
 
 $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scenec
 	@mkdir -p $(@D)
-	$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
+	$(show) SCENEC $(FW_DIR)/scene_data.c
+	$(Q)$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
 
 # The float and double builds get their tables from the scene compiler
 # built for that backend (host cc, -ffp-contract=off as the firmware, libm
@@ -208,16 +211,19 @@ $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scene
 define scenec_fp
 $(SCENEC_DIR)-$(1)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
 	@mkdir -p $$(@D)
-	$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc -c $$< -o $$@
+	$$(show) CC $$@
+	$$(Q)$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc -c $$< -o $$@
 
 $(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst src/%.c,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_SRC)) \
                          $(wildcard platform/hosted/*.h) $(CORE_H)
-	$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
+	$$(show) LD $$@
+	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
 
 $(FW_DIR)/scene_data_$(1).c: $(SCENE) $(SCENEC_DIR)-$(1)/rt-scenec
 	@mkdir -p $$(@D)
-	$(SCENEC_DIR)-$(1)/rt-scenec $(SCENE) -o $$@
+	$$(show) SCENEC $$@
+	$$(Q)$(SCENEC_DIR)-$(1)/rt-scenec $(SCENE) -o $$@
 endef
 $(eval $(call scenec_fp,float,-DRT_BACKEND_FLOAT=1))
 $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
@@ -226,10 +232,12 @@ $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 define firmware_objs
 $(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) $(wildcard platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
-	$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) -c $$< -o $$@
+	$$(show) CC $$@
+	$$(Q)$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) -c $$< -o $$@
 $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
-	$$(FW_CC) $$(BOARD_CPU) $$(FW_FLAGS_$(1)) -c $$< -o $$@
+	$$(show) AS $$@
+	$$(Q)$$(FW_CC) $$(BOARD_CPU) $$(FW_FLAGS_$(1)) -c $$< -o $$@
 endef
 $(foreach b,$(BOARD_BACKENDS),$(foreach d,$(FW_SRC_DIRS) $(FW_DIR),$(eval $(call firmware_objs,$(b),$(d)))))
 
@@ -243,7 +251,8 @@ PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fix
 # neither: tests/ports-tests.sh checks).
 define firmware_elf
 $(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) platform/firmware/sections.ld
-	$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
+	$$(show) LD $$@
+	$$(Q)$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
 endef
 $(eval $(call firmware_elf,fixed,))
 $(eval $(call firmware_elf,float,-lm -lc))
@@ -251,7 +260,8 @@ $(eval $(call firmware_elf,double,-lm -lc))
 
 # The intersection-cost probe (bench/prims-bench.sh): no frame, just tests.
 $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
-	$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
+	$(show) LD $@
+	$(Q)$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
 
 firmware: $(FW_ELF) $(BOARD_IMAGES)
 
@@ -300,20 +310,22 @@ RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 
 RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
 RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
 RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
+RUN_REPORT = $(FW_DIR)/report-$(BACKEND).txt
 run: deps-board
-	$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER)
+	$(Q)$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER)
 	@mkdir -p out
-	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(FW_DIR)/report-$(BACKEND).txt; status=$$?; cat $(FW_DIR)/report-$(BACKEND).txt; exit $$status
+	$(show) RUN "$(FW_ELF) on $(BOARD)"
+	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(RUN_REPORT); \
+	    status=$$?; [ $$status = 0 ] || { cat $(RUN_REPORT); exit $$status; }
+	$(show) RT "$(RUN_REF) (the exact model at the same samples)"
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board ($(BOARD), $(BACKEND), $(FORMAT)$(if $(RUN_SAMPLING), $(RUN_SAMPLING))$(if $(RUN_DITHER), $(RUN_DITHER))) vs $(RUN_REF_IS) with the same samples (the number format): '
-	@build/host/rt compare $(RUN_OUT) $(RUN_REF)
+	$(show) RT "$(RUN_AREA) (the pixel-area image: rt --double --spp 16 --texture-filter off)"
 	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@printf 'board vs the pixel-area image (rt --double --spp 16 --texture-filter off, $(RUN_AREA_FORMAT): what a viewer sees): '
-	@build/host/rt compare $(RUN_OUT) $(RUN_AREA)
-	@printf '  the same, both blurred by 1 pixel (as an eye sees a small panel): '
-	@build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1
-	@echo "image: $(RUN_OUT)$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))"
-	@$(call copy_images,echo for the board:)
+	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \
+	    OUT=$(RUN_OUT) IMAGE_NOTE="$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))" \
+	    sh platform/firmware/summary.sh $(RUN_REPORT) "$$(build/host/rt compare $(RUN_OUT) $(RUN_REF))" \
+	    "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA))" "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1)"
+	@$(call copy_images,echo "  image for the board:")
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt

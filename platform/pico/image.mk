@@ -11,22 +11,28 @@ PICO_BOOT2 := build/board/pico/boot2
 
 $(PICO_BOOT2)/boot2.elf: platform/pico/boot2.S platform/pico/image.mk
 	@mkdir -p $(@D)
-	$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -o $@ $<
+	$(show) LD $@
+	$(Q)$(FW_CC) $(BOARD_CPU) -nostdlib -nostartfiles -Wl,-Ttext=0x20041f00 -o $@ $<
 
 $(PICO_BOOT2)/boot2.bin: $(PICO_BOOT2)/boot2.elf
-	$(FW_OBJCOPY) -O binary $< $@
+	$(show) OBJCOPY $@
+	$(Q)$(FW_OBJCOPY) -O binary $< $@
 
 $(PICO_BOOT2)/boot2_crc.S: $(PICO_BOOT2)/boot2.bin platform/pico/uf2.mjs
-	node platform/pico/uf2.mjs boot2 $< $@
+	$(show) BOOT2 $@
+	$(Q)node platform/pico/uf2.mjs boot2 $< $@
 
 $(PICO_BOOT2)/boot2_crc.o: $(PICO_BOOT2)/boot2_crc.S
-	$(FW_CC) $(BOARD_CPU) -c $< -o $@
+	$(show) AS $@
+	$(Q)$(FW_CC) $(BOARD_CPU) -c $< -o $@
 
 $(FW_DIR)/%.bin: $(FW_DIR)/%.elf
-	$(FW_OBJCOPY) -O binary $< $@
+	$(show) OBJCOPY $@
+	$(Q)$(FW_OBJCOPY) -O binary $< $@
 
 $(FW_DIR)/%.uf2: $(FW_DIR)/%.bin platform/pico/uf2.mjs
-	node platform/pico/uf2.mjs pack $< $@
+	$(show) UF2 $@
+	$(Q)node platform/pico/uf2.mjs pack $< $@
 	@node platform/pico/uf2.mjs check $@ >/dev/null
 
 # make uf2: make image by the name Pico users look for

@@ -3,8 +3,10 @@
 # (0x08000000: st-flash write <backend>.bin 0x08000000); the .hex carries
 # its own addresses (OpenOCD's program, STM32CubeProgrammer).
 $(FW_DIR)/%.bin: $(FW_DIR)/%.elf
-	$(FW_OBJCOPY) -O binary $< $@
+	$(show) OBJCOPY $@
+	$(Q)$(FW_OBJCOPY) -O binary $< $@
 
 $(FW_DIR)/%.hex: $(FW_DIR)/%.elf
-	$(FW_OBJCOPY) -O ihex $< $@
+	$(show) OBJCOPY $@
+	$(Q)$(FW_OBJCOPY) -O ihex $< $@
 
