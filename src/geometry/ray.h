@@ -48,6 +48,13 @@ typedef struct {
     real_t cone_width, cone_spread;
 #endif
 } ray_t;
+#if RT_RAY_CONES
+/* The fixed build holds every width and spread a cone takes within
+ * +-2^10 (widths in scaled units: twice the far cube, where every
+ * texture is long since its mean), inside its range; float and double
+ * leave them as they are (r_mul_bounded). */
+#define CONE_LIMIT (R_ONE * 1024)
+#endif
 
 static inline vec3_t ray_at(const ray_t *r, real_t t) { return v3_madd(r->origin, t, r->dir); }
 

@@ -108,6 +108,10 @@ static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
     return i;
 }
 static inline real_t r_add_sat(real_t a, real_t b) { return a + b; }
+/* a b and a + b, which the fixed build holds within [-lim, lim] (its
+ * range, for quantities that may outgrow it harmlessly); here as they are */
+static inline real_t r_mul_bounded(real_t a, real_t b, real_t lim) { return (void)lim, a * b; }
+static inline real_t r_add_bounded(real_t a, real_t b, real_t lim) { return (void)lim, a + b; }
 /* the next value above a (a > 0) */
 static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
 #if RT_BACKEND_FLOAT
@@ -285,6 +289,15 @@ static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
     return (int32_t)(w >> (2 * FX_FRAC_BITS));
 }
 static inline real_t r_add_sat(real_t a, real_t b) { return fx_add_sat(a, b); }
+/* a b and a + b held within [-lim, lim] (0 < lim <= FX_MAX), for
+ * quantities that may outgrow the range harmlessly: a bound, not an
+ * overflow, so not counted as a saturation */
+static inline real_t r_bound_wide(int64_t v, real_t lim) { return v > lim ? lim : v < -lim ? -lim : (real_t)v; }
+static inline real_t r_mul_bounded(real_t a, real_t b, real_t lim)
+{
+    return r_bound_wide(fx_round_shift(fx_mul64(a, b), FX_FRAC_BITS), lim);
+}
+static inline real_t r_add_bounded(real_t a, real_t b, real_t lim) { return r_bound_wide((int64_t)a + b, lim); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
 static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }

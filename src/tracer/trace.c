@@ -50,7 +50,7 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
 #endif
     s->m = &sc->materials[ps.material];
 #if RT_RAY_CONES
-    s->cone_width = r_add_sat(ray->cone_width, r_mul(ray->cone_spread, h->t));
+    s->cone_width = r_add_bounded(ray->cone_width, r_mul_bounded(ray->cone_spread, h->t, CONE_LIMIT), CONE_LIMIT);
 #endif
 }
 
@@ -262,7 +262,7 @@ static real_t cone_bend(const tracer_t *tr, const surface_t *s)
 #if RT_USE_SPHERES
     if (s->ref != PRIM_NONE && PRIM_KIND(s->ref) == PRIM_SPHERE && s->cone_width != 0) {
         const sphere_t *sp = &tr->scene->spheres[PRIM_INDEX(s->ref)];
-        real_t bend = r_mul(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius));
+        real_t bend = r_mul_bounded(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius), CONE_LIMIT);
         return s->entering ? bend : -bend;
     }
 #endif
@@ -277,7 +277,7 @@ static void cone_reflected(const tracer_t *tr, const ray_t *ray, const surface_t
 {
     real_t bend = cone_bend(tr, s);
     out->cone_width = s->cone_width;
-    out->cone_spread = r_add_sat(ray->cone_spread, r_add_sat(bend, bend));
+    out->cone_spread = r_add_bounded(ray->cone_spread, r_add_bounded(bend, bend, CONE_LIMIT), CONE_LIMIT);
 }
 #endif
 
@@ -290,10 +290,10 @@ static void cone_refracted(const tracer_t *tr, const ray_t *ray, const surface_t
     real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior;
     real_t bend = cone_bend(tr, s);
     out->cone_width = s->cone_width;
-    out->cone_spread = r_mul(eta, ray->cone_spread);
+    out->cone_spread = r_mul_bounded(eta, ray->cone_spread, CONE_LIMIT);
     if (bend != 0) {
         real_t cos_t = -v3_dot_in_range(out->dir, s->n);
-        out->cone_spread = r_add_sat(out->cone_spread, r_mul(r_mul(eta, cos_i) - cos_t, bend));
+        out->cone_spread = r_add_bounded(out->cone_spread, r_mul_bounded(r_mul(eta, cos_i) - cos_t, bend, CONE_LIMIT), CONE_LIMIT);
     }
 }
 #endif
