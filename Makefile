@@ -199,7 +199,7 @@ build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE
 	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 
 install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
-	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(bindir)" "$(libdir)" "$(includedir)" \
+	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(libdir)" "$(includedir)" \
 	    $$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' ')
 	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt"
 	$(INSTALL) -m 755 build/host/rt build/lib/rt-scenec "$(DESTDIR)$(bindir)"
@@ -266,7 +266,8 @@ bench-quick: deps
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
+        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
+        build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
 test: deps
 	$(MAKE) -j2 $(TESTS)

@@ -1,5 +1,5 @@
 #!/bin/sh
-# make-package.sh OUT PREFIX BINDIR LIBDIR INCLUDEDIR POINTER-BYTES
+# make-package.sh OUT PREFIX LIBDIR INCLUDEDIR POINTER-BYTES
 #
 # `make install`'s CMake package, what CMakeLists.txt's install(EXPORT) and
 # CMakePackageConfigHelpers write for `cmake --install` (Release build):
@@ -10,7 +10,7 @@
 # relative to the package's own folder, LIBDIR/cmake/rt, so the tree can
 # move, as CMake's are.
 set -e
-out=$1 prefix=${2%/} bindir=$3 libdir=$4 includedir=$5 ptr=$6
+out=$1 prefix=${2%/} libdir=$3 includedir=$4 ptr=$5
 here=$(dirname "$0")
 version=$(sed -n 's/^#define RT_VERSION_STRING "\([0-9.]*\)".*/\1/p' "$here/../include/rt_version.h")
 [ -n "$version" ] || { echo "make-package.sh: no RT_VERSION_STRING in include/rt_version.h" >&2; exit 1; }
@@ -53,8 +53,7 @@ endmacro()
 
 ####################################################################################
 END
-    sed '1,/^@PACKAGE_INIT@$/d' "$here/rtConfig.cmake.in" |
-        sed "s|@PACKAGE_RT_INSTALL_SCENEC@|$(rel PACKAGE_PREFIX_DIR "$bindir")/rt-scenec|"
+    sed '1,/^@PACKAGE_INIT@$/d' "$here/rtConfig.cmake.in"
 } >"$out/rtConfig.cmake"
 
 cat >"$out/rtConfigVersion.cmake" <<END
