@@ -19,7 +19,8 @@
 #                   librt_core.a, the public headers (include/rt/) and the
 #                   CMake package (lib/cmake/rt/) under DESTDIR PREFIX
 #                   (/usr/local; bindir, libdir, includedir), as
-#                   `cmake --install` lays them out
+#                   `cmake --install` lays them out; make uninstall
+#                   removes them
 #   make bench      run time against error over numeric configurations, the
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
@@ -66,7 +67,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -206,6 +207,13 @@ install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
 	$(INSTALL) -m 644 build/lib/librt_core.a "$(DESTDIR)$(libdir)"
 	$(INSTALL) -m 644 $(wildcard include/*.h) "$(DESTDIR)$(includedir)/rt"
 	$(INSTALL) -m 644 build/lib/cmake-rt/*.cmake "$(DESTDIR)$(libdir)/cmake/rt"
+
+# removes what install put there (the same variables)
+uninstall:
+	rm -f "$(DESTDIR)$(bindir)/rt" "$(DESTDIR)$(bindir)/rt-scenec" "$(DESTDIR)$(libdir)/librt_core.a" \
+	    $(patsubst include/%,"$(DESTDIR)$(includedir)/rt/%",$(wildcard include/*.h)) \
+	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake
+	-rmdir "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
 
 NAME := $(basename $(notdir $(SCENE)))
 

@@ -8,6 +8,7 @@
 #   - a consumer project finds the package with find_package(rt CONFIG)
 #     through CMAKE_PREFIX_PATH (in the DESTDIR tree, so the package is
 #     relocatable), links rt::core and renders the same pixels as RT;
+#   - make uninstall removes every file;
 #   - cmake --install (RT_BUILD_TOOLS on, its default) lays out the same
 #     files, and its rt, rt-scenec and package give the same results.
 rt=${1:-build/host/rt} out=${2:-build/test-install}
@@ -117,6 +118,15 @@ if log make-install make -s -j2 install DESTDIR="$dest" PREFIX=/usr/local; then
 else
     bad "make install failed"
     got=""
+fi
+
+if [ -n "$got" ] && log make-uninstall make -s uninstall DESTDIR="$dest" PREFIX=/usr/local; then
+    left=$(files "$dest/usr/local")
+    if [ -z "$left" ]; then
+        ok "make uninstall: removes every installed file"
+    else
+        bad "make uninstall: left $(echo "$left" | tr '\n' ' ')"
+    fi
 fi
 
 # cmake --install
