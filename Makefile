@@ -16,6 +16,12 @@
 #                   counters (bench/profile.py; same variables as make run,
 #                   SIZE 64x64 unless given; about 35 s for balls-2)
 #   make test       install missing packages, build, run every test
+#   make install    rt, the scene compiler rt-scenec, the core as
+#                   librt_core.a, the public headers (include/rt/) and the
+#                   CMake package (lib/cmake/rt/) under DESTDIR PREFIX
+#                   (/usr/local; bindir, libdir, includedir), as
+#                   `cmake --install` lays them out; make uninstall
+#                   removes them
 #   make bench      run time against error over numeric configurations, the
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
@@ -77,7 +83,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -187,6 +193,54 @@ build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
 	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
 
+# ---- make install --------------------------------------------------------
+#
+# What `cmake --install` installs from CMakeLists.txt, file for file:
+#   $(bindir)/rt              build/host/rt (every backend, HOST_CAPS)
+#   $(bindir)/rt-scenec       the scene compiler for the installed library
+#   $(libdir)/librt_core.a    the core, fixed backend, rt_config.h's defaults
+#   $(includedir)/rt/         the public headers (include/)
+#   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core
+# (tests/install-tests.sh checks that both lay out the same files).
+PREFIX     ?= /usr/local
+bindir     ?= $(PREFIX)/bin
+libdir     ?= $(PREFIX)/lib
+includedir ?= $(PREFIX)/include
+INSTALL    ?= install
+
+# The library as CMake's rt_core (Release): the core with -ffreestanding,
+# default capacities, fixed point.
+build/lib/core/%.o: src/%.c $(CORE_H) Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -ffreestanding -O2 -Iinclude -Isrc -c $< -o $@
+
+build/lib/librt_core.a: $(patsubst src/%.c,build/lib/core/%.o,$(CORE_SRC))
+	@rm -f $@
+	$(AR) rcs $@ $^
+
+# The scene compiler for that library (the same configuration, so its
+# tables link with it), as CMakeLists.txt's rt-scenec.
+build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE_H) $(wildcard platform/hosted/*.h) Makefile
+	@mkdir -p $(@D)
+	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
+	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
+
+install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
+	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(libdir)" "$(includedir)" \
+	    $$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' ')
+	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -m 755 build/host/rt build/lib/rt-scenec "$(DESTDIR)$(bindir)"
+	$(INSTALL) -m 644 build/lib/librt_core.a "$(DESTDIR)$(libdir)"
+	$(INSTALL) -m 644 $(wildcard include/*.h) "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -m 644 build/lib/cmake-rt/*.cmake "$(DESTDIR)$(libdir)/cmake/rt"
+
+# removes what install put there (the same variables)
+uninstall:
+	rm -f "$(DESTDIR)$(bindir)/rt" "$(DESTDIR)$(bindir)/rt-scenec" "$(DESTDIR)$(libdir)/librt_core.a" \
+	    $(patsubst include/%,"$(DESTDIR)$(includedir)/rt/%",$(wildcard include/*.h)) \
+	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake
+	-rmdir "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
+
 NAME := $(basename $(notdir $(SCENE)))
 
 host-run: deps-board
@@ -246,7 +300,8 @@ bench-quick: deps
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec $(FUZZERS)
+        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
+        build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
 test: deps
 	$(Q)$(MAKE) -j2 $(TESTS)

@@ -48,6 +48,7 @@ run tests/board-pico-tests.sh "$B/rt"
 run tests/board-stm32f4-tests.sh "$B/rt"
 run tests/speed-tests.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
+run tests/install-tests.sh "$B/rt" "$B/test-install"
 run tests/scenec-tables-tests.sh "$B/rt" "$B/test-scenec-tables"
 run tests/examples-tests.sh "$B/rt" "$B/test-examples"
 run python3 tests/stress.py --quick
