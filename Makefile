@@ -212,17 +212,20 @@ INSTALL    ?= install
 # default capacities, fixed point.
 build/lib/core/%.o: src/%.c $(CORE_H) Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -ffreestanding -O2 -Iinclude -Isrc -c $< -o $@
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) -ffreestanding -O2 -Iinclude -Isrc -c $< -o $@
 
 build/lib/librt_core.a: $(patsubst src/%.c,build/lib/core/%.o,$(CORE_SRC))
 	@rm -f $@
-	$(AR) rcs $@ $^
+	$(show) AR $@
+	$(Q)$(AR) rcs $@ $^
 
 # The scene compiler for that library (the same configuration, so its
 # tables link with it), as CMakeLists.txt's rt-scenec.
 build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE_H) $(wildcard platform/hosted/*.h) Makefile
 	@mkdir -p $(@D)
-	$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 
 install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
