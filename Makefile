@@ -65,9 +65,11 @@ MAKEFLAGS += --no-print-directory
 endif
 
 # Capacities for the host: large enough for every SPD "default" scene,
-# and workers for `rt --threads` up to 64 (1.8 KiB each a backend).
+# and workers for `rt --threads` up to 64 (1.8 KiB each a backend); and
+# recorded split decisions (`rt --same-samples`).
 HOST_CAPS = -DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 \
-            -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024 -DRT_MAX_WORKERS=64 -DRT_MAX_DEPTH=8
+            -DRT_MAX_VERTICES=65536 -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024 -DRT_MAX_WORKERS=64 -DRT_MAX_DEPTH=8 \
+            -DRT_AA_REPLAY=1
 
 WARN      = -std=c11 -Wall -Wextra -Werror
 # The core: src/ and its layer folders (numeric, geometry, reader, tracer).

@@ -259,6 +259,13 @@
 #ifndef RT_AA_MAX_SPP
 #define RT_AA_MAX_SPP 16
 #endif
+/* Adaptive anti-aliasing's split decisions recorded into, or replayed
+ * from, a caller's buffer (rt_render_opts_t.aa_splits): a reference
+ * render then takes exactly another build's samples. Left out unless
+ * set (the hosted build sets it; firmware has no use for it). */
+#ifndef RT_AA_REPLAY
+#define RT_AA_REPLAY 0
+#endif
 
 /* Ordered dithering of the packed formats (rt_fb_sink_t.dither); left
  * out of firmware that does not ask for it. */

@@ -76,7 +76,35 @@ typedef struct {
      * where the build has RT_TEXTURE_FILTER; docs/shading-model.md,
      * "Filtered textures"). */
     bool point_textures;
+#if RT_AA_REPLAY
+    /* Adaptive anti-aliasing's split decisions (builds with RT_AA_REPLAY):
+     * aa_splits_mode RT_AA_SPLITS_RECORD writes each rendered pixel's
+     * decisions into aa_splits; RT_AA_SPLITS_REPLAY makes them instead of
+     * the corners' colours, so another numeric build with the same
+     * options traces exactly the same samples. The caller's buffer of
+     * aa_splits_words words holds RT_AA_SPLIT_WORDS(aa_levels) a pixel of
+     * the whole frame (RT_AA_SPLITS_WORDS(width, height, aa_levels)),
+     * pixel (x, y) of the frame at (y * width + x) * RT_AA_SPLIT_WORDS,
+     * so a viewport or the bands of several workers share one buffer.
+     * Replay with the aa_levels it was recorded with. */
+    uint8_t aa_splits_mode; /* RT_AA_SPLITS_OFF (0, the default), _RECORD, _REPLAY */
+    uint32_t *aa_splits;
+    size_t aa_splits_words;
+#endif
 } rt_render_opts_t;
+
+/* A pixel's split decisions (opts.aa_splits): two bits for each square
+ * that may split, at level l < levels (the pixel is level 0, 2^l squares
+ * a side), square (a, b) counted from the pixel's top left: bit 2 q, its
+ * corners spread over the threshold (its centre is traced), and bit
+ * 2 q + 1, it is split in four; q = (4^l - 1) / 3 + b 2^l + a. By
+ * position alone: the same in whatever order the squares are visited. */
+#define RT_AA_SPLITS_OFF 0
+#define RT_AA_SPLITS_RECORD 1
+#define RT_AA_SPLITS_REPLAY 2
+#define RT_AA_SPLIT_BITS(levels) (2 * ((((size_t)1) << (2 * (levels))) - 1) / 3)
+#define RT_AA_SPLIT_WORDS(levels) ((RT_AA_SPLIT_BITS(levels) + 31) / 32)
+#define RT_AA_SPLITS_WORDS(width, height, levels) ((size_t)(width) * (size_t)(height) * RT_AA_SPLIT_WORDS(levels))
 
 /* Scratch sizes in colours (three scalars each) and in bytes. SPD mode:
  * two rows of corner colours. Adaptive anti-aliasing: two rows of

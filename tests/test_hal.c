@@ -10,7 +10,13 @@
  *  - the incremental API, stepping 1, 3 and 7 lines, gives the same frame
  *    as one call;
  *  - all of it in SPD mode and with adaptive and uniform anti-aliasing
- *    too, and anti-aliasing's bad options refused before any flush. */
+ *    too, and anti-aliasing's bad options refused before any flush;
+ *  - adaptive anti-aliasing's split decisions (opts.aa_splits, the host's
+ *    RT_AA_REPLAY): recording them changes no pixel, a build replaying
+ *    its own gives its own frame, a viewport records its pixels' words
+ *    alone (the whole frame's) and replays to the crop of the whole
+ *    frame; the double build replaying the fixed build's traces exactly
+ *    its eye rays and splits; bad split options refused before any flush. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -108,6 +114,9 @@ static bool same_crop(const test_sink_t *got, const test_sink_t *ref, rt_viewpor
 static const char *const mode_name[MODES] = { "", " SPD", " AA 3", " SPP 3" };
 static test_sink_t ref[MODES], got;
 static double scratch[(2 * (W * 8 + 1) + 9 * 9) * 3]; /* the larger of SPD's and 3 levels' (for double) */
+#define SPLIT_WORDS RT_AA_SPLITS_WORDS(W, H, 3)
+static uint32_t splits[2][SPLIT_WORDS], splits_vp[SPLIT_WORDS]; /* each backend's; a viewport's */
+static rt_stats_t split_stats[2];                                  /* each backend's recording */
 
 int main(void)
 {
@@ -221,6 +230,83 @@ int main(void)
             }
             CHECK(refused == 6, "%s: %d of 6 bad anti-aliasing options refused before any flush (last: '%s')", bn,
                   refused, err.msg);
+        }
+
+        /* split decisions: recorded, replayed */
+        {
+            rt_render_opts_t rec = opts[2];
+            rec.aa_splits_mode = RT_AA_SPLITS_RECORD;
+            rec.aa_splits = splits[b];
+            rec.aa_splits_words = SPLIT_WORDS;
+            sink_init(&got, 0, 4, true);
+            rc = be->render(&rec, &got.sink, &split_stats[b], &err);
+            CHECK(rc == 0 && memcmp(got.img, ref[2].img, sizeof got.img) == 0,
+                  "%s: recording the splits changes no pixel (status %d, %u splits)", bn, rc,
+                  (unsigned)split_stats[b].aa_splits);
+            rt_render_opts_t play = rec;
+            play.aa_splits_mode = RT_AA_SPLITS_REPLAY;
+            sink_init(&got, 0, 4, true);
+            rc = be->render(&play, &got.sink, &st, &err);
+            CHECK(rc == 0 && memcmp(got.img, ref[2].img, sizeof got.img) == 0,
+                  "%s: replaying its own splits: its own frame (status %d)", bn, rc);
+            /* a viewport: its pixels' words, those of the whole frame; no other word written */
+            rt_viewport_t v = vps[4];
+            memset(splits_vp, SENTINEL, sizeof splits_vp);
+            rec.aa_splits = splits_vp;
+            rec.viewport = v;
+            sink_init(&got, 0, 4, true);
+            rc = be->render(&rec, &got.sink, &st, &err);
+            const size_t pw = RT_AA_SPLIT_WORDS(3);
+            int wrong = 0;
+            for (int y = 0; y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    bool in = x >= v.x && x < v.x + v.w && y >= v.y && y < v.y + v.h;
+                    for (size_t k = 0; k < pw; k++) {
+                        size_t i = ((size_t)y * W + (size_t)x) * pw + k;
+                        wrong += in ? splits_vp[i] != splits[b][i] : splits_vp[i] != 0xA5A5A5A5u;
+                    }
+                }
+            CHECK(rc == 0 && wrong == 0, "%s: a viewport records the whole frame's words for its pixels alone "
+                  "(%d wrong)", bn, wrong);
+            play.viewport = v;
+            sink_init(&got, 0, 2, false);
+            rc = be->render_steps(&play, &got.sink, &st, &err, 3, NULL, NULL);
+            CHECK(rc == 0 && same_crop(&got, &ref[2], v), "%s: a viewport replayed in steps of 3 lines: the crop "
+                  "of the whole frame (status %d)", bn, rc);
+            if (b == 1) { /* the double build at the fixed build's samples */
+                rt_stats_t fx = { 0 };
+                play = opts[2];
+                play.aa_splits_mode = RT_AA_SPLITS_REPLAY;
+                play.aa_splits = splits[0];
+                play.aa_splits_words = SPLIT_WORDS;
+                sink_init(&got, 0, 4, true);
+                rc = be->render(&play, &got.sink, &fx, &err);
+                CHECK(rc == 0 && fx.eye_rays == split_stats[0].eye_rays && fx.aa_splits == split_stats[0].aa_splits,
+                      "double replaying the fixed build's splits: %u eye rays, %u splits (fixed: %u, %u; its own: "
+                      "%u, %u)", (unsigned)fx.eye_rays, (unsigned)fx.aa_splits, (unsigned)split_stats[0].eye_rays,
+                      (unsigned)split_stats[0].aa_splits, (unsigned)split_stats[1].eye_rays,
+                      (unsigned)split_stats[1].aa_splits);
+            }
+            /* refusals: no adaptive anti-aliasing (one sample, uniform), no buffer, a short one, no such mode */
+            rt_render_opts_t bad[5] = { opts[0], opts[3], opts[2], opts[2], opts[2] };
+            for (int k = 0; k < 5; k++) {
+                bad[k].aa_splits_mode = RT_AA_SPLITS_RECORD;
+                bad[k].aa_splits = splits_vp;
+                bad[k].aa_splits_words = SPLIT_WORDS;
+            }
+            bad[2].aa_splits = NULL;
+            bad[3].aa_splits_words = SPLIT_WORDS - 1;
+            bad[4].aa_splits_mode = RT_AA_SPLITS_REPLAY + 1;
+            int refused = 0;
+            for (int k = 0; k < 5; k++) {
+                sink_init(&got, 0, 4, true);
+                rc = be->render(&bad[k], &got.sink, &st, &err);
+                refused += rc == -1 && got.flushes == 0 && err.msg[0] != '\0';
+                if (rc != -1)
+                    printf("        %s: bad split options %d: status %d\n", bn, k, rc);
+            }
+            CHECK(refused == 5, "%s: %d of 5 bad split options refused before any flush (last: '%s')", bn, refused,
+                  err.msg);
         }
 
         rt_render_opts_t o = opts[0];

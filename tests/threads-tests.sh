@@ -18,7 +18,9 @@
 #   - the progress indicator (stderr on a terminal) rises to 100%;
 #   - bad --threads values fail with exit 2 and a clear message;
 #   - with the ThreadSanitizer build (build/tsan/rt, if built): four
-#     threads, each backend and SPD mode, and no report (the core's
+#     threads, each backend and SPD mode, and the fixed build's split
+#     decisions recorded and replayed (--same-samples: the threads write
+#     and read the pixels of their own lines), and no report (the core's
 #     workers share no written byte).
 # No wall-clock time is asserted.
 RT=${1:-build/asan/rt}
@@ -203,7 +205,7 @@ out=$("$RT" scenes/spd/tetra-1.nff -o "$OUT/max.ppm" --size 8x8 --quiet --thread
 # ThreadSanitizer: nothing the threads write is shared.
 if [ -x "$TSAN" ]; then
     for args in "--fixed" "--double" "--float" "--fixed --spd" "--fixed --format l4 --viewport 3,5,41,30" "--fixed --aa 3" \
-                "--float --spp 2"; do
+                "--float --spp 2" "--double --aa 3 --same-samples fixed"; do
         for f in scenes/showpiece.nff scenes/spd/rings-1.nff; do
             s=$(basename "$f" .nff)
             "$TSAN" "$f" -o "$OUT/tsan.ppm" --size ${W}x$H --quiet --threads 4 $args 2>"$OUT/tsan.err"

@@ -46,6 +46,12 @@ static const char usage_text[] =
     "                      L times (1..%d)\n"
     "  --spp N             uniform anti-aliasing: N x N samples a pixel (2..%d;\n"
     "                      --double --spp 16 is the converged pixel-area image)\n"
+    "  --same-samples B    with --aa: trace exactly the samples build B (fixed,\n"
+    "                      float, ...) would, by replaying its split decisions\n"
+    "                      (B renders first, in memory): --double --aa 3\n"
+    "                      --same-samples fixed is the exact model at the fixed\n"
+    "                      build's (the board's) samples. Without --aa every\n"
+    "                      build's samples are the same already\n"
     "  --texture-filter on|off\n"
     "                      textures averaged over each pixel's footprint (on, the\n"
     "                      default) or sampled at the hit point (off: the model\n"
@@ -160,7 +166,7 @@ static void print_usage(void)
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_TEXTURE_FILTER, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_SAME_SAMPLES, OPT_TEXTURE_FILTER, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR, OPT_BLUR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -179,6 +185,7 @@ static const struct option render_options[] = {
     { "spd", no_argument, NULL, OPT_SPD },
     { "aa", required_argument, NULL, OPT_AA },
     { "spp", required_argument, NULL, OPT_SPP },
+    { "same-samples", required_argument, NULL, OPT_SAME_SAMPLES },
     { "texture-filter", required_argument, NULL, OPT_TEXTURE_FILTER },
     { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
     { "threads", required_argument, NULL, OPT_THREADS },
@@ -191,7 +198,7 @@ static const struct option render_options[] = {
 static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
     { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" },
-    { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" }, { OPT_TEXTURE_FILTER, "on or off" },
+    { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" }, { OPT_SAME_SAMPLES, "a build name" }, { OPT_TEXTURE_FILTER, "on or off" },
     { OPT_THREADS, "a number" }, { 0, NULL },
 };
 
@@ -222,10 +229,41 @@ static int print_version(void)
     return 0;
 }
 
+/* --same-samples: build `from` (its scene loaded) renders *opts in memory,
+ * the image dropped, recording its adaptive split decisions into
+ * *splits (allocated here, the caller frees it); *opts then replays
+ * them. 0, or as bands_render. */
+static int take_splits(const rt_backend_t *from, rt_render_opts_t *opts, rt_fb_format_t format, unsigned threads,
+                       bool progress, uint32_t **splits, rt_error_t *err)
+{
+    uint16_t w = opts->width, h = opts->height, sw, sh;
+    from->resolution(&sw, &sh);
+    size_t words = RT_AA_SPLITS_WORDS(w ? w : sw, h ? h : sh, opts->aa_levels);
+    *splits = calloc(words ? words : 1, sizeof **splits);
+    if (!*splits)
+        return 1; /* out of memory: as a sink's failure */
+    rt_render_opts_t rec = *opts;
+    rec.aa_splits_mode = RT_AA_SPLITS_RECORD;
+    rec.aa_splits = *splits;
+    rec.aa_splits_words = words;
+    image_t img;
+    rt_stats_t st = { 0 };
+    bands_time_t time = { 0, 0, 0 };
+    int status = bands_render(from, &rec, format, false, threads, progress, &img, &st, &time, err);
+    if (status != 0)
+        return status;
+    image_free(&img);
+    opts->aa_splits_mode = RT_AA_SPLITS_REPLAY;
+    opts->aa_splits = *splits;
+    opts->aa_splits_words = words;
+    return 0;
+}
+
 static int cmd_render(int argc, char **argv)
 {
     const char *scene_path = NULL, *out_path = NULL;
     const rt_backend_t *be = backends[0].be;
+    const rt_backend_t *samples_be = NULL; /* --same-samples */
     rt_render_opts_t opts = { 0 };
     rt_fb_format_t format = RT_FB_RGB888;
     bool dither = false;
@@ -333,6 +371,20 @@ static int cmd_render(int argc, char **argv)
             opts.spp = (uint8_t)n;
             break;
         }
+        case OPT_SAME_SAMPLES: {
+            size_t i = 0;
+            while (i < N_BACKENDS && strcmp(optarg, backends[i].name) != 0)
+                i++;
+            if (i == N_BACKENDS) {
+                char msg[160] = "--same-samples: expected a build (";
+                for (size_t k = 0; k < N_BACKENDS; k++)
+                    snprintf(msg + strlen(msg), sizeof msg - strlen(msg), "%s%s", k ? ", " : "", backends[k].name);
+                snprintf(msg + strlen(msg), sizeof msg - strlen(msg), "), got '%%s'");
+                return render_usage_error(msg, optarg);
+            }
+            samples_be = backends[i].be;
+            break;
+        }
         case OPT_TEXTURE_FILTER:
             if (strcmp(optarg, "on") != 0 && strcmp(optarg, "off") != 0)
                 return render_usage_error("--texture-filter: expected on or off, got '%s'", optarg);
@@ -391,9 +443,16 @@ static int cmd_render(int argc, char **argv)
         return EXIT_BAD_INPUT;
     rt_error_t err;
     bool ok = be->load(text, len, &err);
+    /* --same-samples: only adaptive anti-aliasing decides where to sample */
+    bool replay = samples_be && opts.aa_levels;
+    bool ok_samples = !ok || !replay || samples_be == be || samples_be->load(text, len, &err);
     free(text);
-    if (!ok) {
-        host_error_at(scene_path, (unsigned)err.line, err.msg);
+    if (!ok || !ok_samples) {
+        char msg[sizeof err.msg + 64];
+        snprintf(msg, sizeof msg, "%s%s%s", ok ? "the " : "", ok ? backend_name(samples_be) : "",
+                 ok ? " build (--same-samples): " : "");
+        strncat(msg, err.msg, sizeof msg - strlen(msg) - 1);
+        host_error_at(scene_path, (unsigned)err.line, msg);
         return EXIT_BAD_INPUT;
     }
 
@@ -416,7 +475,18 @@ static int cmd_render(int argc, char **argv)
     image_t img;
     rt_stats_t st = { 0 };
     bands_time_t time = { 0, 0, 0 };
-    int status = bands_render(be, &opts, format, dither, threads, progress, &img, &st, &time, &err);
+    uint32_t *splits = NULL;
+    int status = replay ? take_splits(samples_be, &opts, format, threads, progress, &splits, &err) : 0;
+    if (status != 0) {
+        if (progress)
+            fprintf(stderr, "\r                \r");
+        fprintf(stderr, "%s: the %s build (--same-samples): %s\n", scene_path, backend_name(samples_be),
+                status < 0 ? err.msg : "framebuffer sink failed");
+        free(splits);
+        return status < 0 ? EXIT_BAD_INPUT : 1;
+    }
+    status = bands_render(be, &opts, format, dither, threads, progress, &img, &st, &time, &err);
+    free(splits);
     if (progress)
         fprintf(stderr, "\r                \r");
     if (status != 0) {

@@ -128,6 +128,12 @@ struct rt_worker {
 #if RT_USE_AA
     real_t aa_threshold; /* adaptive: a corner spread that splits a square */
     real_t aa_scale;     /* 1 / (corners or samples a pixel sums) */
+#if RT_AA_REPLAY
+    uint32_t *splits;    /* the frame's split decisions (opts.aa_splits), or NULL */
+    size_t splits_line;  /* words a frame line */
+    unsigned split_words; /* words a pixel */
+    bool splits_replay;  /* replayed, not recorded */
+#endif
 #endif
 };
 static struct rt_worker workers[RT_MAX_WORKERS];
@@ -276,6 +282,35 @@ static bool spread_over(colour_t a, colour_t b, colour_t c, colour_t d, real_t t
     return spread(a.x, b.x, c.x, d.x) > t || spread(a.y, b.y, c.y, d.y) > t || spread(a.z, b.z, c.z, d.z) > t;
 }
 
+#if RT_AA_REPLAY
+/* A pixel's split decisions (rt_render.h, RT_AA_SPLIT_BITS): `words` NULL
+ * for none, else recorded into or, if `replay`, replayed from them. */
+typedef struct {
+    uint32_t *words;
+    bool replay;
+} aa_decisions_t;
+
+/* Decision `bit`: the recorded one when replaying, else `test`'s (noted
+ * when recording). */
+static bool aa_decide(aa_decisions_t *d, unsigned bit, bool test)
+{
+    if (!d->words)
+        return test;
+    uint32_t mask = (uint32_t)1 << (bit & 31u);
+    if (d->replay)
+        return (d->words[bit >> 5] & mask) != 0;
+    if (test)
+        d->words[bit >> 5] |= mask;
+    return test;
+}
+/* Bit 2 q of the square at (x, y) cells, `size` cells a side, of level `level`. */
+#define AA_SQUARE_BIT(x, y, size, level) \
+    (2u * ((((1u << (2u * (level))) - 1u) / 3u) + ((y) / (size) << (level)) + (x) / (size)))
+#define AA_DECIDE(bit, test) aa_decide(dec, (bit), (test))
+#else
+#define AA_DECIDE(bit, test) (test)
+#endif
+
 /* The pixel of grid g, its cell corners traced as they are first needed
  * (docs/shading-model.md, "Adaptive anti-aliasing"). A square whose corners spread over the threshold
  * (times 4 a level: a square's share of the pixel is 4 times smaller)
@@ -284,7 +319,11 @@ static bool spread_over(colour_t a, colour_t b, colour_t c, colour_t d, real_t t
  * bilinear: a gradient, not an edge), when it counts as the mean of
  * corners and centre. Squares wait on a small stack (three siblings a
  * level), so no recursion adds to trace_ray's frames. */
+#if RT_AA_REPLAY
+static colour_t aa_pixel(struct rt_worker *wk, aa_grid_t *g, unsigned levels, aa_decisions_t *dec)
+#else
 static colour_t aa_pixel(struct rt_worker *wk, aa_grid_t *g, unsigned levels)
+#endif
 {
     struct {
         uint8_t x, y, level;
@@ -301,11 +340,14 @@ static colour_t aa_pixel(struct rt_worker *wk, aa_grid_t *g, unsigned levels)
             c[k] = aa_corner(wk, g, x + (k & 1u) * size, y + (k >> 1) * size);
         colour_t corners = v3_add(v3_add(*c[0], *c[1]), v3_add(*c[2], *c[3])); /* 4 times their mean */
         real_t limit = wk->aa_threshold * ((int32_t)1 << (2 * level));
-        if (level < levels && spread_over(*c[0], *c[1], *c[2], *c[3], limit)) {
+#if RT_AA_REPLAY
+        unsigned bit = level < levels ? AA_SQUARE_BIT(x, y, size, level) : 0;
+#endif
+        if (level < levels && AA_DECIDE(bit, spread_over(*c[0], *c[1], *c[2], *c[3], limit))) {
             colour_t m4 = v3_scale(*aa_corner(wk, g, x + half, y + half), r_from_int(4));
             colour_t off = v3_sub(m4, corners); /* 4 (centre - mean) */
             real_t near = 2 * limit;            /* 4 (limit / 2) */
-            if (r_abs(off.x) > near || r_abs(off.y) > near || r_abs(off.z) > near) {
+            if (AA_DECIDE(bit + 1, r_abs(off.x) > near || r_abs(off.y) > near || r_abs(off.z) > near)) {
                 wk->scratch.stats.aa_splits++;
                 for (unsigned k = 0; k < 4; k++) {
                     todo[n_todo].x = (uint8_t)(x + (k & 1u) * half);
@@ -348,7 +390,18 @@ static void adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
         g.top = above + x * sub;
         g.bottom = below + x * sub;
         g.i = (int32_t)(ctx->x0 + x) << levels;
-        put_pixel(line, x, ctx->sink->format, aa_pixel(wk, &g, levels), dither_at(ctx, ctx->x0 + x, y));
+#if RT_AA_REPLAY
+        aa_decisions_t dec = { NULL, wk->splits_replay };
+        if (wk->splits) { /* the frame pixel's words; cleared to record */
+            dec.words = wk->splits + y * wk->splits_line + (size_t)(ctx->x0 + x) * wk->split_words;
+            for (unsigned k = 0; !dec.replay && k < wk->split_words; k++)
+                dec.words[k] = 0;
+        }
+        colour_t c = aa_pixel(wk, &g, levels, &dec);
+#else
+        colour_t c = aa_pixel(wk, &g, levels);
+#endif
+        put_pixel(line, x, ctx->sink->format, c, dither_at(ctx, ctx->x0 + x, y));
     }
     ctx->rows[1] = ctx->rows[0];
     ctx->rows[0] = below;
@@ -367,6 +420,13 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
         put_pixel(line, x, ctx->sink->format, trace_ray(&wk->tr, &ray, 1, R_ONE), dither_at(ctx, ctx->x0 + x, y));
     }
 }
+
+/* Whether the options record or replay split decisions (RT_AA_REPLAY). */
+#if RT_AA_REPLAY
+#define SPLITS_ASKED(opts) ((opts)->aa_splits_mode != RT_AA_SPLITS_OFF)
+#else
+#define SPLITS_ASKED(opts) false
+#endif
 
 /* The bodies of rt_render_begin, _step and _end, inlined into them and
  * into rt_render: a build that only calls rt_render (the board) links one
@@ -423,7 +483,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->pitch = pitch;
     ctx->band_lines = band_lines;
     /* modes left out of this build (one message: the board leaves both out) */
-    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1))) {
+    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1 || SPLITS_ASKED(opts)))) {
         rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA)");
         return -1;
     }
@@ -455,6 +515,23 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     } else if (ctx->spp) {
         wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
     }
+#if RT_AA_REPLAY
+    wk->splits = 0;
+    if (opts->aa_splits_mode) {
+        if (opts->aa_splits_mode > RT_AA_SPLITS_REPLAY || !ctx->aa_levels) {
+            rt_error_set(err, 0, "recorded splits (aa_splits) need adaptive anti-aliasing and a mode");
+            return -1;
+        }
+        if (opts->aa_splits == 0 || opts->aa_splits_words < RT_AA_SPLITS_WORDS(w, h, ctx->aa_levels)) {
+            rt_error_set(err, 0, "recorded splits need RT_AA_SPLITS_WORDS(width, height, levels) words");
+            return -1;
+        }
+        wk->splits = opts->aa_splits;
+        wk->split_words = RT_AA_SPLIT_WORDS(ctx->aa_levels);
+        wk->splits_line = (size_t)w * wk->split_words;
+        wk->splits_replay = opts->aa_splits_mode == RT_AA_SPLITS_REPLAY;
+    }
+#endif
 #endif
 #if RT_USE_SPD
     ctx->spd = opts->spd;
