@@ -318,7 +318,7 @@ run: deps-board
 	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(RUN_REPORT); \
 	    status=$$?; [ $$status = 0 ] || { cat $(RUN_REPORT); exit $$status; }
 	$(show) RT "$(RUN_REF) (the exact model at the same samples)"
-	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
+	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --same-samples $(BACKEND) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
 	$(show) RT "$(RUN_AREA) (the pixel-area image: rt --double --spp 16 --texture-filter off)"
 	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
 	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \

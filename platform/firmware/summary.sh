@@ -32,8 +32,12 @@ echo
 echo "$SCENE, $SIZE, depth $DEPTH, $how,"
 echo "rendered by the $build firmware on $BOARD (${board%.})."
 [ -n "$time" ] && printf '  %-15s %s; %s instructions a pixel\n' "on the board" "$time" "$ipp"
-printf '  %-15s %s dB from the exact model at the same samples, largest error %s/255\n' \
-    "number format" "$(field psnr "$exact")" "$(field max-error "$exact")"
+case $SAMPLING in
+*--aa*) same="at the same samples (its splits replayed)" ;;
+*) same="at the same samples" ;;
+esac
+printf '  %-15s %s dB from the exact model %s, largest error %s/255\n' \
+    "number format" "$(field psnr "$exact")" "$same" "$(field max-error "$exact")"
 printf '  %-15s %s dB from the image averaged over each pixel'"'"'s area, %s of pixels off by\n' \
     "what is seen" "$(field psnr "$area")" "$(field over8 "$area")"
 printf '  %-15s more than 8/255 (%s dB both blurred by a pixel, as an eye sees a small panel)\n' "" \
