@@ -54,6 +54,7 @@ run tests/scenec-tables-tests.sh "$B/rt" "$B/test-scenec-tables"
 run tests/examples-tests.sh "$B/rt" "$B/test-examples"
 run python3 tests/stress.py --quick
 run tests/lint.sh
+run tests/strict-flags.sh
 run python3 tests/layers.py "$B/fixed"
 run tests/symbols.sh "$B"
 run tests/config-tests.sh "$B/test-config"

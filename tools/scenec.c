@@ -82,6 +82,7 @@ static void emit_prim_ref_t(FILE *f, const void *v) { fprintf(f, "0x%08" PRIx32 
 static void emit_vec3_t(FILE *f, const void *v);
 static void emit_view_t(FILE *f, const void *v);
 static void emit_sky_t(FILE *f, const void *v);
+static void emit_mat3_t(FILE *f, const void *v);
 
 /* The emitter of a field type: real_t, real_wide_t and shine_t are
  * int32_t, int64_t and uint32_t in the fixed build, all float (double)
@@ -89,7 +90,7 @@ static void emit_sky_t(FILE *f, const void *v);
 #define EMITTER(type) \
     _Generic((type){ 0 }, int32_t: emit_i32, uint32_t: emit_u32, uint16_t: emit_u16, uint8_t: emit_u8, \
              int64_t: emit_i64, float: emit_float, double: emit_double, vec3_t: emit_vec3_t, view_t: emit_view_t, \
-             sky_t: emit_sky_t)
+             sky_t: emit_sky_t, mat3_t: emit_mat3_t)
 
 static void emit_vec3_t(FILE *f, const void *v)
 {
@@ -140,9 +141,10 @@ static void emit_field(FILE *f, const char *name, const char *dims, const void *
         FIELDS_##type(EMIT_FIELD) fprintf(f, "}"); \
     }
 #define DEFINE_EMIT_PRIM(type, table, cap, KIND, name, use) DEFINE_EMIT_STRUCT(type)
-/* the element types of scene.h's tables, and the view */
+/* the element types of scene.h's tables, the transforms' matrices, and the view */
 DEFINE_EMIT_STRUCT(material_t)
 DEFINE_EMIT_STRUCT(light_t)
+DEFINE_EMIT_STRUCT(mat3_t)
 DEFINE_EMIT_STRUCT(xform_t)
 DEFINE_EMIT_STRUCT(shape_t)
 DEFINE_EMIT_STRUCT(csg_node_t)

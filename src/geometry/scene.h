@@ -64,13 +64,20 @@ typedef struct { FIELDS_light_t(RT_DECLARE_FIELD) } light_t;
 
 /* ---- solids beyond NFF (solid.h; the BVH sees them as objects) -------- */
 
+/* A 3x3 matrix, rows[row][column]. A struct, not a bare real_t[3][3]:
+ * C11 does not convert real_t (*)[3] to const real_t (*)[3], so a matrix
+ * passed by pointer keeps its const-correctness only as a struct. */
+#define FIELDS_mat3_t(X) \
+    X(real_t, rows, [3][3])
+typedef struct { FIELDS_mat3_t(RT_DECLARE_FIELD) } mat3_t;
+
 /* An affine map kept with its inverse: world = m p + t, p = im (world - t).
  * Built from translate/rotate/scale steps, so the inverse is exact to the
  * same rounding as the map (no matrix inversion). */
 #define FIELDS_xform_t(X) \
-    X(real_t, m, [3][3]) \
+    X(mat3_t, m, ) \
     X(real_t, t, [3]) \
-    X(real_t, im, [3][3])
+    X(mat3_t, im, )
 typedef struct { FIELDS_xform_t(RT_DECLARE_FIELD) } xform_t;
 
 #define XFORM_NONE 0xFFFFu

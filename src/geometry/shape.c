@@ -105,8 +105,8 @@ void shape_set_world_bound(const scene_t *sc, shape_t *s)
     for (int i = 0; i < 3; i++) {
         real_wide_t row = 0;
         for (int j = 0; j < 3; j++) {
-            real_wide_t a = r_wmul(x->m[0][i], x->m[0][j]) + r_wmul(x->m[1][i], x->m[1][j]) +
-                            r_wmul(x->m[2][i], x->m[2][j]);
+            real_wide_t a = r_wmul(x->m.rows[0][i], x->m.rows[0][j]) + r_wmul(x->m.rows[1][i], x->m.rows[1][j]) +
+                            r_wmul(x->m.rows[2][i], x->m.rows[2][j]);
             mtm[i][j] = a;
             row += a < 0 ? -a : a;
         }
@@ -128,8 +128,8 @@ void shape_set_world_bound(const scene_t *sc, shape_t *s)
     }
     real_t w = r_mul(s->bound, r_next_up(r_wsqrt(g))), corner = 0;
     for (int i = 0; i < 8; i++) {
-        vec3_t c = xform_mat_vec(x->m, v3(i & 1 ? s->hi.x : s->lo.x, i & 2 ? s->hi.y : s->lo.y,
-                                          i & 4 ? s->hi.z : s->lo.z));
+        vec3_t c = xform_mat_vec(&x->m, v3(i & 1 ? s->hi.x : s->lo.x, i & 2 ? s->hi.y : s->lo.y,
+                                           i & 4 ? s->hi.z : s->lo.z));
         real_t l = r_next_up(r_wsqrt(v3_wdot(c, c)));
         corner = r_max(corner, l);
     }
@@ -202,7 +202,7 @@ RT_NOINLINE static bool object_ray(const scene_t *sc, const shape_t *s, const ra
             o->half_chord = s->kind == SHAPE_TORUS || s->kind == SHAPE_SPHERE ? r_wsqrt(h2) : 0;
             return true;
         }
-        org = xform_mat_vec(x->im, org);
+        org = xform_mat_vec(&x->im, org);
         vec3_t d = xform_dir_to_object(x, r->dir);
         o->k = v3_length(d);
         o->u = v3_unit(d);

@@ -24,18 +24,18 @@ vec3_t xform_normal(const xform_t *x, vec3_t n);
 
 /* m v, each row summed wide. Out of line: inlined into the per-ray code
  * it costs the board both code and instructions (register pressure). */
-vec3_t xform_mat_vec(const real_t m[3][3], vec3_t v);
+vec3_t xform_mat_vec(const mat3_t *m, vec3_t v);
 
 /* World to object, a point: M^-1 (p - t). The one place this is written. */
 static inline vec3_t xform_to_object(const xform_t *x, vec3_t p)
 {
-    return xform_mat_vec(x->im, v3(p.x - x->t[0], p.y - x->t[1], p.z - x->t[2]));
+    return xform_mat_vec(&x->im, v3(p.x - x->t[0], p.y - x->t[1], p.z - x->t[2]));
 }
 
 /* World to object, a direction: M^-1 d (not renormalised). */
 static inline vec3_t xform_dir_to_object(const xform_t *x, vec3_t d)
 {
-    return xform_mat_vec(x->im, d);
+    return xform_mat_vec(&x->im, d);
 }
 
 #endif

@@ -54,6 +54,7 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
 #endif
 }
 
+#if RT_USE_SHADOWS || RT_USE_REFLECTION || RT_USE_REFRACTION /* (else no ray leaves a surface) */
 /* The start of a ray leaving surface s: to the side the incoming ray came
  * from, or `through` it. Spheres and cones say whether it goes into them
  * (from_far) or away (skipped); polygons are skipped; solids, which may be
@@ -68,6 +69,7 @@ static void leave(const surface_t *s, bool through, ray_t *out)
     out->from_far = s->far_root && through == s->entering;
     out->leaf = s->leaf;
 }
+#endif
 
 /* Colour arithmetic, out of line: a few calls per light and bounce, where
  * each inline copy of three rounded products costs ~100 bytes of flash. */
@@ -186,11 +188,13 @@ RT_NOINLINE static vec3_t mirror_dir(vec3_t d, vec3_t n)
 }
 #endif
 
+#if RT_USE_REFLECTION || RT_USE_REFRACTION /* (the child rays) */
 /* Whether a child ray of this weight is worth tracing. */
 static inline bool worth_tracing(const tracer_t *tr, real_t weight)
 {
     return tr->min_weight == 0 || weight >= tr->min_weight;
 }
+#endif
 
 /* The nearest surface along the ray, if any. Not inlined, so the hit
  * record stays out of the recursive trace_ray frame. */
