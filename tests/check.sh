@@ -11,5 +11,14 @@ check() {
     fi
 }
 # ok MESSAGE, bad MESSAGE: count a check decided by the script itself.
-ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
-bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
+ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$*"; }
+bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$*"; }
+# log NAME CMD...: run the command quietly into $out/NAME.log, and show
+# the log's tail when it fails
+log() {
+    name=$1
+    shift
+    if "$@" >"$out/$name.log" 2>&1; then return 0; fi
+    tail -20 "$out/$name.log"
+    return 1
+}

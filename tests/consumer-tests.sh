@@ -6,16 +6,7 @@
 #   rt scenes/spd/balls-1.nff --size 32x32 --fixed
 # byte for byte; the scene prunes the core (no cone code linked).
 rt=${1:-build/host/rt} out=${2:-build/consumer}
-pass=0 fail=0
-ok() { pass=$((pass + 1)); echo "  ok    $*"; }
-bad() { fail=$((fail + 1)); echo "  FAIL  $*"; }
-log() { # log NAME CMD...: run quietly, show the log's tail on failure
-    name=$1
-    shift
-    if "$@" >"$out/$name.log" 2>&1; then return 0; fi
-    tail -20 "$out/$name.log"
-    return 1
-}
+. tests/check.sh
 same_image() { # same_image WHAT IMAGE
     if "$rt" compare "$2" "$out/ref.ppm" --max-error 0 >/dev/null 2>&1; then
         ok "$1: the same image as rt --fixed, byte for byte"

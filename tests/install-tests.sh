@@ -13,16 +13,7 @@
 #     files, and its rt, rt-scenec and package give the same results.
 rt=${1:-build/host/rt} out=${2:-build/test-install}
 SCENE=scenes/spd/balls-1.nff
-pass=0 fail=0
-ok() { pass=$((pass + 1)); echo "  ok    $*"; }
-bad() { fail=$((fail + 1)); echo "  FAIL  $*"; }
-log() { # log NAME CMD...: run quietly, show the log's tail on failure
-    name=$1
-    shift
-    if "$@" >"$out/$name.log" 2>&1; then return 0; fi
-    tail -20 "$out/$name.log"
-    return 1
-}
+. tests/check.sh
 rm -rf "$out"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
