@@ -14,7 +14,7 @@
 #                   refraction, shadow), checked against the firmware's own
 #                   counters (bench/profile.py; same variables as make run,
 #                   SIZE 64x64 unless given; about 35 s for balls-2)
-#   make test       install missing packages, build, run every test
+#   make test       install missing packages (all of them), build, run every test
 #   make bench      run time against error over numeric configurations, the
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
@@ -173,12 +173,17 @@ host-run: deps-board
 
 include platform/firmware/firmware.mk
 
-# deps: everything the tests and benchmarks use; deps-board: only what
-# rendering needs (make run, make host-run).
+# deps: everything the tests and benchmarks use (make test, bench,
+# stress, fuzz); deps-board: only what rendering on BOARD needs (make run,
+# host-run, image, profile): the host build and the board's
+# BOARD_PACKAGES (python3 too for make profile). Each names the command
+# it installs for in its messages (platform/ensure-deps.sh).
+DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board,$(MAKECMDGOALS))),$(1))
 deps:
-	@sh platform/ensure-deps.sh all
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh platform/ensure-deps.sh test
 deps-board:
-	@sh platform/ensure-deps.sh board $(BOARD_PACKAGES)
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_PACKAGES) \
+	    $(if $(filter profile,$(MAKECMDGOALS)),python3)
 
 # Run time against error over the numeric configurations (bench/results.md,
 # results.csv, plot.svg), then the BVH and pruning figures.
