@@ -1,7 +1,8 @@
 # Fixed-point Whitted ray tracer: host build, board firmware, tests.
 #
 #   make            build the hosted CLI (build/host/rt)
-#   make run        render SCENE on an emulated board (BOARD=mps2-an385 by
+#   make run        install the host build's and BOARD's missing packages,
+#                   render SCENE on an emulated board (BOARD=mps2-an385 by
 #                   default, BACKEND=fixed; platform/firmware/firmware.mk),
 #                   write out/<scene>-<board>-<backend>.png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
