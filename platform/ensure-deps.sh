@@ -129,8 +129,11 @@ if [ -n "$need" ]; then
     if ! $SUDO apt-get $LOCK update -qq >"$log" 2>&1; then
         update_err=$(last_error "$log")
     fi
+    # without the packages' recommendations (QEMU's GUI and firmware, the
+    # ARM toolchain's C++ library...): on a fresh Debian 12, make run's
+    # download 175 MB instead of 721 MB, make test's 398 MB instead of 1080
     # shellcheck disable=SC2086
-    if ! DEBIAN_FRONTEND=noninteractive $SUDO apt-get $LOCK install -y -qq $need >"$log" 2>&1; then
+    if ! DEBIAN_FRONTEND=noninteractive $SUDO apt-get $LOCK install -y -qq --no-install-recommends $need >"$log" 2>&1; then
         err=$(last_error "$log")
         # the packages apt's errors name; none named (a download, the
         # network, a lock): all of them
