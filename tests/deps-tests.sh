@@ -28,12 +28,22 @@ cat >"$OUT/bin/id" <<'EOF'
 echo 0
 EOF
 # apt-get: logs its arguments; APT_FAIL=PKG: install fails as apt does
-# for a package it cannot find
+# for a package it cannot find; APT_OFFLINE=1: as apt does without its
+# mirror (update warns and exits 0, install finds no package)
 cat >"$OUT/bin/apt-get" <<'EOF'
 #!/bin/sh
 echo "apt-get $*" >>"$STUB_LOG"
 case " $* " in
+*" update "*)
+    if [ -n "$APT_OFFLINE" ]; then
+        echo "W: Failed to fetch http://deb.debian.org/debian/dists/bookworm/InRelease  Temporary failure resolving 'deb.debian.org'"
+        echo "W: Some index files failed to download. They have been ignored, or old ones used instead."
+    fi ;;
 *" install "*)
+    if [ -n "$APT_OFFLINE" ]; then
+        for a; do case $a in -*|install|DPkg*) ;; *) echo "E: Unable to locate package $a" ;; esac; done
+        exit 100
+    fi
     if [ -n "$APT_FAIL" ]; then
         echo "Reading package lists..."
         echo "E: Unable to locate package $APT_FAIL"
@@ -107,6 +117,17 @@ if [ $status -ne 0 ] &&
     ok "apt-get fails: exit $status, $(printf '%s\n' "$out" | grep 'could not install')"
 else
     bad "apt-get fails: exit $status: $out"
+fi
+
+# no mirror: every package named, and apt-get update's warning
+out=$(APT_OFFLINE=1 stub sh platform/ensure-deps.sh run)
+status=$?
+if [ $status -ne 0 ] &&
+    printf '%s\n' "$out" | grep -q "^ensure-deps: could not install gcc make binutils gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm, needed by make run: E: Unable to locate package" &&
+    printf '%s\n' "$out" | grep -q "^ensure-deps: apt-get update had failed before: W: Failed to fetch"; then
+    ok "no mirror: exit $status, every package named, $(printf '%s\n' "$out" | grep 'update had failed' | cut -c1-80)..."
+else
+    bad "no mirror: exit $status: $out"
 fi
 
 # a failing npm ci: rp2040js, the command, the certificates' advice, exit 1
