@@ -169,6 +169,7 @@ ensure-deps: what to do: if npm cannot reach https://registry.npmjs.org, check t
   give Node and npm the system's certificates, then run the command again:
     export NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt   # or: export NODE_OPTIONS=--use-openssl-ca
     npm config set cafile /etc/ssl/certs/ca-certificates.crt
+  (npm's cafile, when set, is all npm trusts, NODE_EXTRA_CA_CERTS included: npm config get cafile)
   npm's last lines:
 EOF
         tail -5 "$log" | sed 's/^/    /'
