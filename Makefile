@@ -62,7 +62,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all run host-run test clean deps deps-board deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -164,7 +164,7 @@ build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry
 
 NAME := $(basename $(notdir $(SCENE)))
 
-host-run: deps-board
+host-run: deps-host
 	$(MAKE) build/host/rt
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
@@ -176,12 +176,15 @@ include platform/firmware/firmware.mk
 
 # deps: everything the tests and benchmarks use (make test, bench,
 # stress, fuzz); deps-board: only what rendering on BOARD needs (make run,
-# host-run, image, profile): the host build and the board's
-# BOARD_PACKAGES (python3 too for make profile). Each names the command
-# it installs for in its messages (platform/ensure-deps.sh).
-DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board,$(MAKECMDGOALS))),$(1))
+# image, profile): the host build and the board's BOARD_PACKAGES (python3
+# too for make profile); deps-host: the host build (make host-run). Each
+# names the command it installs for in its messages
+# (platform/ensure-deps.sh).
+DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board deps-host,$(MAKECMDGOALS))),$(1))
 deps:
 	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh platform/ensure-deps.sh test
+deps-host:
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,host-run)' sh platform/ensure-deps.sh host
 deps-board:
 	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_PACKAGES) \
 	    $(if $(filter profile,$(MAKECMDGOALS)),python3)

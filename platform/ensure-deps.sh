@@ -1,5 +1,5 @@
 #!/bin/sh
-# ensure-deps.sh run [PACKAGE...] | test: installs what one command needs
+# ensure-deps.sh run [PACKAGE...] | host | test: installs what one command needs
 # and is missing, and nothing else. The Makefile runs it first thing for
 # make run (and host-run, image, profile) and for make test (and bench,
 # stress, fuzz), so those two commands are all the set-up a user types.
@@ -7,6 +7,7 @@
 #          headers: build/host/rt, whose `rt receive` takes the board's
 #          frame) plus the packages named: the board's BOARD_PACKAGES
 #          (cross compiler, QEMU); none named: mps2-an385's
+#   host   the host build alone (make host-run)
 #   test   everything: every board's packages, the tests' and the
 #          benchmarks' tools (clang, valgrind, cppcheck, cmake, python3)
 #   (board and all: the old names of run and test)
@@ -30,9 +31,9 @@ board) mode=run ;;
 all) mode=test ;;
 esac
 case $mode in
-run | test) ;;
+run | host | test) ;;
 *)
-    echo "usage: sh platform/ensure-deps.sh run [PACKAGE...] | test" >&2
+    echo "usage: sh platform/ensure-deps.sh run [PACKAGE...] | host | test" >&2
     echo "  (make run and make test run it themselves: they are the set-up)" >&2
     exit 2
     ;;
@@ -43,6 +44,7 @@ say() { echo "ensure-deps: $*"; }
 boards="$*"
 [ -n "$boards" ] || boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
 # every board's (platform/*/board.mk, BOARD_PACKAGES)
+[ "$mode" = host ] && boards=""
 [ "$mode" = test ] && boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat nodejs"
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q 'ok installed'; }
 need=""

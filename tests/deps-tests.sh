@@ -25,7 +25,7 @@ exit 1
 EOF
 cat >"$OUT/bin/id" <<'EOF'
 #!/bin/sh
-echo 0
+echo "${STUB_UID:-0}"
 EOF
 # apt-get: logs its arguments; APT_FAIL=PKG: install fails as apt does
 # for a package it cannot find; APT_OFFLINE=1: as apt does without its
@@ -92,6 +92,12 @@ if has "$out" nodejs npm gcc-arm-none-eabi rp2040js@1.4.1 && printf '%s\n' "$out
 else
     bad "make run BOARD=pico: $out"
 fi
+out=$(ENSURE_DEPS_DRY_RUN=1 stub "$MAKE_BIN" -s deps-host)
+if printf '%s\n' "$out" | grep -qxF 'ensure-deps: would install for make host-run: gcc make binutils'; then
+    ok "make host-run: the host build only (gcc make binutils)"
+else
+    bad "make host-run: $out"
+fi
 out=$(ENSURE_DEPS_DRY_RUN=1 stub "$MAKE_BIN" -s deps)
 if has "$out" gcc gcc-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat nodejs npm \
     clang valgrind cppcheck cmake python3 rp2040js@1.4.1 && printf '%s\n' "$out" | grep -q 'for make test:'; then
@@ -128,6 +134,17 @@ if [ $status -ne 0 ] &&
     ok "no mirror: exit $status, every package named, $(printf '%s\n' "$out" | grep 'update had failed' | cut -c1-80)..."
 else
     bad "no mirror: exit $status: $out"
+fi
+
+# not root and no sudo: says so, exit 1, no apt-get
+: >"$STUB_LOG"
+out=$(STUB_UID=1000 stub sh platform/ensure-deps.sh run)
+status=$?
+if [ $status -ne 0 ] && [ ! -s "$STUB_LOG" ] &&
+    printf '%s\n' "$out" | grep -q "^ensure-deps: could not install .*qemu-system-arm, needed by make run: installing needs root, and there is no sudo"; then
+    ok "not root, no sudo: exit $status, $(printf '%s\n' "$out" | grep 'could not' | cut -d: -f3-)"
+else
+    bad "not root, no sudo: exit $status: $out; $(cat "$STUB_LOG")"
 fi
 
 # a failing npm ci: rp2040js, the command, the certificates' advice, exit 1
