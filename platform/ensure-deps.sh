@@ -14,7 +14,10 @@
 # A board whose emulator is an npm package (platform/pico: rp2040js, run
 # by Node.js) pins it in its folder's package.json and package-lock.json;
 # `npm ci` installs it into that folder's node_modules/ (ignored by git)
-# when nodejs is among the packages (BOARD=pico, and test).
+# when nodejs is among the packages (BOARD=pico, and test). When npm does
+# not trust the registry's certificate (a proxy that intercepts TLS), it
+# tries once more with the system's certificates (ENSURE_DEPS_CA_BUNDLE,
+# /etc/ssl/certs/ca-certificates.crt) before it gives up.
 # Environment:
 #   ENSURE_DEPS_FOR      the command, as the messages name it (the Makefile
 #                        sets it: "make run (BOARD=pico)"); default "make
@@ -109,7 +112,7 @@ log=$(mktemp "${TMPDIR:-/tmp}/ensure-deps.XXXXXX")
 trap 'rm -f "$log"' EXIT
 # last_error FILE: the last error line of apt's or npm's output
 last_error() {
-    line=$(grep -E '^(E:|Err:|npm ERR!|npm error)' "$1" | grep -v 'A complete log of this run' | tail -1)
+    line=$(grep -E '^(E:|Err:|npm ERR!|npm error)' "$1" | grep -vE 'A complete log of this run|_logs/' | tail -1)
     [ -n "$line" ] || line=$(grep -v '^[[:space:]]*$' "$1" | tail -1)
     printf '%s\n' "${line:-(no output)}"
 }
@@ -156,10 +159,25 @@ if [ -n "$need" ]; then
 fi
 
 # the npm packages of those boards, as their lock files pin them
+ca_bundle=${ENSURE_DEPS_CA_BUNDLE:-/etc/ssl/certs/ca-certificates.crt}
+cert_errors='SELF_SIGNED_CERT_IN_CHAIN|UNABLE_TO_GET_ISSUER_CERT|UNABLE_TO_VERIFY_LEAF_SIGNATURE|DEPTH_ZERO_SELF_SIGNED_CERT|CERT_UNTRUSTED|unable to verify the first certificate|self.signed certificate'
 for d in $npm_todo; do
     names=$(npm_names "$d")
     say "installing for $for_cmd: $names (npm ci in $d)"
-    if ! (cd "$d" && npm ci --no-audit --no-fund --loglevel=error) >"$log" 2>&1; then
+    ok=1
+    (cd "$d" && npm ci --no-audit --no-fund --loglevel=error) >"$log" 2>&1 || ok=0
+    # npm does not trust the registry's certificate (a proxy that
+    # intercepts TLS, whose CA the system trusts but Node does not): once
+    # more with the system's certificates, unless npm has a cafile already
+    if [ $ok = 0 ] && grep -qE "$cert_errors" "$log" && [ -f "$ca_bundle" ] &&
+        [ "$(npm config get cafile 2>/dev/null)" != "$ca_bundle" ]; then
+        say "npm does not trust the registry's certificate (a proxy that intercepts TLS?):"
+        say "  once more with the system's, NODE_EXTRA_CA_CERTS=$ca_bundle npm ci --cafile=$ca_bundle"
+        (cd "$d" && NODE_EXTRA_CA_CERTS=$ca_bundle npm ci --no-audit --no-fund --loglevel=error --cafile="$ca_bundle") \
+            >"$log" 2>&1 && ok=1
+        [ $ok = 0 ] || say "installed with the system's certificates (npm config set cafile $ca_bundle makes npm use them always)"
+    fi
+    if [ $ok = 0 ]; then
         code=$(grep -oE '(npm ERR!|npm error) code [A-Z_]+' "$log" | tail -1 | sed 's/.* code //')
         say "could not install $names (npm ci in $d), needed by $for_cmd: $(last_error "$log")"
         say "${code:+npm's error code is $code. }The other boards need no Node.js (make run renders on mps2-an385)."

@@ -52,13 +52,16 @@ case " $* " in
 esac
 exit 0
 EOF
-# npm (on PATH only for the npm test): ls finds nothing; ci fails as behind a TLS-intercepting proxy
+# npm (on PATH only for the npm tests): ls finds nothing; ci fails as
+# behind a TLS-intercepting proxy (NPM_CAFILE_OK=1: not with --cafile)
 cat >"$OUT/npm/npm" <<'EOF'
 #!/bin/sh
 echo "npm $*" >>"$STUB_LOG"
 case $1 in
 ls) exit 1 ;;
+config) echo null ;;
 ci)
+    case "$NPM_CAFILE_OK $*" in 1*--cafile=*) exit 0 ;; esac
     echo "npm error code SELF_SIGNED_CERT_IN_CHAIN"
     echo "npm error errno SELF_SIGNED_CERT_IN_CHAIN"
     echo "npm error request to https://registry.npmjs.org/rp2040js failed, reason: self-signed certificate in certificate chain"
@@ -147,7 +150,20 @@ else
     bad "not root, no sudo: exit $status: $out; $(cat "$STUB_LOG")"
 fi
 
-# a failing npm ci: rp2040js, the command, the certificates' advice, exit 1
+# a failing npm ci: once more with the system's certificates, then
+# rp2040js, the command, the certificates' advice, exit 1
+echo "a certificate" >"$OUT/ca.crt"
+ENSURE_DEPS_CA_BUNDLE=$PWD/$OUT/ca.crt
+export ENSURE_DEPS_CA_BUNDLE
+: >"$STUB_LOG"
+out=$(NPM=1 NPM_CAFILE_OK=1 stub sh platform/ensure-deps.sh run gcc-arm-none-eabi nodejs)
+status=$?
+if [ $status -eq 0 ] && grep -q "npm ci .*--cafile=$ENSURE_DEPS_CA_BUNDLE" "$STUB_LOG" &&
+    printf '%s\n' "$out" | grep -q "installed with the system's certificates"; then
+    ok "npm ci fails on the proxy's certificate: once more with the system's (--cafile, NODE_EXTRA_CA_CERTS), installed"
+else
+    bad "npm ci with the system's certificates: exit $status: $out; $(cat "$STUB_LOG")"
+fi
 out=$(NPM=1 ENSURE_DEPS_FOR='make run (BOARD=pico)' stub sh platform/ensure-deps.sh run gcc-arm-none-eabi nodejs)
 status=$?
 if [ $status -ne 0 ] &&
