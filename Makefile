@@ -2,7 +2,8 @@
 #
 #   make            build the hosted CLI (build/host/rt); V=1 shows the
 #                   full commands
-#   make run        render SCENE on an emulated board (BOARD=mps2-an385 by
+#   make run        install the host build's and BOARD's missing packages,
+#                   render SCENE on an emulated board (BOARD=mps2-an385 by
 #                   default, BACKEND=fixed; platform/firmware/firmware.mk),
 #                   write out/<scene>-<board>-<backend>.png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
@@ -15,7 +16,7 @@
 #                   refraction, shadow), checked against the firmware's own
 #                   counters (bench/profile.py; same variables as make run,
 #                   SIZE 64x64 unless given; about 35 s for balls-2)
-#   make test       install missing packages, build, run every test
+#   make test       install missing packages (all of them), build, run every test
 #   make install    rt, the scene compiler rt-scenec, the core as
 #                   librt_core.a, the public headers (include/rt/) and the
 #                   CMake package (lib/cmake/rt/) under DESTDIR PREFIX
@@ -85,7 +86,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install uninstall run host-run test clean deps deps-board size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -248,7 +249,7 @@ uninstall:
 
 NAME := $(basename $(notdir $(SCENE)))
 
-host-run: deps-board
+host-run: deps-host
 	$(Q)$(MAKE) build/host/rt
 	@mkdir -p out
 	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
@@ -258,12 +259,20 @@ host-run: deps-board
 
 include platform/firmware/firmware.mk
 
-# deps: everything the tests and benchmarks use; deps-board: only what
-# rendering needs (make run, make host-run).
+# deps: everything the tests and benchmarks use (make test, bench,
+# stress, fuzz); deps-board: only what rendering on BOARD needs (make run,
+# image, profile): the host build and the board's BOARD_PACKAGES (python3
+# too for make profile); deps-host: the host build (make host-run). Each
+# names the command it installs for in its messages
+# (platform/ensure-deps.sh).
+DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board deps-host,$(MAKECMDGOALS))),$(1))
 deps:
-	@sh platform/ensure-deps.sh all
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh platform/ensure-deps.sh test
+deps-host:
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,host-run)' sh platform/ensure-deps.sh host
 deps-board:
-	@sh platform/ensure-deps.sh board $(BOARD_PACKAGES)
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_PACKAGES) \
+	    $(if $(filter profile,$(MAKECMDGOALS)),python3)
 
 # Run time against error over the numeric configurations (bench/results.md,
 # results.csv, plot.svg), then the BVH and pruning figures.

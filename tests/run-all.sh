@@ -59,6 +59,7 @@ run python3 tests/layers.py "$B/fixed"
 run tests/symbols.sh "$B"
 run tests/config-tests.sh "$B/test-config"
 run tests/hygiene.sh
+run tests/deps-tests.sh "$B/test-deps"
 run python3 tests/docs-check.py "$B/rt"
 run tests/fuzz-smoke.sh
 echo

@@ -282,7 +282,7 @@ image: deps-board $(BOARD_IMAGES)
 # command (its tool, BOARD_FLASH_PACKAGE, installed when missing)
 flash: $(BOARD_IMAGES)
 	@$(if $(BOARD_FLASH),,echo "BOARD=$(BOARD) has no flash command$(if $(BOARD_IMAGES),: make image writes the files to flash ($(BOARD_IMAGE_NOTE)),: it runs under its emulator only)" >&2; exit 1)
-	@sh platform/ensure-deps.sh board $(BOARD_FLASH_PACKAGE)
+	@ENSURE_DEPS_FOR='make flash (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_FLASH_PACKAGE)
 	$(BOARD_FLASH)
 
 ifneq ($(BOARD_RULES),)
