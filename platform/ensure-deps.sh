@@ -44,11 +44,18 @@ esac
 shift
 for_cmd=${ENSURE_DEPS_FOR:-make $mode}
 say() { echo "ensure-deps: $*"; }
+# BOARD_PACKAGES of the board.mk files named (the one list of them)
+board_packages() {
+    list=""
+    for p in $(sed -n 's/^BOARD_PACKAGES *:= *//p' "$@"); do
+        case " $list " in *" $p "*) ;; *) list="$list $p" ;; esac
+    done
+    echo $list
+}
 boards="$*"
-[ -n "$boards" ] || boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm"
-# every board's (platform/*/board.mk, BOARD_PACKAGES)
+[ -n "$boards" ] || boards=$(board_packages platform/mps2-an385/board.mk) # the default board's
 [ "$mode" = host ] && boards=""
-[ "$mode" = test ] && boards="gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm gcc-riscv64-unknown-elf qemu-system-misc socat nodejs"
+[ "$mode" = test ] && boards=$(board_packages platform/*/board.mk) # every board's
 installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q 'ok installed'; }
 need=""
 # the host build: build/host/rt (and rt-scenec, which compiles the scene
