@@ -30,6 +30,12 @@ typedef struct {
 #define N_OUT(s) ((s)->n)
 #endif
 
+#if RT_RAY_CONES
+/* A cone's widths and spreads: products and sums within CONE_LIMIT */
+static inline real_t cone_mul(real_t a, real_t b) { return r_mul_bounded(a, b, CONE_LIMIT); }
+static inline real_t cone_add(real_t a, real_t b) { return r_add_bounded(a, b, CONE_LIMIT); }
+#endif
+
 /* Out of line: its temporaries are not on the stack under the search. */
 RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
@@ -50,7 +56,7 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
 #endif
     s->m = &sc->materials[ps.material];
 #if RT_RAY_CONES
-    s->cone_width = r_add_bounded(ray->cone_width, r_mul_bounded(ray->cone_spread, h->t, CONE_LIMIT), CONE_LIMIT);
+    s->cone_width = cone_add(ray->cone_width, cone_mul(ray->cone_spread, h->t));
 #endif
 }
 
@@ -266,7 +272,7 @@ static real_t cone_bend(const tracer_t *tr, const surface_t *s)
 #if RT_USE_SPHERES
     if (s->ref != PRIM_NONE && PRIM_KIND(s->ref) == PRIM_SPHERE && s->cone_width != 0) {
         const sphere_t *sp = &tr->scene->spheres[PRIM_INDEX(s->ref)];
-        real_t bend = r_mul_bounded(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius), CONE_LIMIT);
+        real_t bend = cone_mul(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius));
         return s->entering ? bend : -bend;
     }
 #endif
@@ -281,7 +287,7 @@ static void cone_reflected(const tracer_t *tr, const ray_t *ray, const surface_t
 {
     real_t bend = cone_bend(tr, s);
     out->cone_width = s->cone_width;
-    out->cone_spread = r_add_bounded(ray->cone_spread, r_add_bounded(bend, bend, CONE_LIMIT), CONE_LIMIT);
+    out->cone_spread = cone_add(ray->cone_spread, cone_add(bend, bend));
 }
 #endif
 
@@ -294,10 +300,10 @@ static void cone_refracted(const tracer_t *tr, const ray_t *ray, const surface_t
     real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior;
     real_t bend = cone_bend(tr, s);
     out->cone_width = s->cone_width;
-    out->cone_spread = r_mul_bounded(eta, ray->cone_spread, CONE_LIMIT);
+    out->cone_spread = cone_mul(eta, ray->cone_spread);
     if (bend != 0) {
         real_t cos_t = -v3_dot_in_range(out->dir, s->n);
-        out->cone_spread = r_add_bounded(out->cone_spread, r_mul_bounded(r_mul(eta, cos_i) - cos_t, bend, CONE_LIMIT), CONE_LIMIT);
+        out->cone_spread = cone_add(out->cone_spread, cone_mul(r_mul(eta, cos_i) - cos_t, bend));
     }
 }
 #endif
