@@ -39,6 +39,7 @@ run tests/spelling-tests.sh "$B/rt" "$B/test-spelling"
 run tests/far-tiles-tests.sh "$B/rt" "$B/test-far-tiles"
 run tests/threads-tests.sh "$B/rt" "$B/test-threads"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
+run tests/report-tests.sh
 run tests/board-tests.sh "$B/rt"
 run tests/board-aa-tests.sh "$B/rt"
 run tests/ports-tests.sh "$B/rt"

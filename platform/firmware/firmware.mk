@@ -21,6 +21,7 @@
 #                   without icount instead (cores in parallel; no counts)
 #   BOARD_PACKAGES  the Debian packages it needs (make run installs them)
 #   BOARD_CLOCK_HZ  the core's clock, for the time make run prints
+#   BOARD_TITLE     the board in a phrase, for make run's report
 #   BOARD_BACKENDS  what BACKEND may be (fixed, float, double)
 #   BOARD_SRC       its C files: port_init, port_write, port_icount_*
 #                   (and port_cycles_read, with BOARD_CYCLES := 1)
@@ -321,7 +322,7 @@ run: deps-board
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --same-samples $(BACKEND) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
 	$(show) RT "$(RUN_AREA) (the pixel-area image: rt --double --spp 16 --texture-filter off)"
 	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
-	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \
+	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BOARD_TITLE="$(BOARD_TITLE)" CLOCK_HZ=$(BOARD_CLOCK_HZ) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \
 	    OUT=$(RUN_OUT) IMAGE_NOTE="$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))" \
 	    sh platform/firmware/summary.sh $(RUN_REPORT) "$$(build/host/rt compare $(RUN_OUT) $(RUN_REF))" \
 	    "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA))" "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1)"

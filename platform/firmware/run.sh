@@ -2,8 +2,8 @@
 # run.sh FIRMWARE.elf OUT.png RT [CLOCK_HZ]: run the firmware on the
 # emulated board ($QEMU: the QEMU binary and machine, from board.mk),
 # decode its UART stream into OUT.png and print its report lines, then
-# how long QEMU took on the host and, given CLOCK_HZ, how long the render
-# would take on a board at that clock.
+# how long QEMU took on the host. (CLOCK_HZ: unused, the runners' common
+# arguments.)
 # Exits non-zero when QEMU, the firmware or the stream fails.
 # $QEMU_ICOUNT is the board's -icount option (BOARD_ICOUNT, default
 # shift=0); $QEMU_ACCEL, when set (e.g. "-accel tcg,thread=multi": the
@@ -12,7 +12,7 @@
 # With RUN_END=report (a board built for silicon, with no semihosting:
 # BOARD_ARCH_SKIP) the firmware ends with an "exit_status N" report line
 # and sleeps, and QEMU, which does not exit on WFI, is stopped there.
-elf=$1 out=$2 rt=$3 hz=$4
+elf=$1 out=$2 rt=$3
 stream="${elf%.elf}.stream"
 clock="${QEMU_ACCEL:--icount ${QEMU_ICOUNT:-shift=0}}"
 t0=$(date +%s.%N)
@@ -50,19 +50,11 @@ if [ $status -ne 0 ]; then
     exit $status
 fi
 [ $rx -ne 0 ] && exit $rx
-# -icount shift=0 counts one instruction per virtual ns, not cycles; a real
-# core takes more than one cycle for loads, branches and divisions
-# (and waits on flash), so the real time is likely longer.
+# (the time on the board: make run's summary.sh, from the cycles an
+# instruction make bench measured; -icount shift=0 counts instructions,
+# one per virtual ns, not cycles)
 if [ -n "$QEMU_ACCEL" ]; then
     echo "($QEMU_ACCEL instead of -icount: the instruction counts above are host time)"
-elif [ -n "$hz" ]; then
-    # several cores: the time is the critical path's, the slowest core's
-    printf '%s\n' "$report" | awk -v hz="$hz" '$1 == "render_instructions" { n = $2 }
-        $1 == "cores" { cores = $2 } $1 == "critical_path_instructions" { n = $2 }
-        END { if (n == "") exit
-              how = "1 instr/cycle, UART output excluded"
-              if (cores > 1) how = how ", " cores " cores: critical path"
-              printf "board render time at %g MHz (%s): %.2f s\n", hz / 1e6, how, n / hz }'
 fi
 awk -v t0="$t0" -v t1="$t1" 'BEGIN { printf "QEMU wall time on the host (boot, render, UART stream): %.1f s\n", t1 - t0 }'
 exit 0

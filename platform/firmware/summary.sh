@@ -1,50 +1,102 @@
 #!/bin/sh
 # summary.sh REPORT EXACT AREA BLURRED: make run's report. A few plain
-# lines first (what was rendered where, the time on the board, how close
-# the image is to the exact one and to what a viewer sees, where the PNG
-# is), then the board's own report lines (REPORT: board-run's output).
+# lines first (what was rendered on which board, the time on the board,
+# how close the image is to the exact one and to what a viewer sees, where
+# the PNG is, which emulator ran it), then the board's own report lines
+# (REPORT: board-run's output).
 # EXACT, AREA, BLURRED: `rt compare` lines of the board's image against
 # the exact model at the same samples, the pixel-area image, and the
 # same blurred by a pixel. The rest comes from the environment:
-# SCENE SIZE DEPTH BOARD BACKEND SAMPLING OUT IMAGE_NOTE.
+# SCENE SIZE DEPTH BOARD BACKEND SAMPLING OUT IMAGE_NOTE, and from the
+# board's board.mk BOARD_TITLE (the board in a phrase) and CLOCK_HZ
+# (BOARD_CLOCK_HZ). TIME_TABLE (default bench/time.csv, which make bench
+# writes) gives the cycles an instruction of a board without a cycle
+# counter.
 report=$1 exact=$2 area=$3 blurred=$4
+table=${TIME_TABLE:-bench/time.csv}
 field() { # field NAME LINE: the number after NAME in an rt compare line
     printf '%s\n' "$2" | awk -v k="$1" '{ for (i = 1; i < NF; i++) if ($i == k) { print $(i + 1); exit } }'
 }
 value() { awk -v k="$1" '$1 == k { v = $2 } END { print v }' "$report"; }
-board=$(sed -n '1s/^# board.mk - //p' "platform/$BOARD/board.mk")
+commas() { sed ':a;s/\B[0-9]\{3\}\>/,&/;ta'; }
 case $BACKEND in
 fixed) build="fixed-point" ;;
 *) build="$BACKEND" ;;
 esac
 case $SAMPLING in
-*--aa*) how="adaptive anti-aliasing ($(echo "$SAMPLING" | sed 's/ *--texture-filter off//'))" ;;
-*--spp*) n=$(echo "$SAMPLING" | sed 's/.*--spp \([0-9]*\).*/\1/'); how="$n x $n samples a pixel" ;;
-*) how="one sample a pixel" ;;
+*--aa*) how="adaptive anti-aliasing ($(echo "$SAMPLING" | sed 's/ *--texture-filter off//')),"
+    bench_sampling="aa 3" ;;
+*--spp*) n=$(echo "$SAMPLING" | sed 's/.*--spp \([0-9]*\).*/\1/'); how="$n x $n samples a pixel,"
+    bench_sampling="1 sample" ;;
+*) how="one sample a pixel," bench_sampling="1 sample" ;;
 esac
-case $SAMPLING in *"--texture-filter off"*) how="$how, textures point-sampled" ;; esac
-ipp=$(value instructions_per_pixel | sed ':a;s/\B[0-9]\{3\}\>/,&/;ta')
-# run.sh's line: "board render time at 25 MHz (1 instr/cycle, ...): 37.14 s"
-time=$(sed -n 's/^board render time at \([0-9.]* MHz\) (\(.*\)): \(.*\)$/\3 at \1 (\2)/p' "$report")
-qemu=$(sed -n 's/^QEMU wall time on the host (\(.*\)): \(.*\)$/\2 (\1)/p' "$report")
+case $SAMPLING in *"--texture-filter off"*) how="${how%,}, textures point-sampled," ;; esac
+mhz=$(awk -v hz="$CLOCK_HZ" 'BEGIN { printf "%g", hz / 1e6 }')
+ipp=$(value instructions_per_pixel | commas)
+
+# The time on the board: the port's own cycle count where it has one
+# (render_cycles: SysTick on the pico, DWT's CYCCNT on an STM32F4 chip),
+# else the instructions (the critical path's on two cores) times the
+# cycles an instruction bench/cycles.py priced the benchmark scene at on
+# this board and backend (bench/time.csv, the row of the same sampling).
+time_lines() {
+    cycles=$(value render_cycles)
+    instr=$(value critical_path_instructions)
+    [ -n "$instr" ] || instr=$(value render_instructions)
+    emulator=$(sed -n 's/^\([^ ]*\) wall time on the host (\(.*\)): \(.*\)$/\1/p' "$report")
+    if [ -n "$cycles" ]; then
+        if grep -q '^counter: DWT CYCCNT' "$report"; then counter="DWT's cycle counter (CYCCNT)"
+        else counter="SysTick"; fi
+        [ "$emulator" = rp2040js ] && counter="$counter under rp2040js (its Cortex-M0+ timing, code in SRAM)"
+        time=$(awk -v c="$cycles" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", c / hz }')
+        printf '  %-15s %s at %s MHz, counted by %s;\n' "on the board" "$time" "$mhz" "$counter"
+        printf '  %-15s %s instructions a pixel.\n' "" "$ipp"
+    elif grep -q 'instead of -icount' "$report"; then
+        printf '  %-15s no time: the instruction counts are host time (QEMU_ACCEL), not instructions.\n' "on the board"
+    elif [ -n "$instr" ]; then
+        # the row of this board, backend and sampling; else its one-sample row
+        cpi=$(awk -F, -v b="$BOARD" -v be="$BACKEND" -v s="$bench_sampling" '
+            NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
+            $col["board"] == b && $col["backend"] == be && $col["cpi"] != "" {
+                if ($col["sampling"] == s) exact = $col["cpi"] "|" s
+                else if ($col["sampling"] == "1 sample") one = $col["cpi"] "|" $col["sampling"] }
+            END { print exact != "" ? exact : one }' "$table" 2>/dev/null)
+        if [ -n "$cpi" ]; then
+            case $cpi in
+            *"|aa 3") on="with --aa 3" ;;
+            *) on="with one sample a pixel" ;;
+            esac
+            cpi=${cpi%%|*}
+            time=$(awk -v n="$instr" -v c="$cpi" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", n * c / hz }')
+            printf '  %-15s about %s at %s MHz, estimated: %s instructions a pixel x %.2f cycles an\n' \
+                "on the board" "$time" "$mhz" "$ipp" "$cpi"
+            printf '  %-15s instruction, the mix bench/cycles.py priced on the card scene %s\n' "" "$on"
+            printf '  %-15s (%s; the core'"'"'s documented timings, no flash wait states).\n' "" "$table"
+        else
+            printf '  %-15s %s instructions a pixel; %s has no cycles an instruction for %s %s\n' \
+                "on the board" "$ipp" "$table" "$BOARD" "$BACKEND"
+            printf '  %-15s (make bench writes it), so no time is given.\n' ""
+        fi
+    fi
+}
 
 echo
-echo "$SCENE, $SIZE, depth $DEPTH, $how,"
-echo "rendered by the $build firmware on $BOARD (${board%.})."
-[ -n "$time" ] && printf '  %-15s %s; %s instructions a pixel\n' "on the board" "$time" "$ipp"
+echo "$SCENE, $SIZE, depth $DEPTH, $how"
+echo "rendered by the $build firmware on $BOARD: $BOARD_TITLE, at $mhz MHz."
+time_lines
 case $SAMPLING in
 *--aa*) same="at the same samples (its splits replayed)" ;;
 *) same="at the same samples" ;;
 esac
-printf '  %-15s %s dB from the exact model %s, largest error %s/255\n' \
+printf '  %-15s %s dB from the exact model %s, largest error %s/255.\n' \
     "number format" "$(field psnr "$exact")" "$same" "$(field max-error "$exact")"
 printf '  %-15s %s dB from the image averaged over each pixel'"'"'s area, %s of pixels off by\n' \
     "what is seen" "$(field psnr "$area")" "$(field over8 "$area")"
-printf '  %-15s more than 8/255 (%s dB both blurred by a pixel, as an eye sees a small panel)\n' "" \
+printf '  %-15s more than 8/255 (%s dB both blurred by a pixel, as an eye sees a small panel).\n' "" \
     "$(field psnr "$blurred")"
-printf '  %-15s %s%s\n' "image" "$OUT" "$IMAGE_NOTE"
-echo "(PSNR: 10 log10(1 / mean squared error); above about 40 dB a difference is hard to see."
-echo " QEMU took $qemu on this machine.)"
+printf '  %-15s %s%s.\n' "image" "$OUT" "$IMAGE_NOTE"
+echo "(PSNR: 10 log10(1 / mean squared error); above about 40 dB a difference is hard to see.)"
+sed -n 's/^\([^ ]*\) wall time on the host (\(.*\)): \(.*\)$/\1 ran it in \3 on this machine (\2)./p' "$report"
 echo
 echo "The board's report (each counter is described under rt --stats in docs/cli.md):"
-grep -v '^progress_rows\|^board render time\|^QEMU wall time' "$report" | sed 's/^/  /'
+grep -v '^progress_rows\|^board render time\|wall time on the host' "$report" | sed 's/^/  /'

@@ -4,6 +4,8 @@
 # frame goes (oled.c, band by band, no frame buffer). Only the report
 # lines go over UART0; run.sh captures the panel through QEMU's monitor.
 # The port contract and the variables are in platform/firmware/firmware.mk.
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
+BOARD_TITLE    := TI Stellaris LM3S6965 evaluation board with a Cortex-M3, no FPU and a 128x64 OLED
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m3 -mthumb

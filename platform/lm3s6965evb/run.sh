@@ -4,8 +4,7 @@
 # monitor on a unix socket and UART0 into a file, waits until its report
 # says "drawn", dumps the OLED through the monitor (screendump) and quits
 # QEMU. Then it prints the report lines (rt receive --report-only on the
-# UART file), turns the dump into OUT.png and prints how long QEMU took
-# and, given CLOCK_HZ, how long the render would take at that clock.
+# UART file), turns the dump into OUT.png and prints how long QEMU took.
 #
 # The dump is 512x256 RGB: QEMU draws each of the panel's 128x64 pixels
 # as a 4x4 block of grey 17*v (v = 0..15). Every block must be uniform
@@ -73,7 +72,7 @@ if [ "$1" = --panel ]; then
     exit $?
 fi
 
-elf=$1 out=$2 rt=$3 hz=$4
+elf=$1 out=$2 rt=$3
 base=${elf%.elf}
 serial=$base.serial ppm=$base.oled.ppm panel=$base.oled.stream
 case $ppm in /*) ;; *) ppm=$PWD/$ppm ;; esac
@@ -150,12 +149,6 @@ fi
 panel_stream "$ppm" "$w" "$h" "$panel" || exit 1
 "$rt" receive "$panel" -o "$out" || exit $?
 
-# -icount shift=0 counts one instruction per virtual ns, not cycles; a real
-# core takes more than one cycle for loads, branches and divisions
-# (and waits on flash), so the real time is likely longer.
-if [ -n "$hz" ]; then
-    printf '%s\n' "$rep" | awk -v hz="$hz" '$1 == "render_instructions" {
-        printf "board render time at %g MHz (1 instr/cycle, OLED output excluded): %.2f s\n", hz / 1e6, $2 / hz }'
-fi
+# (the time on the board: make run's summary.sh prices the instructions)
 awk -v t0="$t0" -v t1="$t1" 'BEGIN { printf "QEMU wall time on the host (boot, render, OLED output): %.1f s\n", t1 - t0 }'
 exit 0

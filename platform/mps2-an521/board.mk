@@ -4,6 +4,8 @@
 # reads 0 on core 0, a VFP instruction faults NOCP there and a DSP one
 # UNDEFINSTR), and both cores run one image, so every build is soft-float
 # and without DSP instructions. Variables: platform/firmware/firmware.mk.
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
+BOARD_TITLE    := ARM MPS2 AN521, an FPGA board (QEMU's model), with two Cortex-M33, built without FPU or DSP
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m33+nofp+nodsp -mthumb

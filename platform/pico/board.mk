@@ -9,6 +9,8 @@
 # ELF (image.mk). run.mjs boots that UF2 under rp2040js the way the chip
 # does (rp2040js pinned in package.json, installed into node_modules/ by
 # npm ci, by platform/ensure-deps.sh). Variables: platform/firmware/firmware.mk.
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
+BOARD_TITLE    := Raspberry Pi Pico (RP2040) with one of its two Cortex-M0+ cores and no FPU
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m0plus -mthumb

@@ -1,6 +1,8 @@
 # board.mk - SiFive HiFive1 (FE310, QEMU's sifive_e): an RV32IMAC core,
 # 16 KiB of RAM (DTIM), the program executed in place from SPI flash.
 # The port contract and the variables are in platform/firmware/firmware.mk.
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
+BOARD_TITLE    := SiFive HiFive1 (FE310) with an RV32IMAC core, no FPU and 16 KiB of RAM
 BOARD_ARCH     := riscv
 BOARD_CROSS    := riscv64-unknown-elf-
 # -misa-spec=2.2: the FE310's ISA, where the CSR instructions (csrr, csrw)

@@ -10,6 +10,8 @@
 # instructions with TIM2, and says so. The build writes <backend>.bin
 # and <backend>.hex beside the ELF (image.mk). Variables:
 # platform/firmware/firmware.mk.
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
+BOARD_TITLE    =  $(if $(filter f405,$(STM32)),an STM32F405/F407 board (STM32F4DISCOVERY and the like),a Nucleo-64 board (STM32F401/F411/F446)) with a Cortex-M4F and its single-precision FPU
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m4 -mthumb
