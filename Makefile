@@ -27,7 +27,7 @@
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
 #                   and dithering against the pixel-area image (about 75 min)
-#   make bench-quick  a subset of the first (< 2 min)
+#   make bench-quick  a subset of the first (its duration: docs/performance.md)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
 # float, and double with the fixed build's tolerances); each copy is
@@ -302,6 +302,8 @@ bench: deps
 	python3 bench/filter_bench.py
 	@echo
 	python3 bench/scenes_bench.py
+	@echo
+	python3 bench/time_bench.py
 
 # The README's and docs' pictures (docs/*.png but demos.png and oled.png).
 pictures: build/host/rt

@@ -139,6 +139,18 @@ def cpi_of(m, board, js):
     return d["cycles"]["typ"] / d["instructions"]
 
 
+def drop_unchanged(rows, label_keys=("board", "backend", "scene")):
+    """rows without a build variant's rows that equal the board's own in
+    every figure: there the variant does not change the code (the pico's
+    PICO_DIVIDER=0 where the scene has no 64-bit division on its pixel
+    path), so the row would measure nothing."""
+    def key(r):
+        return (r["board"].split(" ")[0],) + tuple(r.get(k) for k in label_keys[1:])
+    own = {key(r): r for r in rows if " " not in r["board"]}
+    return [r for r in rows if " " not in r["board"] or key(r) not in own or any(
+        str(r.get(k, "")) != str(own[key(r)].get(k, "")) for k in r if k not in label_keys)]
+
+
 def write_csv(path, keys, rows):
     """rows (dicts) to a CSV file with these columns, missing ones empty."""
     with open(path, "w", newline="") as f:
@@ -203,6 +215,7 @@ def main():
                 merged.append(r)
         rows = merged + list(fresh.values())
     keys = ["board", "backend", "scene", "ipp", "cpi", "cpp", "psnr", "max_error", "code", "ram"]
+    rows = drop_unchanged(rows)
     write_csv(os.path.join(ROOT, "bench", "boards.csv"), keys, rows)
     with open(os.path.join(ROOT, "bench", "boards.md"), "w") as f:
         f.write("# Boards and backends (bench/boards_bench.py)\n\n")
@@ -211,7 +224,9 @@ def main():
                 "the core's documented timings (bench/cycles.py), except on the pico, whose cycles\n"
                 "are rp2040js's count of the whole render (no flash wait states or XIP cache\n"
                 "modelled); PSNR and max error against the\n"
-                "exact double reference in the board's pixel format; code and static RAM of the ELF.\n\n")
+                "exact double reference in the board's pixel format; code and static RAM of the ELF.\n"
+                "A build variant's row (board.mk's BOARD_BENCH_VARIANTS) is left out where it equals\n"
+                "the board's own in every column: there the variant builds the same code.\n\n")
         f.write("| board | backend | scene | instr/px | CPI | est. cycles/px | PSNR (dB) | max error | code (B) | RAM (B) |\n")
         f.write("|---|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:

@@ -160,7 +160,7 @@ def write_svg(path, cells, cfgs, agg, front):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--quick", action="store_true", help="a subset that runs in about a minute")
+    ap.add_argument("--quick", action="store_true", help="a subset (make bench-quick; its duration: docs/performance.md)")
     ap.add_argument("--board", default="mps2-an385", help="the board of the instructions-per-pixel column")
     ap.add_argument("--from-csv", action="store_true",
                     help="measure nothing: rewrite the results from results.csv's cells "

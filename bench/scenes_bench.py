@@ -18,7 +18,13 @@ shows more of the scene and costs about 10% less a pixel), and this records
     pixel aliases).
 It writes bench/scenes.md and bench/scenes.csv.
 
+A build variant's rows (board.mk's BOARD_BENCH_VARIANTS) are left out
+where they equal the board's own in every column (the variant builds the
+same code for these scenes: the pico's PICO_DIVIDER=0, whose divider only
+64-bit quotients use, which these scenes' pixel paths have none of).
+
   bench/scenes_bench.py [--boards a,b] [--scenes a,b] [--size WxH] [--no-cycles] [--update]
+  bench/scenes_bench.py --from-csv
 """
 import argparse
 import csv
@@ -29,7 +35,7 @@ import sys
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, cycles, run, variants, write_csv  # noqa: E402
+from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, cycles, drop_unchanged, run, variants, write_csv  # noqa: E402
 from boards_bench import measure as boards_measure  # noqa: E402
 
 OUT = os.path.join(ROOT, "build", "bench-scenes")
@@ -92,11 +98,17 @@ def main():
     ap.add_argument("--no-cycles", action="store_true")
     ap.add_argument("--update", action="store_true",
                     help="re-measure only the selected rows; keep the others of bench/scenes.csv")
+    ap.add_argument("--from-csv", action="store_true",
+                    help="measure nothing: rewrite bench/scenes.md (and the csv) from bench/scenes.csv")
     a = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    run(["make", "-s", "build/host/rt"])
+    if a.from_csv:
+        a.update = True
+    else:
+        run(["make", "-s", "build/host/rt"])
     rows = []
-    for b, v in [(b, v) for b in (a.boards.split(",") if a.boards else boards()) for v in variants(b)]:
+    sel = [] if a.from_csv else a.boards.split(",") if a.boards else boards()
+    for b, v in [(b, v) for b in sel for v in variants(b)]:
         label = b + (" " + v if v else "")
         backends = board_info(["BOARD=" + b])["backends"].split()
         for be in backends[:1] if v else backends:
@@ -131,6 +143,7 @@ def main():
                 r["cycles"] = "estimated"
     keys = ["board", "backend", "fpu", "scene", "depth", "size", "ipp", "cpi", "cpp", "cycles", "psnr", "max_error",
             "area_psnr", "area_over8", "code", "ram"]
+    rows = drop_unchanged(rows)
     write_csv(os.path.join(ROOT, "bench", "scenes.csv"), keys, rows)
     with open(os.path.join(ROOT, "bench", "scenes.md"), "w") as f:
         f.write("# The benchmark scenes on every board (bench/scenes_bench.py)\n\n")
@@ -142,7 +155,11 @@ def main():
                 "over the whole render (its Cortex-M0+ timing: no flash wait states or XIP\n"
                 "cache; its SIO divider charged 16 cycles a division, the silicon's 8; one core,\n"
                 "the second is not emulated); PSNR against the exact double build at the same samples and\n"
-                "against the pixel-area image (rt --double --spp 16 --texture-filter off).\n\n" % a.size)
+                "against the pixel-area image (rt --double --spp 16 --texture-filter off).\n"
+                "A build variant's rows (board.mk's BOARD_BENCH_VARIANTS) are left out where they\n"
+                "equal the board's own in every column: the pico's PICO_DIVIDER=0 builds the same\n"
+                "code for these scenes (its divider serves only 64-bit quotients, which they do not\n"
+                "compute).\n\n" % a.size)
         f.write("Published figures, cycles per pixel at 320x240 (time x clock / 76,800):\n\n")
         f.write("| chip | FPU | scene | clock | time | cycles/px |\n|---|---|---|---|---|---|\n")
         for chip, fpu, s, hz, t in PUBLISHED:

@@ -17,6 +17,16 @@
     bound such as >= 45 dB is not a figure);
   - every result file of bench/ the pages name is one `make bench`
     writes: its name is in the source of a script the bench rule runs;
+  - README.md's figures agree with the files they name: each figure (and
+    both ends of a range "A to B dB") of a paragraph or table that names
+    a bench file, rounded as written, is a number of one of those files;
+    and a figure said to be of point-sampled textures, of cycles or of
+    instructions names a file that has such figures (the word is in it);
+  - a figure of the docs' own kind stated once: `make bench-quick`'s
+    duration is given in one place of the Makefile, README.md, docs/
+    and the bench scripts;
+  - no bench table has a build variant's row ("board VAR=value") equal in
+    every other cell to the board's own: such a row measures nothing;
   - README.md is at most 250 lines.
 
   tests/docs-check.py [RT]
@@ -163,6 +173,98 @@ sources = "".join(open(s).read() for s in scripts if os.path.exists(s)) + bench_
 stale = sorted(r for r in named_results if not os.path.exists(r) or os.path.basename(r) not in sources)
 check(scripts and not stale, "%d bench result files the docs name are written by make bench (%d scripts)%s" %
       (len(named_results), len(scripts), ": not " + " ".join(stale) if stale else ""))
+
+# README.md's figures against the files they name
+NUMBER = re.compile(r"\d[\d,]*(?:\.\d+)?")
+RANGE = re.compile(r"(\d[\d,]*(?:\.\d+)?)x?\s(?:to|and)\s" + FIGURE.pattern[FIGURE.pattern.index("(?:"):])
+QUALIFIERS = ("point-sampled", "cycles", "instructions")
+
+
+def numbers_of(path):
+    with open(path) as f:
+        return {float(n.replace(",", "")) for n in NUMBER.findall(f.read())}
+
+
+def agrees(figure, have):
+    v = float(figure.replace(",", ""))
+    d = len(figure.split(".")[1]) if "." in figure else 0
+    return any(abs(round(n, d) - v) < 1e-9 for n in have)
+
+
+def block_figures(block):
+    """(figure, the text after it) for each figure of a block: prose and
+    the figure columns of a table"""
+    out = []
+    rows = [r for r in block.splitlines() if r.lstrip().startswith("|")]
+    prose = "\n".join(r for r in block.splitlines() if not r.lstrip().startswith("|"))
+    seen = set()
+    for m in list(RANGE.finditer(prose)) + list(FIGURE.finditer(prose)):
+        if m.start(0) not in seen:  # a range's first figure, then each figure once
+            seen.add(m.start(0))
+            unit = m.end(0) - len(m.group(0).split()[-1])  # the clause from the figure's unit on
+            start = max(prose.rfind(". ", 0, m.start(0)), prose.rfind(".\n", 0, m.start(0))) + 1
+            end = min([i for i in (prose.find(". ", m.end(0)), prose.find(".\n", m.end(0))) if i >= 0] or [len(prose)])
+            out.append((NUMBER.match(m.group(0)).group(0), re.split(r"[,;(]|\. ", prose[unit:])[0],
+                        prose[start:end]))
+    if len(rows) > 2:
+        head = [c.strip() for c in rows[0].strip().strip("|").split("|")]
+        cols = [i for i, h in enumerate(head) if FIGURE_COLUMN.search(h)]
+        for r in rows[2:]:
+            cells = [c.strip() for c in r.strip().strip("|").split("|")]
+            for i in cols:
+                if i < len(cells):
+                    cell = re.sub(r"`[^`]*`|\[[^]]*\]\([^)]*\)", "", cells[i])
+                    out += [(n, head[i] + " " + cell, "") for n in NUMBER.findall(cell)]
+    return out
+
+
+with open("README.md") as f:
+    text = re.sub(r"```.*?```", "", f.read(), flags=re.S)
+blocks = [b for b in re.split(r"\n\s*\n|\n(?=\s*- )", text) if b.strip()]
+disagree, checked = [], 0
+for i, b in enumerate(blocks):
+    if b.lstrip().startswith("#") or not figure_in(b):
+        continue
+    near = b + ("\n" + blocks[i - 1] if b.lstrip().startswith("|") and i else "")
+    files = sorted({f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", near) if os.path.exists(f)})
+    if not files:
+        continue
+    for fig, after, sentence in block_figures(b):
+        # the files the figure's sentence names, else the block's
+        own = sorted({f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", sentence) if os.path.exists(f)}) or files
+        checked += 1
+        if not agrees(fig, set().union(*(numbers_of(f) for f in own))):
+            disagree.append("%s (not in %s)" % (fig, ", ".join(own)))
+        contents = "".join(open(f).read() for f in own)
+        for q in QUALIFIERS:
+            if q in after and q not in contents:
+                disagree.append("%s %s (%s has no %s)" % (fig, q, ", ".join(own), q))
+check(checked and not disagree, "%d README figures agree with the bench files they name%s" % (
+    checked, "".join("\n          " + d for d in disagree) if disagree else ""))
+
+# make bench-quick's duration: one place states it
+DURATION = re.compile(r"(?:<|under|about|in|takes)\s*~?\d+(?:\.\d+)?\s*(?:s\b|seconds|min\b|minutes)")
+places = []
+for path in ["Makefile"] + pages + sorted(glob.glob("bench/*.py") + glob.glob("bench/*.sh")):
+    with open(path) as f:
+        lines_ = f.read().splitlines()
+    for n, line in enumerate(lines_):
+        if "bench-quick" in line and DURATION.search(line + " " + (lines_[n + 1] if n + 1 < len(lines_) else "")):
+            places.append("%s:%d" % (os.path.relpath(path, ROOT), n + 1))
+check(len(places) <= 1, "make bench-quick's duration is stated in at most one place%s" % (
+    ": " + ", ".join(places) if places else ""))
+
+# bench tables: a variant's row that equals the board's own measures nothing
+same = []
+for path in sorted(glob.glob("bench/*.md")):
+    rows = [[c.strip() for c in line.strip().strip("|").split("|")]
+            for line in open(path) if line.startswith("|")]
+    own = {(r[0],) + tuple(r[1:]) for r in rows}
+    for r in rows:
+        if re.match(r"^\S+ [A-Z_]+=\S+$", r[0]) and (r[0].split()[0],) + tuple(r[1:]) in own:
+            same.append("%s: %s" % (path, " | ".join(r[:4])))
+check(not same, "no bench table has a build variant's row equal to the board's own%s" % (
+    "".join("\n          " + s_ for s_ in same) if same else ""))
 
 with open("README.md") as f:
     lines = sum(1 for _ in f)
