@@ -225,12 +225,18 @@ disagree, checked = [], 0
 for i, b in enumerate(blocks):
     if b.lstrip().startswith("#") or not figure_in(b):
         continue
-    near = b + ("\n" + blocks[i - 1] if b.lstrip().startswith("|") and i else "")
+    near = b
+    if b.lstrip().startswith("|"):  # a table: the paragraph before it (and before its plot)
+        j = i - 1
+        while j > 0 and blocks[j].lstrip().startswith("!["):
+            near += "\n" + blocks[j]
+            j -= 1
+        near += "\n" + blocks[j] if j >= 0 else ""
     files = sorted({f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", near) if os.path.exists(f)})
     if not files:
         continue
     for fig, after, sentence in block_figures(b):
-        # the files the figure's sentence names, else the block's
+        # the files the figure's sentence names, else the block's (or the table's paragraph's)
         own = sorted({f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", sentence) if os.path.exists(f)}) or files
         checked += 1
         if not agrees(fig, set().union(*(numbers_of(f) for f in own))):
