@@ -9,8 +9,9 @@
 #    pico's SysTick) gets cycles / clock, "counted by"; the others get
 #    instructions x the CPI of a canned time table's row for that board,
 #    backend and sampling, "estimated", and the figure is that product;
-#    a board missing from the table gets a sentence saying there is no
-#    time, not an empty figure;
+#    on two cores the critical path's instructions, named so; a board
+#    missing from the table gets a sentence saying there is no time, not
+#    an empty figure;
 #  - the emulator that ran it named right (rp2040js where board.mk sets
 #    no QEMU, else QEMU) with its wall time, and no such sentence when the
 #    report has no wall time; and every runner prints the wall-time line
@@ -112,6 +113,15 @@ if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "x $cpi cycles
     ok "$b, one sample, no wall time: the one-sample CPI ($cpi), no emulator sentence"
 else
     bad "$b, one sample, no wall time: $(sentences "$out") | $out"
+fi
+# two cores: the time is the critical path's, and says so
+printf 'pixels 100\nrender_instructions 1000000\ninstructions_per_pixel 10000\ncores 2\ncritical_path_instructions 600000\n' >"$tmp/two.txt"
+out=$(summarize $b "$tmp/two.txt" "")
+want=$(awk -v c="$cpi" -v hz="$hz" 'BEGIN { printf "%.3g s", 600000 * c / hz }')
+if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "about $want at .* the critical path's 600,000 instructions (2 cores) x $cpi"; then
+    ok "two cores: the critical path's 600,000 instructions x $cpi ($want)"
+else
+    bad "two cores ($want): $(sentences "$out") | $out"
 fi
 # a board and backend the table does not have: a sentence, no figure
 head -1 "$table" >"$tmp/empty.csv"

@@ -68,8 +68,13 @@ time_lines() {
             esac
             cpi=${cpi%%|*}
             time=$(awk -v n="$instr" -v c="$cpi" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", n * c / hz }')
-            printf '  %-15s about %s at %s MHz, estimated: %s instructions a pixel x %.2f cycles an\n' \
-                "on the board" "$time" "$mhz" "$ipp" "$cpi"
+            if [ -n "$(value critical_path_instructions)" ]; then # the slowest core's share
+                what="the critical path's $(echo "$instr" | commas) instructions ($(value cores) cores)"
+            else
+                what="$ipp instructions a pixel"
+            fi
+            printf '  %-15s about %s at %s MHz, estimated: %s x %.2f cycles an\n' \
+                "on the board" "$time" "$mhz" "$what" "$cpi"
             printf '  %-15s instruction, the mix bench/cycles.py priced on the card scene %s\n' "" "$on"
             printf '  %-15s (%s; the core'"'"'s documented timings, no flash wait states).\n' "" "$table"
         else
