@@ -26,7 +26,8 @@
 #   make bench      run time against error over numeric configurations, the
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
-#                   and dithering against the pixel-area image (about 75 min)
+#                   and dithering against the pixel-area image, seconds a frame
+#                   against error on every board (its duration: docs/performance.md)
 #   make bench-quick  a subset of the first (its duration: docs/performance.md)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
