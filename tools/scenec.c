@@ -298,7 +298,9 @@ static int scenec_emit(FILE *out, FILE *hdr, const char *src, const scene_t *sc,
     if (text_mode) {
         emit_text(out, text, len);
     } else {
-        fprintf(out, "#include <stdint.h>\n\n#include \"geometry/scene.h\"\n\n");
+        fprintf(out, "#include <stdint.h>\n\n/* the core's internal headers: -I path/to/rt/src, or installed\n"
+                     " * -I PREFIX/include/rt/internal (rt_add_scene adds it) */\n"
+                     "#include \"geometry/scene.h\"\n\n");
 #if RT_BACKEND_FIXED
         fprintf(out, "#if !RT_BACKEND_FIXED || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
         fprintf(out, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",
