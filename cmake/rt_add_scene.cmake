@@ -15,6 +15,8 @@
 # Compiles the NFF scene into const tables (scene_data.c, in the section
 # .scene.tables) and adds them to <target>, which then renders
 #   extern const rt_scene_t rt_scene;
+# and whose files may #include "scene_data.h", what the scene uses and its
+# resolution (SCENE_WIDTH, SCENE_HEIGHT).
 # PRUNE ON (the default in the source tree) builds rt_core for this scene
 # alone: the RT_USE_* switches of the generated scene_data.h (primitive
 # kinds and shading features the scene does not use) are forced into
@@ -64,6 +66,10 @@ function(rt_add_scene target scene)
   target_include_directories(rt_scene_${target} PRIVATE "${RT_INTERNAL_INCLUDE}")  # geometry/scene.h
   add_dependencies(rt_scene_${target} rt_scene_${target}_tables)
   target_sources(${target} PRIVATE $<TARGET_OBJECTS:rt_scene_${target}>)
+  # the target's files may include scene_data.h (SCENE_WIDTH, SCENE_HEIGHT:
+  # the resolution opts.width = 0 renders, to size the band buffer)
+  target_include_directories(${target} PRIVATE "${out}")
+  add_dependencies(${target} rt_scene_${target}_tables)
 
   # A pruned core renders its own scene only.
   get_property(pruned GLOBAL PROPERTY RT_PRUNED_FOR)

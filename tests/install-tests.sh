@@ -102,7 +102,9 @@ END
 scene_consumer() {
     p=$1 what=$2 src=$out/scene-consumer-src
     mkdir -p "$src"
-    cp tests/consumer/main.c tests/consumer/out_host.c scenes/spd/balls-1.nff "$src/"
+    cp tests/consumer/main.c tests/consumer/out_host.c "$src/"
+    # main.c renders the scene's resolution: RT's reference size
+    sed 's/^resolution .*/resolution 32 32/' $SCENE >"$src/balls-1.nff"
     cat >"$src/CMakeLists.txt" <<'END'
 cmake_minimum_required(VERSION 3.16)
 project(installed_scene_consumer C)
@@ -133,8 +135,8 @@ END
     fi
     c="$out/scene-cc-$what"
     mkdir -p "$c"
-    if "$p/bin/rt-scenec" "$src/balls-1.nff" -o "$c/scene_data.c" &&
-        log "scene-cc-$what" ${CC:-cc} -std=c11 -Wall -Wextra -Werror -I"$p/include/rt" -I"$p/include/rt/internal" \
+    if "$p/bin/rt-scenec" "$src/balls-1.nff" -o "$c/scene_data.c" --header "$c/scene_data.h" &&
+        log "scene-cc-$what" ${CC:-cc} -std=c11 -Wall -Wextra -Wundef -Werror -I"$p/include/rt" -I"$p/include/rt/internal" -I"$c" \
             -o "$c/consumer" "$c/scene_data.c" "$src/main.c" "$src/out_host.c" "$p/lib/librt_core.a" &&
         "$c/consumer" >"$c/out.ppm" && "$rt" compare "$c/out.ppm" "$out/ref.ppm" --max-error 0 >/dev/null; then
         ok "$what: the installed rt-scenec's tables compile with cc against the installed headers alone and render as rt --fixed"

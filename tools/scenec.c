@@ -276,7 +276,8 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
         emit_upper(f, uses[i].name);
         fprintf(f, " %d\n", uses[i].used);
     }
-    fprintf(f, "\n#if SCENE_PRUNE\n");
+    /* defined(): a user's file may include this header without SCENE_PRUNE, under -Wundef */
+    fprintf(f, "\n#if defined(SCENE_PRUNE) && SCENE_PRUNE\n");
     for (size_t i = 0; i < n_uses; i++) {
         fprintf(f, "#define RT_USE_");
         emit_upper(f, uses[i].name);
