@@ -75,7 +75,7 @@ if cmake -S . -B "$OUT/cmake" -DCMAKE_INSTALL_PREFIX="$inst" -DRT_BUILD_TOOLS=OF
     mkdir -p "$OUT/no-scenec" && : >"$OUT/no-scenec/main.c"
     printf '%s\n' 'cmake_minimum_required(VERSION 3.16)' 'project(no_scenec C)' 'find_package(rt CONFIG REQUIRED)' \
         'add_executable(app main.c)' 'rt_add_scene(app scene.nff)' >"$OUT/no-scenec/CMakeLists.txt"
-    if cmake -S "$OUT/no-scenec" -B "$OUT/no-scenec/b" -DCMAKE_PREFIX_PATH="$inst" >"$OUT/no-scenec.log" 2>&1; then
+    if cmake -S "$OUT/no-scenec" -B "$OUT/no-scenec/b" -DCMAKE_PREFIX_PATH="$(cd "$inst" && pwd)" >"$OUT/no-scenec.log" 2>&1; then
         bad "rt_add_scene from a package without rt-scenec configured"
     elif tr -s ' \n' '  ' <"$OUT/no-scenec.log" | grep -q "rt-scenec is not there (rt was installed without its tools"; then
         ok "rt_add_scene from a package without its tools: a configure error naming the missing rt-scenec"
