@@ -194,7 +194,7 @@ if [ $status -eq 2 ] && [ ! -e "$OUT/out.png" ] && grep -q "no frame in the stre
        "$OUT/midframe.err" && [ -s "$OUT/midframe.report" ] &&
    [ "$(tail -1 "$OUT/midframe.report")" = "$(tail -1 "$OUT/rx.report")" ] &&
    ! printf '' | "$RT" receive - -o "$OUT/out.png" 2>&1 | grep -q hint; then
-    ok "receive: a stream cut mid-frame: $(wc -l <"$OUT/midframe.report") report line(s), then $(sed -n 's/.*: hint: //p' "$OUT/midframe.err" | cut -c1-60)... (no hint for an empty stream)"
+    ok "receive: a stream cut mid-frame: $(wc -l <"$OUT/midframe.report") report line(s), then the hint: $(sed -n 's/.*: hint: //p' "$OUT/midframe.err" | cut -c1-60)... (no hint for an empty stream)"
 else
     bad "receive from mid-frame: status $status, $(cat "$OUT/midframe.err")"
 fi
