@@ -203,7 +203,9 @@ build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry
 #   $(bindir)/rt-scenec       the scene compiler for the installed library
 #   $(libdir)/librt_core.a    the core, fixed backend, rt_config.h's defaults
 #   $(includedir)/rt/         the public headers (include/)
-#   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core
+#   $(includedir)/rt/internal/  the core's internal headers (src/'s *.h),
+#                             which the tables rt-scenec writes include
+#   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core, rt_add_scene
 # (tests/install-tests.sh checks that both lay out the same files).
 PREFIX     ?= /usr/local
 bindir     ?= $(PREFIX)/bin
@@ -231,21 +233,30 @@ build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE
 	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 
+INTERNAL_H    = $(wildcard src/*.h src/*/*.h)
+INTERNAL_DIRS = $(sort $(patsubst src/%/,%,$(filter-out src/,$(dir $(INTERNAL_H)))))
+
 install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
-	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(libdir)" "$(includedir)" \
+	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(bindir)" "$(libdir)" "$(includedir)" \
 	    $$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' ')
-	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt" \
+	    $(foreach d,$(INTERNAL_DIRS),"$(DESTDIR)$(includedir)/rt/internal/$(d)")
 	$(INSTALL) -m 755 build/host/rt build/lib/rt-scenec "$(DESTDIR)$(bindir)"
 	$(INSTALL) -m 644 build/lib/librt_core.a "$(DESTDIR)$(libdir)"
 	$(INSTALL) -m 644 $(wildcard include/*.h) "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -m 644 $(wildcard src/*.h) "$(DESTDIR)$(includedir)/rt/internal"
+	for d in $(INTERNAL_DIRS); do $(INSTALL) -m 644 src/$$d/*.h "$(DESTDIR)$(includedir)/rt/internal/$$d" || exit 1; done
 	$(INSTALL) -m 644 build/lib/cmake-rt/*.cmake "$(DESTDIR)$(libdir)/cmake/rt"
 
 # removes what install put there (the same variables)
 uninstall:
 	rm -f "$(DESTDIR)$(bindir)/rt" "$(DESTDIR)$(bindir)/rt-scenec" "$(DESTDIR)$(libdir)/librt_core.a" \
 	    $(patsubst include/%,"$(DESTDIR)$(includedir)/rt/%",$(wildcard include/*.h)) \
-	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake
-	-rmdir "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
+	    $(patsubst src/%,"$(DESTDIR)$(includedir)/rt/internal/%",$(INTERNAL_H)) \
+	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake \
+	    "$(DESTDIR)$(libdir)/cmake/rt/rt_add_scene.cmake"
+	-rmdir $(foreach d,$(INTERNAL_DIRS),"$(DESTDIR)$(includedir)/rt/internal/$(d)") \
+	    "$(DESTDIR)$(includedir)/rt/internal" "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
 
 NAME := $(basename $(notdir $(SCENE)))
 

@@ -184,6 +184,20 @@ expect_cli "receive: one bit flipped in a band" 2 "band checksum mismatch" -- "$
 python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[4]=7; open(sys.argv[2],'wb').write(d)" "$ST" "$OUT/hdr.stream"
 expect_cli "receive: bad frame header" 2 "bad frame header (format 7, 8x8)" -- "$RT" receive "$OUT/hdr.stream" -o "$OUT/out.png"
 expect_cli "receive: no frame" 2 "no frame in the stream" -- sh -c "printf 'just boot text' | '$RT' receive - -o '$OUT/out.png'"
+# a capture that starts mid-frame (receive started after the reset): the
+# report lines are still printed, then the error and the hint to start first
+tail -c +30 "$ST" >"$OUT/midframe.stream"
+rm -f "$OUT/out.png"
+"$RT" receive "$OUT/midframe.stream" -o "$OUT/out.png" >"$OUT/midframe.report" 2>"$OUT/midframe.err"; status=$?
+if [ $status -eq 2 ] && [ ! -e "$OUT/out.png" ] && grep -q "no frame in the stream" "$OUT/midframe.err" &&
+   grep -q "hint: .* but no frame header: start rt receive (or the capture) before resetting or powering the board" \
+       "$OUT/midframe.err" && [ -s "$OUT/midframe.report" ] &&
+   [ "$(tail -1 "$OUT/midframe.report")" = "$(tail -1 "$OUT/rx.report")" ] &&
+   ! printf '' | "$RT" receive - -o "$OUT/out.png" 2>&1 | grep -q hint; then
+    ok "receive: a stream cut mid-frame: $(wc -l <"$OUT/midframe.report") report line(s), then the hint: $(sed -n 's/.*: hint: //p' "$OUT/midframe.err" | cut -c1-60)... (no hint for an empty stream)"
+else
+    bad "receive from mid-frame: status $status, $(cat "$OUT/midframe.err")"
+fi
 expect_cli "receive: output checked first" 1 "out.gif: unknown image format" -- "$RT" receive "$ST" -o "$OUT/out.gif"
 # the writer keeps the pipe open 6 s after the stream; rt must return at
 # the frame end plus the report's idle wait (0.5 s), image and report in
