@@ -84,9 +84,10 @@ static uint64_t pll_hz(void)
     return mdiv && source_hz(c) * n % (mdiv * p) == 0 ? source_hz(c) * n / (mdiv * p) : 0;
 }
 
-/* The fastest PLL input of any set-up within the limits that gives
- * exactly `sysclk_hz` and USB's 48 MHz from `in_hz`: every M, N, P, Q */
-static uint64_t best_input_hz(uint64_t in_hz, uint64_t sysclk_hz)
+/* The fastest PLL input, in mHz (25 MHz / 13 is not whole), of any set-up
+ * within the limits that gives exactly `sysclk_hz` and USB's 48 MHz from
+ * `in_hz`: every M, N, P and Q tried */
+static uint64_t best_input_millihz(uint64_t in_hz, uint64_t sysclk_hz)
 {
     uint64_t best = 0;
     for (uint32_t mdiv = 2; mdiv <= 63; mdiv++)
@@ -97,7 +98,7 @@ static uint64_t best_input_hz(uint64_t in_hz, uint64_t sysclk_hz)
                     const char *why;
                     if (pll_in_spec(in_hz, mdiv, n, q, &vco, &why) && in_hz * n == sysclk_hz * mdiv * p &&
                         in_hz * 1000u / mdiv > best)
-                        best = in_hz * 1000u / mdiv; /* (in mHz: 25 MHz / 13 is not whole) */
+                        best = in_hz * 1000u / mdiv;
                 }
     return best;
 }
@@ -190,12 +191,12 @@ static void check_input(const char *source)
 {
     char what[200];
     uint32_t c = m.r[PLLCFGR], mdiv = c & 63u;
-    uint64_t in_mhz1000 = mdiv ? source_hz(c) * 1000u / mdiv : 0,
-             best = best_input_hz(source_hz(c), STM32_SYSCLK_MHZ * 1000000ull);
+    uint64_t in_millihz = mdiv ? source_hz(c) * 1000u / mdiv : 0,
+             best = best_input_millihz(source_hz(c), STM32_SYSCLK_MHZ * 1000000ull);
     snprintf(what, sizeof what, "PLL from %s: M %u, N %u, P %u, Q %u: %.3f MHz in (the fastest exact: %.3f MHz)",
              source, (unsigned)mdiv, (unsigned)((c >> 6) & 511u), 2u * (((c >> 16) & 3u) + 1u),
-             (unsigned)((c >> 24) & 15u), in_mhz1000 / 1e9, best / 1e9);
-    check(best != 0 && in_mhz1000 == best && !m.fault[0], what);
+             (unsigned)((c >> 24) & 15u), in_millihz / 1e9, best / 1e9);
+    check(best != 0 && in_millihz == best && !m.fault[0], what);
 }
 
 int main(void)

@@ -95,8 +95,8 @@ static int wait_for(const volatile uint32_t *reg, uint32_t mask, uint32_t want)
     return 0;
 }
 
-/* A revision A F405/F407, where ST's own set-up leaves the flash prefetch
- * off (its errata). RM0090 gives it REV_ID 0x1000 with DEV_ID 0x413, but
+/* A revision A F405/F407, on which ST's own set-up leaves the flash
+ * prefetch off. RM0090 gives it REV_ID 0x1000 with DEV_ID 0x413, but
  * the revision A parts read DEV_ID 0x411, the F2's (errata: "MCU device
  * ID is incorrect"); as this image runs only on a Cortex-M4F, 0x411 here
  * is one of them. Anything else, the 0 QEMU reads among them, is not. */
