@@ -7,7 +7,9 @@
 #    the benchmark scenes of scenes/bench likewise;
 #  - plane, texture and sky code is pruned from firmware that lacks them;
 #  - footprint budgets of the default scene (showpiece, 128x128, depth 5);
-#  - a scene over a capacity fails to build with a clear message.
+#  - a scene over a capacity fails to build with a clear message;
+#  - on the host, every byte the stream sink writes counts as output, not
+#    as the render's time (tests/sink_stream_test.c).
 RT=${1:-build/host/rt}
 OUT=build/test-board
 mkdir -p "$OUT"
@@ -187,6 +189,16 @@ elif grep -q "too-many-spheres.nff:1034: too many spheres: capacity RT_MAX_SPHER
     ok "over capacity: $(grep 'too many' "$OUT/big.build")"
 else
     bad "over-capacity build failed without the expected message: $(tail -2 "$OUT/big.build")"
+fi
+# The stream sink on the host against a console whose bytes take time (a
+# real UART's; QEMU's is always ready): each call's output is all counted
+# as output, the end record's included (tests/sink_stream_test.c).
+if cc -std=c11 -Wall -Wextra -Werror -DBOARD_CYCLES=1 -Iinclude -Iplatform/firmware tests/sink_stream_test.c \
+       platform/firmware/sink_stream.c platform/firmware/sink_io.c platform/firmware/report.c -o "$OUT/sink-stream-test" \
+       2>"$OUT/sink-stream.build" && "$OUT/sink-stream-test" >"$OUT/sink-stream.txt"; then
+    ok "stream sink: $(tail -1 "$OUT/sink-stream.txt" | cut -d' ' -f2-), every byte out counted as output"
+else
+    bad "stream sink: $(grep FAIL "$OUT/sink-stream.txt" | head -2) $(tail -2 "$OUT/sink-stream.build")"
 fi
 echo "board-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]
