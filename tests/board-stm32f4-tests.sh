@@ -32,12 +32,12 @@ bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 vars="BOARD=stm32f4 SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5"
 
 echo "stm32f4: the image for the chip, and its run under QEMU"
-if ! make -s -j2 firmware $vars >"$OUT/build.log" 2>&1; then
+if ! make -s -j2 firmware AA=0 $vars >"$OUT/build.log" 2>&1; then
     bad "firmware build failed: $(tail -3 "$OUT/build.log")"
     echo "board-stm32f4: $pass passed, $fail failed"
     exit 1
 fi
-eval "$(make -s board-info $vars)"
+eval "$(make -s board-info AA=0 $vars)"
 bin="${elf%.elf}.bin" hex="${elf%.elf}.hex"
 # the vector table: initial SP and reset handler, little-endian words
 set -- $(od -An -tx4 -N8 "$bin")
@@ -57,7 +57,7 @@ fi
 n=$(${cross}objdump -d "$elf" | grep -c 'bkpt')
 [ "$n" = 0 ] && ok "no bkpt in the image: no semihosting" || bad "$n bkpt instructions in the image"
 
-if make -s board-run $vars RUN_OUT="$OUT/board.png" RUN_RT="$RT" >"$OUT/report.txt" 2>"$OUT/run.err"; then
+if make -s board-run AA=0 $vars RUN_OUT="$OUT/board.png" RUN_RT="$RT" >"$OUT/report.txt" 2>"$OUT/run.err"; then
     ok "run ends on its exit_status line ($(grep -c progress_rows "$OUT/report.txt") progress lines)"
 else
     bad "run failed: $(tail -3 "$OUT/run.err")"
@@ -125,12 +125,12 @@ done
 # the Nucleo-64 variant and a crystal that does not divide
 # (QEMU's second serial port is USART2: nothing would arrive from USART1)
 nvars="$vars STM32=nucleo64"
-if make -s -j2 firmware $nvars >"$OUT/nucleo.build" 2>&1; then
-    eval "$(make -s board-info $nvars)"
+if make -s -j2 firmware AA=0 $nvars >"$OUT/nucleo.build" 2>&1; then
+    eval "$(make -s board-info AA=0 $nvars)"
     mem=$(awk '/^Memory Configuration/ { m = 1 } m && ($1 == "FLASH" || $1 == "RAM") { print $1, $3 } /^Linker script/ { m = 0 }' \
               "${elf%.elf}.map" | while read -r name len; do printf '%s%d ' $name $((len)); done)
     "$RT" scenes/spd/balls-2.nff -o "$OUT/host.png" --fixed --size 32x32 --depth 5 --threads 1 --quiet
-    if make -s board-run $nvars RUN_OUT="$OUT/nucleo.png" RUN_RT="$RT" >"$OUT/nucleo.report" 2>&1 &&
+    if make -s board-run AA=0 $nvars RUN_OUT="$OUT/nucleo.png" RUN_RT="$RT" >"$OUT/nucleo.report" 2>&1 &&
        cmp=$("$RT" compare "$OUT/nucleo.png" "$OUT/host.png" --max-error 0) && [ "$mem" = "FLASH524288 RAM98304 " ]; then
         ok "STM32=nucleo64: over USART2, the host's image byte for byte; $mem"
     else
@@ -139,7 +139,7 @@ if make -s -j2 firmware $nvars >"$OUT/nucleo.build" 2>&1; then
 else
     bad "STM32=nucleo64 does not build: $(tail -3 "$OUT/nucleo.build")"
 fi
-if make -s firmware $vars HSE_MHZ=3 >"$OUT/hse.build" 2>&1; then
+if make -s firmware AA=0 $vars HSE_MHZ=3 >"$OUT/hse.build" 2>&1; then
     bad "HSE_MHZ=3 built"
 else
     ok "HSE_MHZ=3 refused: $(grep -o 'HSE_MHZ=3.*' "$OUT/hse.build" | head -1)"
