@@ -60,9 +60,13 @@
 # BOARD_FLASH (the command of make flash) with BOARD_FLASH_PACKAGE (the
 # Debian package that has its tool),
 # BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
-# one word each, commas for spaces).
+# one word each, commas for spaces), BOARD_SIZE (the frame unless SIZE is
+# given, instead of the scene's resolution), BOARD_PANEL (WxH of the panel
+# the frame goes to: a larger frame is a build error) with
+# BOARD_PANEL_NAME (how that error names it), BOARD_BAND_LINES (the
+# default of BAND_LINES, 4).
 #
-# Each (scene, size, depth, format) gets its own folder: the scene
+# Each build (scene and FW_CHOICES, below) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
 # what the scene uses, and the firmware is built for exactly that.
 
