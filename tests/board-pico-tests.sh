@@ -307,7 +307,7 @@ fi
 # The scene's resolution on the panel, no SIZE given: one sphere (cheap
 # under rp2040js) at `resolution 320 240` fills the Display Pack 2.0
 sphere() { # FILE W H
-    printf 'v\nfrom 0 -6 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution %s %s\nl -3 -6 5\nf 0.9 0.3 0.2 0.8 0.2 10 0 1\ns 0 0 0 1\n' "$2" "$3" >"$1"
+    printf 'v\nfrom 0 -6 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution %s %s\nl -3 -6 5\nf 0.9 0.3 0.2 1 0 1 0 1\ns 0 0 0 1\n' "$2" "$3" >"$1"
 }
 dims() { python3 -c 'import struct, sys; print("%dx%d" % struct.unpack(">II", open(sys.argv[1], "rb").read()[16:24]))' "$1"; }
 sph="$OUT/sphere-320x240.nff"
