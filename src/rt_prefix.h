@@ -45,6 +45,7 @@
 #define lex_direction            rt_lex_direction
 #define lex_decimal              rt_lex_decimal
 #define lex_fail                 rt_lex_fail
+#define lex_fail_missing         rt_lex_fail_missing
 #define lex_fail_tok             rt_lex_fail_tok
 #define lex_is                   rt_lex_is
 #define lex_next                 rt_lex_next

@@ -26,7 +26,7 @@ static bool view_key(reader_t *r, const char *key)
     if (!lex_next(&r->lx))
         return false;
     if (!lex_is(&r->lx, key))
-        return lex_fail_tok(&r->lx, "v: expected ", key);
+        return lex_fail_missing(&r->lx, "v: expected ", key);
     return true;
 }
 

@@ -29,6 +29,7 @@ typedef struct {
     const char *p, *end;
     uint32_t line;      /* line of the current position */
     uint32_t tok_line;  /* line of the last token read */
+    uint32_t prev_line; /* line of the token before it */
     const char *tok;    /* the last token, NULL at the end of input */
     size_t tok_len;
     rt_error_t *err;
@@ -38,8 +39,13 @@ void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err);
 
 /* Errors: each sets lx->err and returns false. */
 bool lex_fail(lexer_t *lx, uint32_t line, const char *msg);
-/* "<what><msg>, found '<token>'" with the token shortened. */
+/* "<what><msg>, found '<token>'" with the token shortened, on the token's line. */
 bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg);
+/* The same for a token an entity needed but did not get (a number, a
+ * field's name): on the line where the entity stopped short, the previous
+ * token's, naming the found token's line when it is a later one (most
+ * often the next entity's keyword: `s 0 1 1` then `f ...`). */
+bool lex_fail_missing(lexer_t *lx, const char *what, const char *msg);
 bool lex_out_of_range(lexer_t *lx, const char *what);
 bool lex_over_capacity(lexer_t *lx, const char *what, const char *macro, int32_t cap);
 
