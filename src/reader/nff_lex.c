@@ -10,6 +10,8 @@
  */
 #include "nff_lex.h"
 
+#include "numeric/fx.h"
+
 void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err)
 {
     *lx = (lexer_t){ 0 };
@@ -266,6 +268,11 @@ static int32_t decimal_log10_floor(const decimal_t *d)
 
 bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
 {
+    return lex_direction_grid(lx, what, v, zero, 0);
+}
+
+bool lex_direction_grid(lexer_t *lx, const char *what, vec3_t *v, bool *zero, int32_t grid[3])
+{
     decimal_t d[3];
     int32_t top = INT32_MIN;
     for (int i = 0; i < 3; i++) {
@@ -275,6 +282,8 @@ bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
             top = decimal_log10_floor(&d[i]);
     }
     *zero = top == INT32_MIN;
+    for (int i = 0; grid && i < 3; i++)
+        grid[i] = 0;
     if (*zero) {
         *v = v3(0, 0, 0);
         return true;
@@ -286,6 +295,8 @@ bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
         d[i].exp10 -= top;
         if (!lex_scalar(lx, what, &d[i], &c[i]))
             return false;
+        if (grid) /* below 10: in range */
+            (void)fx_from_decimal(d[i].neg, d[i].mant, d[i].exp10, FX_FRAC_BITS, INT32_MAX, &grid[i]);
     }
     *v = v3(c[0], c[1], c[2]);
     return true;

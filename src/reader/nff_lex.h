@@ -67,6 +67,9 @@ bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t
  * 0, else the vector times a power of ten that brings its largest
  * component to 1..10 in size (not unit). */
 bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero);
+/* The same, and the direction as the fixed build holds it: on the
+ * position grid (2^-FX_FRAC_BITS), the same integers in every build. */
+bool lex_direction_grid(lexer_t *lx, const char *what, vec3_t *v, bool *zero, int32_t grid[3]);
 /* An exponent (Phong's, the sky's): 0 to RT_SHINE_MAX, or with `positive`
  * 2^RT_SHINE_MIN_LOG2 (the fixed build's least positive exponent) to
  * RT_SHINE_MAX; else the error msg. */
