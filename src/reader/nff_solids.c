@@ -398,12 +398,15 @@ static bool named_quadric(reader_t *r, const char *what, named_quadric_t kind)
         return false;
     if (kind == HYPERBOLOID || kind == HYPERBOLOID2) {
         /* the unit shape's clip box reaches h / rz along z and sqrt((h /
-         * rz)^2 +- 1) across it; decided on the grid (exact: sizes below
-         * 2^24 steps): two sheets need h > rz, and neither reaches past 64 */
+         * rz)^2 +- 1) across it; decided on the grid, exactly (sizes are
+         * below 2^31 steps, so h^2 < 2^62; from rz = 2^25 on, 4095 rz^2
+         * passes that, and h^2 stays below it): two sheets need h > rz,
+         * and neither reaches past 64 */
         int64_t rz = g[2], hz = g[3];
         if (kind == HYPERBOLOID2 && hz <= rz)
             return lex_fail(&r->lx, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
-        if (kind == HYPERBOLOID ? hz * hz > 4095 * rz * rz : hz > 64 * rz)
+        bool too_long = kind == HYPERBOLOID ? rz < ((int64_t)1 << 25) && hz * hz > 4095 * rz * rz : hz > 64 * rz;
+        if (too_long)
             return lex_fail(&r->lx, line, QUADRIC_TOO_LONG);
     }
     real_t q[10] = { R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, 0, 0 };
