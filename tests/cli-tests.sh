@@ -58,6 +58,7 @@ S=scenes/spd/tetra-1.nff
 expect_cli "unknown flag" 2 "unknown option '--bogus'" -- "$RT" $S -o "$OUT/out.png" --bogus
 expect_cli "missing value" 2 "--depth needs a number" -- "$RT" $S -o "$OUT/out.png" --depth
 expect_cli "bad size" 2 "--size: expected WxH" -- "$RT" $S -o "$OUT/out.png" --size 12
+expect_cli "size over the maximum" 2 "--size: expected WxH from 1x1 to 4096x4096 (RT_MAX_WIDTH x RT_MAX_HEIGHT), got '10000x10000'" -- "$RT" $S -o "$OUT/out.png" --size 10000x10000
 expect_cli "depth over max" 2 "--depth: expected 1..8 (RT_MAX_DEPTH: a deeper tree needs a build with -DRT_MAX_DEPTH=N)" -- "$RT" $S -o "$OUT/out.png" --depth 99
 expect_cli "no output" 2 "no output file given" -- "$RT" $S
 expect_cli "scene is a directory" 2 "tests/bad: cannot read" -- "$RT" tests/bad -o "$OUT/out.png"
