@@ -1,7 +1,9 @@
 #!/bin/sh
 # Bad input and CLI errors: each tests/bad/NAME.nff must fail with exit
-# status 2 and exactly "tests/bad/NAME.nff:<NAME.expect>" on stderr, and
-# leave no output image behind. Then the options of rt, rt compare,
+# status 2 and exactly "tests/bad/NAME.nff:LINE: <NAME.expect>" on stderr,
+# and leave no output image behind. LINE is the one line of the file
+# marked by hand with the comment "# <- error": where the entity at fault
+# is (for a missing number, where the entity stops short). Then the options of rt, rt compare,
 # rt receive and rt-scenec, and rt receive on good and damaged streams.
 RT=${1:-build/asan/rt}
 OUT=${2:-build/test-cli}
@@ -11,9 +13,18 @@ ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 
 echo "bad-input tests: exact 'file:line: message', exit status 2, no image written, the same in every backend"
+# an empty file: no line to mark, the error names line 1
+: >"$OUT/empty.nff"
+got=$("$RT" "$OUT/empty.nff" -o "$OUT/out.png" 2>&1 >/dev/null)
+[ $? -eq 2 ] && [ "$got" = "$OUT/empty.nff:1: no 'v' viewpoint in the file" ] && ok "empty file: $got" ||
+    bad "empty file: got '$got'"
 for f in tests/bad/*.nff; do
     name=$(basename "$f" .nff)
-    want="$f:$(cat "tests/bad/$name.expect")"
+    line=$(grep -an -- '# <- error' "$f" | cut -d: -f1)
+    case "$line" in
+    '' | *[!0-9]*) bad "$name: mark exactly one line with '# <- error'"; continue ;;
+    esac
+    want="$f:$line: $(cat "tests/bad/$name.expect")"
     for backend in --fixed --float --double; do
         rm -f "$OUT/out.png"
         got=$("$RT" "$f" -o "$OUT/out.png" $backend 2>&1 >/dev/null)
@@ -47,6 +58,7 @@ S=scenes/spd/tetra-1.nff
 expect_cli "unknown flag" 2 "unknown option '--bogus'" -- "$RT" $S -o "$OUT/out.png" --bogus
 expect_cli "missing value" 2 "--depth needs a number" -- "$RT" $S -o "$OUT/out.png" --depth
 expect_cli "bad size" 2 "--size: expected WxH" -- "$RT" $S -o "$OUT/out.png" --size 12
+expect_cli "size over the maximum" 2 "--size: expected WxH from 1x1 to 4096x4096 (RT_MAX_WIDTH x RT_MAX_HEIGHT), got '10000x10000'" -- "$RT" $S -o "$OUT/out.png" --size 10000x10000
 expect_cli "depth over max" 2 "--depth: expected 1..8 (RT_MAX_DEPTH: a deeper tree needs a build with -DRT_MAX_DEPTH=N)" -- "$RT" $S -o "$OUT/out.png" --depth 99
 expect_cli "no output" 2 "no output file given" -- "$RT" $S
 expect_cli "scene is a directory" 2 "tests/bad: cannot read" -- "$RT" tests/bad -o "$OUT/out.png"
