@@ -4,8 +4,9 @@
 #                   full commands
 #   make run        install the host build's and BOARD's missing packages,
 #                   render SCENE on an emulated board (BOARD=mps2-an385 by
-#                   default, BACKEND=fixed; platform/firmware/firmware.mk),
-#                   write out/<scene>-<board>-<backend>.png, print instructions per pixel,
+#                   default, BACKEND=fixed; platform/firmware/firmware.mk)
+#                   at the scene's resolution unless SIZE=WxH is given,
+#                   write out/<scene>-<board>-<backend>[-choices].png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
 #                   error against the host's double build
 #   make host-run   the same render on the host, fixed and double
@@ -36,14 +37,22 @@
 # exports only its rt_backend_t, so `rt` carries every build.
 
 SCENE ?= scenes/showpiece.nff
-SIZE  ?= 128x128
+# SIZE (WxH): the scene's resolution unless given (firmware.mk; rt's own
+# default for make host-run)
 DEPTH ?= 5
 FORMAT ?= rgb888
 # make profile: QEMU logs every block executed, so it renders 64x64 unless
 # SIZE is given (on every board, the OLED's included)
 ifneq ($(filter profile,$(MAKECMDGOALS)),)
-ifeq ($(origin SIZE),file)
+ifeq ($(origin SIZE),undefined)
 override SIZE := 64x64
+endif
+endif
+# the goals that read SCENE: a scene that is not there stops them at once
+SCENE_GOALS = run host-run image uf2 flash firmware size board-run profile board-info print-fwdir
+ifneq ($(filter $(SCENE_GOALS),$(or $(MAKECMDGOALS),all)),)
+ifeq ($(wildcard $(SCENE)),)
+$(error SCENE=$(SCENE): no such file (the project's scenes are scenes/*.nff, scenes/spd/*.nff and scenes/bench/*.nff))
 endif
 endif
 
@@ -87,7 +96,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install uninstall run host-run test clean deps deps-board deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -204,7 +213,9 @@ build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry
 #   $(bindir)/rt-scenec       the scene compiler for the installed library
 #   $(libdir)/librt_core.a    the core, fixed backend, rt_config.h's defaults
 #   $(includedir)/rt/         the public headers (include/)
-#   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core
+#   $(includedir)/rt/internal/  the core's internal headers (src/'s *.h),
+#                             which the tables rt-scenec writes include
+#   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core, rt_add_scene
 # (tests/install-tests.sh checks that both lay out the same files).
 PREFIX     ?= /usr/local
 bindir     ?= $(PREFIX)/bin
@@ -232,21 +243,30 @@ build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE
 	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
 	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
 
+INTERNAL_H    = $(wildcard src/*.h src/*/*.h)
+INTERNAL_DIRS = $(sort $(patsubst src/%/,%,$(filter-out src/,$(dir $(INTERNAL_H)))))
+
 install: build/host/rt build/lib/rt-scenec build/lib/librt_core.a
-	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(libdir)" "$(includedir)" \
+	sh cmake/make-package.sh build/lib/cmake-rt "$(PREFIX)" "$(bindir)" "$(libdir)" "$(includedir)" \
 	    $$(echo __SIZEOF_POINTER__ | $(CC) -E -P - | tr -d ' ')
-	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -d "$(DESTDIR)$(bindir)" "$(DESTDIR)$(libdir)/cmake/rt" "$(DESTDIR)$(includedir)/rt" \
+	    $(foreach d,$(INTERNAL_DIRS),"$(DESTDIR)$(includedir)/rt/internal/$(d)")
 	$(INSTALL) -m 755 build/host/rt build/lib/rt-scenec "$(DESTDIR)$(bindir)"
 	$(INSTALL) -m 644 build/lib/librt_core.a "$(DESTDIR)$(libdir)"
 	$(INSTALL) -m 644 $(wildcard include/*.h) "$(DESTDIR)$(includedir)/rt"
+	$(INSTALL) -m 644 $(wildcard src/*.h) "$(DESTDIR)$(includedir)/rt/internal"
+	for d in $(INTERNAL_DIRS); do $(INSTALL) -m 644 src/$$d/*.h "$(DESTDIR)$(includedir)/rt/internal/$$d" || exit 1; done
 	$(INSTALL) -m 644 build/lib/cmake-rt/*.cmake "$(DESTDIR)$(libdir)/cmake/rt"
 
 # removes what install put there (the same variables)
 uninstall:
 	rm -f "$(DESTDIR)$(bindir)/rt" "$(DESTDIR)$(bindir)/rt-scenec" "$(DESTDIR)$(libdir)/librt_core.a" \
 	    $(patsubst include/%,"$(DESTDIR)$(includedir)/rt/%",$(wildcard include/*.h)) \
-	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake
-	-rmdir "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
+	    $(patsubst src/%,"$(DESTDIR)$(includedir)/rt/internal/%",$(INTERNAL_H)) \
+	    "$(DESTDIR)$(libdir)/cmake/rt/"rtConfig*.cmake "$(DESTDIR)$(libdir)/cmake/rt/"rtTargets*.cmake \
+	    "$(DESTDIR)$(libdir)/cmake/rt/rt_add_scene.cmake"
+	-rmdir $(foreach d,$(INTERNAL_DIRS),"$(DESTDIR)$(includedir)/rt/internal/$(d)") \
+	    "$(DESTDIR)$(includedir)/rt/internal" "$(DESTDIR)$(includedir)/rt" "$(DESTDIR)$(libdir)/cmake/rt" 2>/dev/null
 
 NAME := $(basename $(notdir $(SCENE)))
 
@@ -262,11 +282,13 @@ include platform/firmware/firmware.mk
 
 # deps: everything the tests and benchmarks use (make test, bench,
 # stress, fuzz); deps-board: only what rendering on BOARD needs (make run,
-# image, profile): the host build and the board's BOARD_PACKAGES (python3
-# too for make profile); deps-host: the host build (make host-run). Each
-# names the command it installs for in its messages
+# profile): the host build and the board's BOARD_PACKAGES (python3
+# too for make profile); deps-image: what building BOARD's image needs
+# (make image, uf2): the same but its emulator (no QEMU, no npm ci of the
+# Pico's rp2040js; Node.js stays, for uf2.mjs); deps-host: the host build
+# (make host-run). Each names the command it installs for in its messages
 # (platform/ensure-deps.sh).
-DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board deps-host,$(MAKECMDGOALS))),$(1))
+DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board deps-image deps-host,$(MAKECMDGOALS))),$(1))
 deps:
 	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh platform/ensure-deps.sh test
 deps-host:
@@ -274,6 +296,9 @@ deps-host:
 deps-board:
 	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_PACKAGES) \
 	    $(if $(filter profile,$(MAKECMDGOALS)),python3)
+deps-image:
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,image) (BOARD=$(BOARD))' ENSURE_DEPS_EMULATOR=0 sh platform/ensure-deps.sh run \
+	    $(filter-out qemu-system-%,$(BOARD_PACKAGES))
 
 # Run time against error over the numeric configurations (bench/results.md,
 # results.csv, plot.svg), then the BVH and pruning figures.
@@ -290,7 +315,7 @@ bench: deps
 	@sh bench/keep.sh bench/lib-size.md "The core's footprint as a library" sh bench/lib-size.sh
 	@echo
 	@sh bench/keep.sh bench/profile.md "Where balls-2's instructions go on mps2-an385 (fixed, 64x64)" \
-	    $(MAKE) -s profile BOARD=mps2-an385 BACKEND=fixed SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5
+	    $(MAKE) -s profile BOARD=mps2-an385 BACKEND=fixed SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=0
 	@echo
 	@sh bench/keep.sh bench/pico-xip.md "The Pico's flash reads in the render, through a model of the XIP cache" sh bench/pico-xip.sh
 	@echo

@@ -26,6 +26,12 @@
 #                     -DSCENE_PRUNE=1 -include scene_data.h
 #   RT_SCENEC_CFLAGS
 #   RT_SCENEC_LDLIBS  -lm (the float and double readers call tan, sin, cos)
+#
+# examples/make/Makefile is a whole project on these (docs/embedding.md,
+# "A Make project"). rt.mk compiles the core from this source tree; the
+# installed library (make install) needs no rt.mk: -I PREFIX/include/rt
+# and PREFIX/lib/librt_core.a, and -I PREFIX/include/rt/internal for
+# rt-scenec's tables.
 ifeq ($(RT_DIR),)
 RT_DIR := $(patsubst %/,%,$(dir $(lastword $(MAKEFILE_LIST))))
 endif

@@ -72,7 +72,7 @@ def compare(a, b, blur=None):
 
 
 def board_ipp(scene, variables):
-    args = ["make", "-s", "SCENE=" + scene_path(scene), "SIZE=" + SIZE, "DEPTH=5"] + variables
+    args = ["make", "-s", "SCENE=" + scene_path(scene), "SIZE=" + SIZE, "DEPTH=5", "AA=0"] + variables
     run(args + ["-j2", "firmware"])
     rep = run(args + ["board-run", "RUN_OUT=" + os.path.join(OUT, "board.png")]).stdout
     return int(re.search(r"^instructions_per_pixel (\d+)$", rep, re.M).group(1))

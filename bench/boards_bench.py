@@ -78,7 +78,7 @@ def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""
     per pixel, where the port counts them), image (in out), facts."""
     # one core on every board (a two-core board's split: bench/cores_bench.py)
     args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size,
-            "DEPTH=%d" % depth, "CORES=1"] + variant.split()
+            "DEPTH=%d" % depth, "CORES=1", "AA=0", "DITHER=0"] + variant.split()
     r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
     if r.returncode:
         return None

@@ -27,8 +27,8 @@ for s in balls-1 balls-2 balls-3 balls-default; do
     n=$(grep -c '^s ' scenes/spd/$s.nff)
     ipp="-"
     if [ $s != balls-default ]; then
-        if make -s firmware BOARD=$BOARD SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1 &&
-           make -s board-run BOARD=$BOARD SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 RUN_OUT="$OUT/$s.png" RUN_RT="$RT" \
+        if make -s firmware BOARD=$BOARD AA=0 SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1 &&
+           make -s board-run BOARD=$BOARD AA=0 SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 RUN_OUT="$OUT/$s.png" RUN_RT="$RT" \
                >"$OUT/$s.report" 2>&1; then
             ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
         fi
@@ -54,8 +54,8 @@ echo "== firmware code size (bytes, scene tables excluded), 64x64, depth 5 =="
 printf '%-10s %8s %10s\n' scene pruned unpruned
 code_of() { $(make -s board-info BOARD=$BOARD | sed -n 's/.*cross=\([^ ]*\).*/\1/p')size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2; do
-    d=build/board/$BOARD/$s-64x64-d5-rgb888
-    make -s firmware BOARD=$BOARD SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >/dev/null 2>&1
-    make -s firmware BOARD=$BOARD SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 >/dev/null 2>&1
+    d=$(make -s print-fwdir BOARD=$BOARD AA=0 SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5)
+    make -s firmware BOARD=$BOARD AA=0 SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 >/dev/null 2>&1
+    make -s firmware BOARD=$BOARD AA=0 SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 >/dev/null 2>&1
     printf '%-10s %8s %10s\n' $s "$(code_of $d/fixed.elf)" "$(code_of $d-noprune/fixed.elf)"
 done

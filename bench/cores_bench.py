@@ -25,7 +25,7 @@ SIZE = "64x64"
 
 
 def report(board, scene, cores):
-    args = ["BOARD=" + board, "SCENE=" + scene_path(scene), "SIZE=" + SIZE, "DEPTH=5", "CORES=%d" % cores]
+    args = ["BOARD=" + board, "SCENE=" + scene_path(scene), "SIZE=" + SIZE, "DEPTH=5", "CORES=%d" % cores, "AA=0"]
     if run(["make", "-s", "-j2", "firmware"] + args, check=False).returncode:
         return None, None
     png = os.path.join(OUT, "%s-%s-%d.png" % (board, scene, cores))

@@ -12,8 +12,8 @@ while IFS='|' read -r name body; do
     [ -z "$name" ] && continue
     f="$OUT/$name.nff"
     printf "$head$body" >"$f"
-    d=$(make -s print-fwdir SCENE="$f" SIZE=32x32)
-    if make -s SCENE="$f" SIZE=32x32 "$d/prims.elf" >"$OUT/$name.build" 2>&1 &&
+    d=$(make -s print-fwdir SCENE="$f" SIZE=32x32 AA=0)
+    if make -s SCENE="$f" SIZE=32x32 AA=0 "$d/prims.elf" >"$OUT/$name.build" 2>&1 &&
        timeout 300 qemu-system-arm -M mps2-an385 -nographic -monitor none \
            -semihosting-config enable=on,target=native -icount shift=0 -kernel "$d/prims.elf" \
            </dev/null >"$OUT/$name.stream" 2>/dev/null; then

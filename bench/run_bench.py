@@ -75,7 +75,7 @@ def compare(a, b):
 def board_ipp(cfg, scene, board="mps2-an385"):
     kind, board_cfg, _ = CONFIGS[cfg]
     args = ["BOARD=" + board, "BACKEND=" + kind, "SCENE=" + scene_path(scene), "SIZE=" + BOARD_SIZE,
-            "DEPTH=5", "CONFIG=" + board_cfg]
+            "DEPTH=5", "CONFIG=" + board_cfg, "AA=0"]
     run(["make", "-s", "-j2", "firmware"] + args)
     report = run(["make", "-s", "board-run", "RUN_OUT=" + os.path.join(OUT, "board-%s-%s.png" % (cfg, scene))]
                  + args).stdout

@@ -1,16 +1,17 @@
 #!/bin/sh
-# make-package.sh OUT PREFIX LIBDIR INCLUDEDIR POINTER-BYTES
+# make-package.sh OUT PREFIX BINDIR LIBDIR INCLUDEDIR POINTER-BYTES
 #
 # `make install`'s CMake package, what CMakeLists.txt's install(EXPORT) and
 # CMakePackageConfigHelpers write for `cmake --install` (Release build):
-# OUT/rtConfig.cmake (from cmake/rtConfig.cmake.in), rtConfigVersion.cmake
-# (same major version), rtTargets.cmake and rtTargets-release.cmake (the
-# imported target rt::core: LIBDIR/librt_core.a, INCLUDEDIR/rt). The
-# folders are absolute (no DESTDIR); those under PREFIX are written
-# relative to the package's own folder, LIBDIR/cmake/rt, so the tree can
-# move, as CMake's are.
+# OUT/rtConfig.cmake (from cmake/rtConfig.cmake.in: BINDIR/rt-scenec and
+# INCLUDEDIR/rt/internal for rt_add_scene), rtConfigVersion.cmake (same
+# major version), rtTargets.cmake and rtTargets-release.cmake (the
+# imported target rt::core: LIBDIR/librt_core.a, INCLUDEDIR/rt), and a
+# copy of cmake/rt_add_scene.cmake. The folders are absolute (no
+# DESTDIR); those under PREFIX are written relative to the package's own
+# folder, LIBDIR/cmake/rt, so the tree can move, as CMake's are.
 set -e
-out=$1 prefix=${2%/} libdir=$3 includedir=$4 ptr=$5
+out=$1 prefix=${2%/} bindir=$3 libdir=$4 includedir=$5 ptr=$6
 here=$(dirname "$0")
 version=$(sed -n 's/^#define RT_VERSION_STRING "\([0-9.]*\)".*/\1/p' "$here/../include/rt_version.h")
 [ -n "$version" ] || { echo "make-package.sh: no RT_VERSION_STRING in include/rt_version.h" >&2; exit 1; }
@@ -53,8 +54,18 @@ endmacro()
 
 ####################################################################################
 END
-    sed '1,/^@PACKAGE_INIT@$/d' "$here/rtConfig.cmake.in"
+    # PATH_VARS as configure_package_config_file() expands them
+    sed -e '1,/^@PACKAGE_INIT@$/d' \
+        -e "s|@PACKAGE_RT_INSTALL_SCENEC@|$(rel PACKAGE_PREFIX_DIR "$bindir")/rt-scenec|" \
+        -e "s|@PACKAGE_RT_INSTALL_INTERNAL_INCLUDE@|$(rel PACKAGE_PREFIX_DIR "$includedir")/rt/internal|" \
+        "$here/rtConfig.cmake.in"
 } >"$out/rtConfig.cmake"
+left=$(grep -v '^#' "$out/rtConfig.cmake" | grep -o '@[A-Z_]*@' | head -1) || true
+if [ -n "$left" ]; then
+    echo "make-package.sh: rtConfig.cmake.in has a variable this script does not expand: $left" >&2
+    exit 1
+fi
+cp "$here/rt_add_scene.cmake" "$out/"
 
 cat >"$out/rtConfigVersion.cmake" <<END
 # rt's version for find_package(rt [VERSION] CONFIG), by cmake/make-package.sh:

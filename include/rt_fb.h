@@ -72,7 +72,9 @@ enum { RT_FB_FORMATS(RT_FB_BITS_ENUM_) };
 #define RT_FB_CONST_BITS(id) RT_FB_CONST_BITS_(id)
 #define RT_FB_CONST_LINE_BYTES(id, w) (((size_t)(w) * RT_FB_CONST_BITS(id) + 7) / 8)
 
-/* Inclusive pixel rectangle, as LVGL's lv_area_t. Bands span whole lines. */
+/* Inclusive pixel rectangle, as LVGL's lv_area_t: x1..x2 and y1..y2 are
+ * all in it, x2 - x1 + 1 pixels by y2 - y1 + 1 lines, in frame
+ * coordinates. Bands span whole lines (of the viewport, when one is set). */
 typedef struct {
     uint16_t x1, y1, x2, y2;
 } rt_fb_area_t;
@@ -82,7 +84,10 @@ typedef struct rt_fb_sink rt_fb_sink_t;
 struct rt_fb_sink {
     rt_fb_format_t format;
     uint8_t *band[2];    /* band[1] may be NULL: single buffering */
-    size_t band_bytes;   /* size of each band buffer */
+    size_t band_bytes;   /* size of each band buffer: band_bytes / pitch whole
+                          * lines a band, at least one line of the width
+                          * rendered (opts.width; 0: the scene's, SCENE_WIDTH
+                          * in the scene compiler's scene_data.h) */
     size_t pitch;        /* bytes from one line to the next in a band;
                           * 0: tightly packed (RT_FB_LINE_BYTES) */
     /* Ordered dithering (RT_USE_DITHER) of the formats with fewer than 8

@@ -24,6 +24,8 @@
 #                        run" or "make test" after the mode
 #   ENSURE_DEPS_DRY_RUN  1: print what would be installed, install nothing,
 #                        exit 0 (tests/deps-tests.sh)
+#   ENSURE_DEPS_EMULATOR 0: the board's image only (make image): no npm ci
+#                        of an emulator package, even with nodejs named
 # A failure names the package, the command that needed it and apt's or
 # npm's last error line, says what to do and exits 1.
 set -e
@@ -71,8 +73,9 @@ for p in $boards; do
     if [ "$p" = nodejs ]; then
         # any Node.js 18 or later with its npm will do (Debian's packages
         # are nodejs and npm; NodeSource's nodejs brings npm itself)
-        npm_boards=$(ls platform/*/package-lock.json 2>/dev/null | xargs -r -n1 dirname)
         command -v node >/dev/null 2>&1 || need="$need nodejs"
+        [ "${ENSURE_DEPS_EMULATOR:-1}" = 0 ] && continue
+        npm_boards=$(ls platform/*/package-lock.json 2>/dev/null | xargs -r -n1 dirname)
         command -v npm >/dev/null 2>&1 || need="$need npm"
         continue
     fi

@@ -43,8 +43,10 @@
 #define fx_wsqrt                 rt_fx_wsqrt
 #define lex_count                rt_lex_count
 #define lex_direction            rt_lex_direction
+#define lex_direction_grid       rt_lex_direction_grid
 #define lex_decimal              rt_lex_decimal
 #define lex_fail                 rt_lex_fail
+#define lex_fail_missing         rt_lex_fail_missing
 #define lex_fail_tok             rt_lex_fail_tok
 #define lex_is                   rt_lex_is
 #define lex_next                 rt_lex_next
@@ -62,7 +64,6 @@
 #define object_prim_surface      rt_object_prim_surface
 #define plane_init               rt_plane_init
 #define polygon_init             rt_polygon_init
-#define polygon_is_flat          rt_polygon_is_flat
 #define polygon_shading_normal   rt_polygon_shading_normal
 #define prim_box                 rt_prim_box
 #define r_from_decimal           rt_r_from_decimal
@@ -87,6 +88,9 @@
 #define rd_paraboloid            rt_rd_paraboloid
 #define rd_plane                 rt_rd_plane
 #define rd_grid                  rt_rd_grid
+#define rd_cross                 rt_rd_cross
+#define rd_cut                   rt_rd_cut
+#define rd_direction             rt_rd_direction
 #define rd_pos                   rt_rd_pos
 #define rd_pos3_grid             rt_rd_pos3_grid
 #define rd_pos_decimal           rt_rd_pos_decimal

@@ -18,12 +18,12 @@ echo "board tests: QEMU lm3s6965evb (OLED) against the hosted fixed build in l4"
 oled_case() { # NAME SCENE SIZE [MAKE-VARS [RT-ARGS]]
     n=$1 scene=$2 size=$3 vars=$4 args=$5
     set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5 $vars
-    if ! make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1; then
+    if ! make -s -j2 firmware AA=0 DITHER=0 "$@" >"$OUT/$n.build" 2>&1; then
         bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
         return
     fi
     rm -f "$OUT/$n-board.png"
-    if ! make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
+    if ! make -s board-run AA=0 DITHER=0 "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
         bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
         return
     fi
@@ -53,7 +53,7 @@ oled_case rings-1-dither scenes/spd/rings-1.nff 47x31 "DITHER=1" "--dither"
 
 # The capture check: a dump whose 4x4 blocks are not uniform greys 17*v
 # (one byte changed in the showpiece's dump) gives no image.
-dump=build/board/lm3s6965evb/showpiece-128x64-d5-l4/fixed.oled.ppm
+dump=$(make -s print-fwdir BOARD=lm3s6965evb SCENE=scenes/showpiece.nff SIZE=128x64 DEPTH=5 AA=0 DITHER=0)/fixed.oled.ppm
 for case in "15 1 not grey" "15+3*(512*9+6) 3 not uniform" "15+3*(512*8+4) 3 not a 4-bit grey"; do
     at=${case%% *} rest=${case#* } n=${rest%% *} want=${rest#* }
     python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); i=eval(sys.argv[3]); n=int(sys.argv[4])
@@ -70,7 +70,7 @@ d[i:i+n] = bytes([v] * n); open(sys.argv[2],'wb').write(d)" "$dump" "$OUT/bad.pp
 done
 
 # Larger than the panel: a build error that says so.
-if make -s firmware BOARD=lm3s6965evb SCENE=scenes/spd/rings-1.nff SIZE=129x64 >"$OUT/big.build" 2>&1; then
+if make -s firmware AA=0 DITHER=0 BOARD=lm3s6965evb SCENE=scenes/spd/rings-1.nff SIZE=129x64 >"$OUT/big.build" 2>&1; then
     bad "a 129x64 frame built for the 128x64 OLED"
 elif grep -q "the frame is larger than the 128x64 OLED" "$OUT/big.build"; then
     ok "a 129x64 frame does not build: the frame is larger than the 128x64 OLED"

@@ -32,8 +32,14 @@
 #    MADCTL (the image differs), no INVON (inverted colours), a missing
 #    row offset, a byte sent with chip select high, and the damaged
 #    transfers of before (data short of its window, a window off the
-#    panel, pixels before sleep out, a pixel never written); a frame
-#    larger than the panel does not build.
+#    panel, pixels before sleep out, a frame band lost, the clear lost);
+#    a frame larger than the panel does not build;
+#  - the scene's resolution is the frame when SIZE is not given: a
+#    `resolution 320 240` scene fills the 320x240 panel (make run), the
+#    UF2 says so in its check line, make image with the same variables
+#    hands over the UF2 make run ran, and on PANEL=240x240 the scene is a
+#    build error naming both sizes; a 160x120 frame is centred on the
+#    panel with every other pixel black (the whole panel checked).
 RT=${1:-build/host/rt}
 OUT=build/test-pico
 mkdir -p "$OUT"
@@ -260,8 +266,10 @@ if [ -f "$log320" ] && [ -f "$log240" ]; then
         "i = [c for c in cmds if d[c + 1] == 0x2a][0]; d[i + 7] = 0x01; d[i + 9] = 0x40" "wrong window"
     panel_damage "no sleep out" "$log320" 320x240 0 "$host" \
         "i = [c for c in cmds if d[c + 1] == 0x11][0]; del d[i:i + 2]" "before sleep out"
-    panel_damage "a frame pixel never written" "$log320" 320x240 0 "$host" \
-        "i = [c for c in cmds if d[c + 1] == 0x2c][-1]; del d[i - 24:]" "never written"
+    panel_damage "the last band lost (the frame shows the cleared panel there)" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x2c][-1]; del d[i - 24:]" differs
+    panel_damage "the clear lost" "$log320" 320x240 0 "$host" \
+        "i = [c for c in cmds if d[c + 1] == 0x2c][0]; j = d.index(0x80, i); del d[i:j]" "the panel was not cleared"
     # the intact logs decode to the images the runs wrote
     for p in "$log320 320x240 0" "$log240 240x240 1"; do
         set -- $p
@@ -290,10 +298,87 @@ fi
 # Larger than the panel: a build error that says so
 if make -s firmware BOARD=pico SCENE=scenes/spd/rings-1.nff SIZE=241x240 PANEL=240x240 >"$OUT/big.build" 2>&1; then
     bad "a 241x240 frame built for the 240x240 panel"
-elif grep -q "the frame is larger than the panel" "$OUT/big.build"; then
-    ok "a 241x240 frame does not build for PANEL=240x240: the frame is larger than the panel"
+elif grep -q "the frame is larger than the 240x240 panel (PANEL=240x240): 241x240 (SIZE=241x240)" "$OUT/big.build"; then
+    ok "a 241x240 frame does not build for PANEL=240x240: $(grep -o 'the frame is larger.*' "$OUT/big.build" | cut -c1-120)"
 else
     bad "a 241x240 frame failed to build without the expected message: $(tail -2 "$OUT/big.build")"
+fi
+
+# The scene's resolution on the panel, no SIZE given: one sphere (cheap
+# under rp2040js) at `resolution 320 240` fills the Display Pack 2.0
+sphere() { # FILE W H
+    printf 'v\nfrom 0 -6 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution %s %s\nl -3 -6 5\nf 0.9 0.3 0.2 1 0 1 0 1\ns 0 0 0 1\n' "$2" "$3" >"$1"
+}
+dims() { python3 -c 'import struct, sys; print("%dx%d" % struct.unpack(">II", open(sys.argv[1], "rb").read()[16:24]))' "$1"; }
+sph="$OUT/sphere-320x240.nff"
+sphere "$sph" 320 240
+sv="BOARD=pico SCENE=$sph RUN_OUT=$OUT/sphere.png RUN_REF=$OUT/sphere-ref.png RUN_AREA=$OUT/sphere-area.png RUN_RT=$RT"
+rm -f "$OUT/sphere.png" "$OUT/sphere.uf2"
+if make run $sv >"$OUT/sphere-run.log" 2>&1; then
+    elf=$(sed -n 's/^ *RUN *\([^ ]*\.elf\) on .*/\1/p' "$OUT/sphere-run.log")
+    "$RT" "$sph" -o "$OUT/sphere-host.png" --fixed --format rgb565be --threads 1 --quiet
+    if [ "$(dims "$OUT/sphere.png")" = 320x240 ] && cmp=$("$RT" compare "$OUT/sphere.png" "$OUT/sphere-host.png" --max-error 0) &&
+       grep -q 'the 320x240 frame at 0,0' "$OUT/sphere-run.log"; then
+        ok "resolution 320 240, no SIZE: make run fills the 320x240 panel, == rt --fixed rgb565be ($cmp)"
+    else
+        bad "resolution 320 240 on the pico: a $(dims "$OUT/sphere.png") frame, ${cmp:-differs}: $(grep '^ *panel' "$OUT/sphere-run.log")"
+    fi
+    sum_run=$(cksum <"$OUT/sphere.uf2")
+    make image $sv >"$OUT/sphere-image.log" 2>&1
+    if [ -n "$elf" ] && [ "$elf" = "$(elf_of SCENE="$sph").elf" ] && cmp -s "$OUT/sphere.uf2" "${elf%.elf}.uf2" &&
+       [ "$(cksum <"$OUT/sphere.uf2")" = "$sum_run" ] && ! grep -qE '^ *(CC|LD|UF2) ' "$OUT/sphere-image.log" &&
+       grep -q 'panel: frame 320x240 centred on the 320x240 ST7789 panel' "$OUT/sphere-image.log"; then
+        ok "make image hands over the UF2 of $elf, as make run ran it; its check line: $(grep -o 'panel: frame.*' "$OUT/sphere-image.log")"
+    else
+        bad "make run ran '$elf', make image: $(tail -3 "$OUT/sphere-image.log")"
+    fi
+else
+    bad "make run of a 320x240 scene on the pico: $(tail -5 "$OUT/sphere-run.log")"
+fi
+# ... which does not fit the 240x240 module: a build error naming both
+if make image $sv PANEL=240x240 >"$OUT/sphere-240.log" 2>&1; then
+    bad "a 320x240 scene built for PANEL=240x240"
+elif grep -q 'the frame is larger than the 240x240 panel (PANEL=240x240): 320x240 (the resolution of .*) against the panel.s 240x240' "$OUT/sphere-240.log"; then
+    ok "PANEL=240x240: $(grep -o 'the frame is larger.*' "$OUT/sphere-240.log" | cut -c1-150)"
+else
+    bad "PANEL=240x240 and a 320x240 scene: $(tail -2 "$OUT/sphere-240.log")"
+fi
+# A 160x120 scene: centred on the panel, the rest of it black. The whole
+# panel as the glass shows it (FIRMWARE.panel.stream), read here: 320x240,
+# every pixel outside the frame at 80,60 zero, the frame there the one
+# compared with the host (FIRMWARE.frame.stream)
+small="$OUT/sphere-160x120.nff"
+sphere "$small" 160 120
+if make -s -j2 firmware BOARD=pico SCENE="$small" >"$OUT/small.build" 2>&1 &&
+   make -s board-run BOARD=pico SCENE="$small" RUN_OUT="$OUT/small.png" RUN_RT="$RT" >"$OUT/small.report" 2>&1; then
+    base=$(elf_of SCENE="$small")
+    "$RT" "$small" -o "$OUT/small-host.png" --fixed --format rgb565be --threads 1 --quiet
+    cmp=$("$RT" compare "$OUT/small.png" "$OUT/small-host.png" --max-error 0); same=$?
+    panel=$(python3 -c '
+import sys
+p, f = open(sys.argv[1], "rb").read(), open(sys.argv[2], "rb").read()
+def frame(s):
+    assert s[:4] == b"RTF1" and s[9:10] == b"B"
+    w, h = s[5] | s[6] << 8, s[7] | s[8] << 8
+    return w, h, s[14:14 + 2 * w * h]
+pw, ph, pp = frame(p)
+fw, fh, fp = frame(f)
+x0, y0 = (pw - fw) // 2, (ph - fh) // 2
+border = sum(1 for y in range(ph) for x in range(pw)
+             if not (x0 <= x < x0 + fw and y0 <= y < y0 + fh) and (pp[2 * (y * pw + x)] or pp[2 * (y * pw + x) + 1]))
+inside = b"".join(pp[2 * (y * pw + x0):2 * (y * pw + x0 + fw)] for y in range(y0, y0 + fh))
+lit = sum(1 for i in range(0, len(fp), 2) if fp[i] or fp[i + 1])
+print(pw, ph, fw, fh, x0, y0, border, int(inside == fp), lit)
+' "$base.panel.stream" "$base.frame.stream" 2>&1)
+    set -- $panel
+    if [ $same = 0 ] && [ "$1x$2" = 320x240 ] && [ "$3x$4" = 160x120 ] && [ "$5,$6" = 80,60 ] && [ "$7" = 0 ] && [ "$8" = 1 ] &&
+       [ "${9:-0}" -gt 1000 ]; then
+        ok "resolution 160 120: the frame (== host, $9 lit pixels) at 80,60 of the 320x240 panel, its other $((320 * 240 - 160 * 120)) pixels black"
+    else
+        bad "resolution 160 120 on the 320x240 panel: $panel; against the host: $cmp"
+    fi
+else
+    bad "a 160x120 scene on the pico: $(tail -3 "$OUT/small.build" "$OUT/small.report")"
 fi
 echo "board-pico-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -17,12 +17,19 @@
 #    one that does not the same from the HSI, wait states that do not
 #    stick or an RCC that reads 0 leave SYSCLK on the HSI and say why;
 #    wait states before the switch, APB limits, HSEBYP and PLLCFGR
-#    written only when allowed, in every variant;
+#    written only when allowed, PLLCFGR's reserved bits kept, the PLL's
+#    input as fast as an exact set-up allows (2 MHz where one does), the
+#    flash prefetch off on a revision A F405/F407 only, in every variant
+#    (8, 12 and 25 MHz crystals, the Nucleo's bypass clock, none);
 #  - a fault (a read of the CCM RAM, which QEMU does not model) ends the
 #    run with status 4 and its report line, and run.sh says so;
 #  - the Nucleo-64 variant (STM32=nucleo64: USART2, 512 KiB / 96 KiB)
 #    gives the host's image over USART2 (QEMU's second serial port); a
-#    crystal out of the HSE's range does not build.
+#    crystal out of the HSE's range does not build;
+#  - a scene's `resolution 320 240` is the frame when SIZE is not given,
+#    and make image with make run's variables hands over the ELF make run
+#    ran (the board's AA=3 in both).
+# One sample a pixel (AA=0) in the other cases.
 RT=${1:-build/host/rt}
 OUT=build/test-stm32f4
 mkdir -p "$OUT"
@@ -32,12 +39,43 @@ bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 vars="BOARD=stm32f4 SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5"
 
 echo "stm32f4: the image for the chip, and its run under QEMU"
-if ! make -s -j2 firmware $vars >"$OUT/build.log" 2>&1; then
+if ! make -s -j2 firmware AA=0 $vars >"$OUT/build.log" 2>&1; then
     bad "firmware build failed: $(tail -3 "$OUT/build.log")"
-    echo "board-stm32f4: $pass passed, $fail failed"
+    
+# The scene's resolution is the frame (no SIZE given): a 320x240 scene
+# (one sphere: cheap) renders 320x240 with the board's sampling (AA=3 for
+# every goal), equal to rt's fixed --aa 3 byte for byte; and make image
+# with the same variables hands over the image of the ELF make run ran,
+# rebuilding nothing
+sph="$OUT/sphere-320x240.nff"
+printf 'v\nfrom 0 -6 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution 320 240\nl -3 -6 5\nf 0.9 0.3 0.2 0.8 0.2 10 0 1\ns 0 0 0 1\n' >"$sph"
+sv="BOARD=stm32f4 SCENE=$sph RUN_OUT=$OUT/sphere.png RUN_REF=$OUT/sphere-ref.png RUN_AREA=$OUT/sphere-area.png RUN_RT=$RT"
+rm -f "$OUT/sphere.png" "$OUT/sphere.bin"
+if make run $sv >"$OUT/sphere-run.log" 2>&1; then
+    elf=$(sed -n 's/^ *RUN *\([^ ]*\.elf\) on .*/\1/p' "$OUT/sphere-run.log")
+    dims=$(python3 -c 'import struct, sys; print("%dx%d" % struct.unpack(">II", open(sys.argv[1], "rb").read()[16:24]))' "$OUT/sphere.png")
+    "$RT" "$sph" -o "$OUT/sphere-host.png" --fixed --aa 3 --threads 1 --quiet
+    if [ "$dims" = 320x240 ] && cmp=$("$RT" compare "$OUT/sphere.png" "$OUT/sphere-host.png" --max-error 0); then
+        ok "resolution 320 240, no SIZE: make run renders $dims, AA=3 by default, == rt --fixed --aa 3 ($cmp)"
+    else
+        bad "resolution 320 240: the board's frame is ${dims:-?}, against rt --fixed --aa 3: ${cmp:-?}"
+    fi
+    sum_run=$(cksum <"$OUT/sphere.bin")
+    make image $sv >"$OUT/sphere-image.log" 2>&1
+    info_elf=$(make -s board-info $sv | sed -n 's/.* elf=\([^ ]*\) .*/\1/p')
+    if [ -n "$elf" ] && [ "$elf" = "$info_elf" ] && cmp -s "$OUT/sphere.bin" "${elf%.elf}.bin" &&
+       [ "$(cksum <"$OUT/sphere.bin")" = "$sum_run" ] && ! grep -qE '^ *(CC|LD) ' "$OUT/sphere-image.log"; then
+        ok "make image (the same variables) hands over $elf's image, as make run ran it; nothing rebuilt"
+    else
+        bad "make run ran '$elf', make image's is '$info_elf': $(tail -3 "$OUT/sphere-image.log")"
+    fi
+else
+    bad "make run of a 320x240 scene: $(tail -5 "$OUT/sphere-run.log")"
+fi
+echo "board-stm32f4: $pass passed, $fail failed"
     exit 1
 fi
-eval "$(make -s board-info $vars)"
+eval "$(make -s board-info AA=0 $vars)"
 bin="${elf%.elf}.bin" hex="${elf%.elf}.hex"
 # the vector table: initial SP and reset handler, little-endian words
 set -- $(od -An -tx4 -N8 "$bin")
@@ -57,7 +95,7 @@ fi
 n=$(${cross}objdump -d "$elf" | grep -c 'bkpt')
 [ "$n" = 0 ] && ok "no bkpt in the image: no semihosting" || bad "$n bkpt instructions in the image"
 
-if make -s board-run $vars RUN_OUT="$OUT/board.png" RUN_RT="$RT" >"$OUT/report.txt" 2>"$OUT/run.err"; then
+if make -s board-run AA=0 $vars RUN_OUT="$OUT/board.png" RUN_RT="$RT" >"$OUT/report.txt" 2>"$OUT/run.err"; then
     ok "run ends on its exit_status line ($(grep -c progress_rows "$OUT/report.txt") progress lines)"
 else
     bad "run failed: $(tail -3 "$OUT/run.err")"
@@ -113,7 +151,7 @@ fi
 
 # the clock tree on the host against a model of RCC and FLASH_ACR (what
 # QEMU cannot check), in each variant: tests/stm32f4_clock_test.c
-for v in "" "-DSTM32_SYSCLK_MHZ=84 -DSTM32_HSE_BYPASS=1" "-DSTM32_HSE_MHZ=25" "-DSTM32_HSE_MHZ=0"; do
+for v in "" "-DSTM32_SYSCLK_MHZ=84 -DSTM32_HSE_BYPASS=1" "-DSTM32_HSE_MHZ=12" "-DSTM32_HSE_MHZ=25" "-DSTM32_HSE_MHZ=0"; do
     if cc -std=c11 -Wall -Wextra -Werror $v -Iplatform/stm32f4 tests/stm32f4_clock_test.c -o "$OUT/clock-test" \
            2>"$OUT/clock.build" && "$OUT/clock-test" >"$OUT/clock.txt"; then
         ok "clock tree ($(head -1 "$OUT/clock.txt" | cut -d' ' -f2-)): $(tail -1 "$OUT/clock.txt" | cut -d' ' -f2-)"
@@ -125,12 +163,12 @@ done
 # the Nucleo-64 variant and a crystal that does not divide
 # (QEMU's second serial port is USART2: nothing would arrive from USART1)
 nvars="$vars STM32=nucleo64"
-if make -s -j2 firmware $nvars >"$OUT/nucleo.build" 2>&1; then
-    eval "$(make -s board-info $nvars)"
+if make -s -j2 firmware AA=0 $nvars >"$OUT/nucleo.build" 2>&1; then
+    eval "$(make -s board-info AA=0 $nvars)"
     mem=$(awk '/^Memory Configuration/ { m = 1 } m && ($1 == "FLASH" || $1 == "RAM") { print $1, $3 } /^Linker script/ { m = 0 }' \
               "${elf%.elf}.map" | while read -r name len; do printf '%s%d ' $name $((len)); done)
     "$RT" scenes/spd/balls-2.nff -o "$OUT/host.png" --fixed --size 32x32 --depth 5 --threads 1 --quiet
-    if make -s board-run $nvars RUN_OUT="$OUT/nucleo.png" RUN_RT="$RT" >"$OUT/nucleo.report" 2>&1 &&
+    if make -s board-run AA=0 $nvars RUN_OUT="$OUT/nucleo.png" RUN_RT="$RT" >"$OUT/nucleo.report" 2>&1 &&
        cmp=$("$RT" compare "$OUT/nucleo.png" "$OUT/host.png" --max-error 0) && [ "$mem" = "FLASH524288 RAM98304 " ]; then
         ok "STM32=nucleo64: over USART2, the host's image byte for byte; $mem"
     else
@@ -139,10 +177,41 @@ if make -s -j2 firmware $nvars >"$OUT/nucleo.build" 2>&1; then
 else
     bad "STM32=nucleo64 does not build: $(tail -3 "$OUT/nucleo.build")"
 fi
-if make -s firmware $vars HSE_MHZ=3 >"$OUT/hse.build" 2>&1; then
+if make -s firmware AA=0 $vars HSE_MHZ=3 >"$OUT/hse.build" 2>&1; then
     bad "HSE_MHZ=3 built"
 else
     ok "HSE_MHZ=3 refused: $(grep -o 'HSE_MHZ=3.*' "$OUT/hse.build" | head -1)"
+fi
+
+# The scene's resolution is the frame (no SIZE given): a 320x240 scene
+# (one sphere: cheap) renders 320x240 with the board's sampling (AA=3 for
+# every goal), equal to rt's fixed --aa 3 byte for byte; and make image
+# with the same variables hands over the image of the ELF make run ran,
+# rebuilding nothing
+sph="$OUT/sphere-320x240.nff"
+printf 'v\nfrom 0 -6 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution 320 240\nl -3 -6 5\nf 0.9 0.3 0.2 0.8 0.2 10 0 1\ns 0 0 0 1\n' >"$sph"
+sv="BOARD=stm32f4 SCENE=$sph RUN_OUT=$OUT/sphere.png RUN_REF=$OUT/sphere-ref.png RUN_AREA=$OUT/sphere-area.png RUN_RT=$RT"
+rm -f "$OUT/sphere.png" "$OUT/sphere.bin"
+if make run $sv >"$OUT/sphere-run.log" 2>&1; then
+    elf=$(sed -n 's/^ *RUN *\([^ ]*\.elf\) on .*/\1/p' "$OUT/sphere-run.log")
+    dims=$(python3 -c 'import struct, sys; print("%dx%d" % struct.unpack(">II", open(sys.argv[1], "rb").read()[16:24]))' "$OUT/sphere.png")
+    "$RT" "$sph" -o "$OUT/sphere-host.png" --fixed --aa 3 --threads 1 --quiet
+    if [ "$dims" = 320x240 ] && cmp=$("$RT" compare "$OUT/sphere.png" "$OUT/sphere-host.png" --max-error 0); then
+        ok "resolution 320 240, no SIZE: make run renders $dims, AA=3 by default, == rt --fixed --aa 3 ($cmp)"
+    else
+        bad "resolution 320 240: the board's frame is ${dims:-?}, against rt --fixed --aa 3: ${cmp:-?}"
+    fi
+    sum_run=$(cksum <"$OUT/sphere.bin")
+    make image $sv >"$OUT/sphere-image.log" 2>&1
+    info_elf=$(make -s board-info $sv | sed -n 's/.* elf=\([^ ]*\) .*/\1/p')
+    if [ -n "$elf" ] && [ "$elf" = "$info_elf" ] && cmp -s "$OUT/sphere.bin" "${elf%.elf}.bin" &&
+       [ "$(cksum <"$OUT/sphere.bin")" = "$sum_run" ] && ! grep -qE '^ *(CC|LD) ' "$OUT/sphere-image.log"; then
+        ok "make image (the same variables) hands over $elf's image, as make run ran it; nothing rebuilt"
+    else
+        bad "make run ran '$elf', make image's is '$info_elf': $(tail -3 "$OUT/sphere-image.log")"
+    fi
+else
+    bad "make run of a 320x240 scene: $(tail -5 "$OUT/sphere-run.log")"
 fi
 echo "board-stm32f4: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -7,21 +7,31 @@
 #    the benchmark scenes of scenes/bench likewise;
 #  - plane, texture and sky code is pruned from firmware that lacks them;
 #  - footprint budgets of the default scene (showpiece, 128x128, depth 5);
-#  - a scene over a capacity fails to build with a clear message.
+#  - a scene over a capacity fails to build with a clear message;
+#  - on the host, every byte the stream sink writes counts as output, not
+#    as the render's time (tests/sink_stream_test.c);
+#  - the frame size a board build takes from the scene (scene-size.awk)
+#    is the frame rt renders, for every scene of scenes/ and for tokens
+#    split over lines, comments, CRLF and 3.2e1;
+#  - make run and make image with the same variables name the same
+#    firmware; distinct choices get distinct out/ names; a missing SCENE
+#    stops make run with its name.
+# One sample a pixel (AA=0) unless a case says otherwise: every goal
+# defaults to the board's BOARD_RUN_AA, 3 levels here.
 RT=${1:-build/host/rt}
 OUT=build/test-board
 mkdir -p "$OUT"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
-fwdir() { echo "build/board/mps2-an385/$1-$2-d5-rgb888"; }
+fwdir() { make -s print-fwdir SCENE="$(scene_file $1)" SIZE=$2 DEPTH=5 AA=0; }
 # fw NAME [make variables]: build the firmware (log in $OUT/NAME.build),
 # run it (image $OUT/NAME-board.png, report $OUT/NAME.report)
 fw() {
     n=$1
     shift
-    make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1 &&
-        make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
+    make -s -j2 firmware AA=0 "$@" >"$OUT/$n.build" 2>&1 &&
+        make -s board-run AA=0 "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
 }
 
 echo "board tests: QEMU mps2-an385 against the hosted fixed build"
@@ -29,11 +39,11 @@ scene_file() { for d in scenes/spd scenes/bench scenes; do [ -f $d/$1.nff ] && e
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2 \
          quadrics torus boxes transforms csg showpiece textures card picolib whitted; do
     d=$(fwdir $s 64x64)
-    if ! make -s -j2 firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 >"$OUT/$s.build" 2>&1; then
+    if ! make -s -j2 firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 AA=0 >"$OUT/$s.build" 2>&1; then
         bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
         continue
     fi
-    if ! make -s board-run SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 RUN_OUT="$OUT/$s-board.png" RUN_RT="$RT" >"$OUT/$s.report" 2>&1; then
+    if ! make -s board-run SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 AA=0 RUN_OUT="$OUT/$s-board.png" RUN_RT="$RT" >"$OUT/$s.report" 2>&1; then
         bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
         continue
     fi
@@ -110,7 +120,7 @@ while d[j:j+1] in (b"B", b"T"):
         assert d[j + 5 + r * lb + lb - 1] & 15 == 0
     rows += n; j += 5 + n * lb + 4
 assert rows == h
-' build/board/mps2-an385/rings-1-47x31-d3-l4/fixed.stream 2>"$OUT/l4-pad.err"; then
+' "$(make -s print-fwdir SCENE=scenes/spd/rings-1.nff SIZE=47x31 DEPTH=3 FORMAT=l4 AA=0)/fixed.stream" 2>"$OUT/l4-pad.err"; then
     ok "l4 at width 47: the last nibble of every line in the stream is 0"
 else
     bad "l4 at width 47: padding nibble not 0 or stream unreadable: $(tail -1 "$OUT/l4-pad.err")"
@@ -118,17 +128,17 @@ fi
 
 # Linked-symbol checks on the default scene's firmware (and, as a control
 # that the check can fail, the soft-float build must show its helpers).
-make -s -j2 firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >"$OUT/default.build" 2>&1
+make -s -j2 firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 >"$OUT/default.build" 2>&1
 d=$(fwdir showpiece 128x128)
 bad_syms=$(arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^(malloc|free|calloc|realloc|_sbrk|_malloc_r|__aeabi_f.*|__aeabi_d.*|__aeabi_[fd]2.*)$')
 [ -z "$bad_syms" ] && ok "fixed firmware links no heap or soft-float symbol" || bad "fixed firmware links: $bad_syms"
-make -s -j2 firmware BACKEND=double SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 >>"$OUT/default.build" 2>&1
+make -s -j2 firmware BACKEND=double SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 >>"$OUT/default.build" 2>&1
 arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
     ok "control: the soft-float build does link __aeabi_dmul" ||
     bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"
 
 # Footprint budgets of the default scene at depth 5.
-if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 RUN_OUT="$OUT/default.png" RUN_RT="$RT" >"$OUT/default.report" 2>&1; then
+if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 RUN_OUT="$OUT/default.png" RUN_RT="$RT" >"$OUT/default.report" 2>&1; then
     eval "$(arm-none-eabi-size -A "$d/fixed.elf" | awk '
         $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" { code += $2 }
         $1 == ".data" || $1 == ".bss" { ram += $2 }
@@ -187,6 +197,76 @@ elif grep -q "too-many-spheres.nff:1034: too many spheres: capacity RT_MAX_SPHER
     ok "over capacity: $(grep 'too many' "$OUT/big.build")"
 else
     bad "over-capacity build failed without the expected message: $(tail -2 "$OUT/big.build")"
+fi
+# The stream sink on the host against a console whose bytes take time (a
+# real UART's; QEMU's is always ready): each call's output is all counted
+# as output, the end record's included (tests/sink_stream_test.c).
+if cc -std=c11 -Wall -Wextra -Werror -DBOARD_CYCLES=1 -Iinclude -Iplatform/firmware tests/sink_stream_test.c \
+       platform/firmware/sink_stream.c platform/firmware/sink_io.c platform/firmware/report.c -o "$OUT/sink-stream-test" \
+       2>"$OUT/sink-stream.build" && "$OUT/sink-stream-test" >"$OUT/sink-stream.txt"; then
+    ok "stream sink: $(tail -1 "$OUT/sink-stream.txt" | cut -d' ' -f2-), every byte out counted as output"
+else
+    bad "stream sink: $(grep FAIL "$OUT/sink-stream.txt" | head -2) $(tail -2 "$OUT/sink-stream.build")"
+fi
+
+# The frame a board build takes from the scene (scene-size.awk) is the
+# frame rt renders: a viewport at its last pixel renders, one a pixel
+# further right or down is outside the frame. Every scene of scenes/, and
+# the reader's own token rules: the numbers on other lines, after a
+# comment, as 3.2e1 and 24.0, CRLF line ends.
+printf 'v\nfrom 0 -4 0\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1 resolution # the size:\n  3.2e1\n\n# x\n24.0\nl 0 -4 4\nf 1 0 0 1 0 1 0 1\ns 0 0 0 1\n' >"$OUT/size-split.nff"
+printf 'v\r\nfrom 0 -4 0\r\nat 0 0 0\r\nup 0 0 1\r\nangle 40\r\nhither 1\r\nresolution 20 12\r\nl 0 -4 4\r\nf 1 0 0 1 0 1 0 1\r\ns 0 0 0 1\r\n' >"$OUT/size-crlf.nff"
+n=0 wrong=""
+for f in $(find scenes -name '*.nff' | sort) "$OUT/size-split.nff" "$OUT/size-crlf.nff"; do
+    s=$(make -s board-info SCENE="$f" | sed -n 's/.* size=\([^ ]*\).*/\1/p') w=${s%x*} h=${s#*x}
+    if [ -n "$s" ] && "$RT" "$f" -o "$OUT/size.png" --viewport $((w - 1)),$((h - 1)),1,1 --threads 1 --quiet 2>/dev/null &&
+       ! "$RT" "$f" -o "$OUT/size.png" --viewport $w,$((h - 1)),1,1 --threads 1 --quiet 2>/dev/null &&
+       ! "$RT" "$f" -o "$OUT/size.png" --viewport $((w - 1)),$h,1,1 --threads 1 --quiet 2>/dev/null; then
+        n=$((n + 1))
+    else
+        wrong="$wrong $f:${s:-none}"
+    fi
+done
+[ -z "$wrong" ] && ok "the board's frame is rt's for all $n scenes (scenes/, numbers split over lines and comments, 3.2e1, CRLF): $(make -s board-info SCENE="$OUT/size-split.nff" | sed -n 's/.* size=\([^ ]*\).*/\1/p') for the split one" ||
+    bad "the board's frame is not rt's for:$wrong"
+sz=$(make -s board-info SCENE=scenes/bench/card.nff SIZE=100x50 | sed -n 's/.* size=\([^ ]*\).*/\1/p')
+[ "$sz" = 100x50 ] && ok "SIZE=100x50 on the command line wins over the scene's 320x240" || bad "SIZE=100x50 gave $sz"
+
+# Names in out/: the default run keeps the README's name; every choice
+# that changes the firmware (size, sampling, dither, format, depth,
+# texture filter, configuration, bands, cores, and the boards' own: panel,
+# flip, STM32 variant, crystal, LED, USART) gives another name and ELF,
+# and make run's ELF is the one beside make image's file
+info() { make -s board-info "$@" | sed -n 's/.* elf=\([^ ]*\) out=\([^ ]*\).*/\2 \1/p'; }
+d=$(info) && [ "${d%% *}" = out/showpiece-mps2-an385-fixed ] && ok "the default run: ${d%% *}.png" || bad "the default run's name: $d"
+names="$OUT/names.txt"
+: >"$names"
+for v in "" "SIZE=64x64" "SIZE=64x48" "AA=0" "AA=2" "AA=3,20" "SPP=2" "DITHER=1" "FORMAT=rgb565" "DEPTH=3" \
+         "TEXTURE_FILTER=0" "CONFIG=q16" "BAND_LINES=2" "STACK_SIZE=8192" "PRUNE=0" "BACKEND=float" \
+         "BOARD=mps2-an521" "BOARD=mps2-an521 CORES=1" "BOARD=lm3s6965evb" "BOARD=lm3s6965evb DITHER=0" \
+         "BOARD=pico" "BOARD=pico PANEL=240x240" "BOARD=pico PANEL_FLIP=1" "BOARD=pico PANEL=240x240 PANEL_FLIP=1" \
+         "BOARD=pico SIZE=160x120" "BOARD=pico AA=3" "BOARD=pico PICO_DISPLAY=uart" "BOARD=pico PICO_DIVIDER=0" \
+         "BOARD=stm32f4" "BOARD=stm32f4 STM32=nucleo64" "BOARD=stm32f4 HSE_MHZ=25" "BOARD=stm32f4 STM32_LED=PC1" \
+         "BOARD=stm32f4 STM32_USART=2" "BOARD=stm32f4 AA=0" "BOARD=stm32f4 SIZE=160x120"; do
+    echo "$(info $v) $v" >>"$names"
+done
+dup_out=$(awk '{ print $1 }' "$names" | sort | uniq -d) dup_dir=$(awk '{ print $2 }' "$names" | sort | uniq -d)
+if [ -z "$dup_out$dup_dir" ] && [ "$(wc -l <"$names")" = 35 ] && ! awk '$1 == "" || $2 == ""' "$names" | grep -q .; then
+    ok "35 builds, 35 out/ names and ELFs: $(awk 'NR > 1 { printf "%s%s", sep, $1; sep = ", " }' "$names" | sed 's,out/showpiece-,,g' | cut -c1-400)..."
+else
+    bad "out/ names or ELFs shared: $dup_out $dup_dir"
+fi
+run=$(make -n run BOARD=stm32f4 SIZE=40x30 2>/dev/null | sed -n 's/.* RUN "\([^ ]*\) on.*/\1/p')
+img=$(make -n image BOARD=stm32f4 SIZE=40x30 2>/dev/null | grep -o '[^ ]*\.bin ' | head -1)
+[ -n "$run" ] && [ "${img% }" = "${run%.elf}.bin" ] && ok "make run runs $run; make image copies ${img% } beside it" ||
+    bad "make run's ELF '$run' and make image's file '$img'"
+
+# A scene that is not there stops make run at once, with its name
+msg=$(make run SCENE=nosuch.nff 2>&1); status=$?
+if [ $status -ne 0 ] && echo "$msg" | grep -q 'SCENE=nosuch.nff: no such file' && ! echo "$msg" | grep -q 'No rule'; then
+    ok "make run SCENE=nosuch.nff: $(echo "$msg" | grep -o 'SCENE=nosuch.nff: no such file')"
+else
+    bad "make run SCENE=nosuch.nff: status $status, $msg"
 fi
 echo "board-tests: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -1,7 +1,9 @@
 #!/bin/sh
 # Bad input and CLI errors: each tests/bad/NAME.nff must fail with exit
-# status 2 and exactly "tests/bad/NAME.nff:<NAME.expect>" on stderr, and
-# leave no output image behind. Then the options of rt, rt compare,
+# status 2 and exactly "tests/bad/NAME.nff:LINE: <NAME.expect>" on stderr,
+# and leave no output image behind. LINE is the one line of the file
+# marked by hand with the comment "# <- error": where the entity at fault
+# is (for a missing number, where the entity stops short). Then the options of rt, rt compare,
 # rt receive and rt-scenec, and rt receive on good and damaged streams.
 RT=${1:-build/asan/rt}
 OUT=${2:-build/test-cli}
@@ -11,9 +13,18 @@ ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 
 echo "bad-input tests: exact 'file:line: message', exit status 2, no image written, the same in every backend"
+# an empty file: no line to mark, the error names line 1
+: >"$OUT/empty.nff"
+got=$("$RT" "$OUT/empty.nff" -o "$OUT/out.png" 2>&1 >/dev/null)
+[ $? -eq 2 ] && [ "$got" = "$OUT/empty.nff:1: no 'v' viewpoint in the file" ] && ok "empty file: $got" ||
+    bad "empty file: got '$got'"
 for f in tests/bad/*.nff; do
     name=$(basename "$f" .nff)
-    want="$f:$(cat "tests/bad/$name.expect")"
+    line=$(grep -an -- '# <- error' "$f" | cut -d: -f1)
+    case "$line" in
+    '' | *[!0-9]*) bad "$name: mark exactly one line with '# <- error'"; continue ;;
+    esac
+    want="$f:$line: $(cat "tests/bad/$name.expect")"
     for backend in --fixed --float --double; do
         rm -f "$OUT/out.png"
         got=$("$RT" "$f" -o "$OUT/out.png" $backend 2>&1 >/dev/null)
@@ -47,6 +58,7 @@ S=scenes/spd/tetra-1.nff
 expect_cli "unknown flag" 2 "unknown option '--bogus'" -- "$RT" $S -o "$OUT/out.png" --bogus
 expect_cli "missing value" 2 "--depth needs a number" -- "$RT" $S -o "$OUT/out.png" --depth
 expect_cli "bad size" 2 "--size: expected WxH" -- "$RT" $S -o "$OUT/out.png" --size 12
+expect_cli "size over the maximum" 2 "--size: expected WxH from 1x1 to 4096x4096 (RT_MAX_WIDTH x RT_MAX_HEIGHT), got '10000x10000'" -- "$RT" $S -o "$OUT/out.png" --size 10000x10000
 expect_cli "depth over max" 2 "--depth: expected 1..8 (RT_MAX_DEPTH: a deeper tree needs a build with -DRT_MAX_DEPTH=N)" -- "$RT" $S -o "$OUT/out.png" --depth 99
 expect_cli "no output" 2 "no output file given" -- "$RT" $S
 expect_cli "scene is a directory" 2 "tests/bad: cannot read" -- "$RT" tests/bad -o "$OUT/out.png"
@@ -184,6 +196,20 @@ expect_cli "receive: one bit flipped in a band" 2 "band checksum mismatch" -- "$
 python3 -c "import sys; d=bytearray(open(sys.argv[1],'rb').read()); d[4]=7; open(sys.argv[2],'wb').write(d)" "$ST" "$OUT/hdr.stream"
 expect_cli "receive: bad frame header" 2 "bad frame header (format 7, 8x8)" -- "$RT" receive "$OUT/hdr.stream" -o "$OUT/out.png"
 expect_cli "receive: no frame" 2 "no frame in the stream" -- sh -c "printf 'just boot text' | '$RT' receive - -o '$OUT/out.png'"
+# a capture that starts mid-frame (receive started after the reset): the
+# report lines are still printed, then the error and the hint to start first
+tail -c +30 "$ST" >"$OUT/midframe.stream"
+rm -f "$OUT/out.png"
+"$RT" receive "$OUT/midframe.stream" -o "$OUT/out.png" >"$OUT/midframe.report" 2>"$OUT/midframe.err"; status=$?
+if [ $status -eq 2 ] && [ ! -e "$OUT/out.png" ] && grep -q "no frame in the stream" "$OUT/midframe.err" &&
+   grep -q "hint: .* but no frame header: start rt receive (or the capture) before resetting or powering the board" \
+       "$OUT/midframe.err" && [ -s "$OUT/midframe.report" ] &&
+   [ "$(tail -1 "$OUT/midframe.report")" = "$(tail -1 "$OUT/rx.report")" ] &&
+   ! printf '' | "$RT" receive - -o "$OUT/out.png" 2>&1 | grep -q hint; then
+    ok "receive: a stream cut mid-frame: $(wc -l <"$OUT/midframe.report") report line(s), then the hint: $(sed -n 's/.*: hint: //p' "$OUT/midframe.err" | cut -c1-60)... (no hint for an empty stream)"
+else
+    bad "receive from mid-frame: status $status, $(cat "$OUT/midframe.err")"
+fi
 expect_cli "receive: output checked first" 1 "out.gif: unknown image format" -- "$RT" receive "$ST" -o "$OUT/out.gif"
 # the writer keeps the pipe open 6 s after the stream; rt must return at
 # the frame end plus the report's idle wait (0.5 s), image and report in

@@ -1,10 +1,14 @@
 #!/bin/sh
 # consumer-tests.sh RT [OUT]: the core as a user embeds it (tests/consumer/):
 # configured and built with CMake for the host and cross compiled with
-# cmake/arm-none-eabi.cmake, and with GNU make from rt.mk. Each host
+# cmake/arm-none-eabi.cmake, and with GNU make from rt.mk
+# (examples/make/Makefile, the example docs/embedding.md shows). Each host
 # program, and the firmware under QEMU, must write the image of
 #   rt scenes/spd/balls-1.nff --size 32x32 --fixed
-# byte for byte; the scene prunes the core (no cone code linked).
+# byte for byte, from balls-1 with its resolution set to 32 32 (the
+# program renders the scene's resolution, opts.width = 0, into a band sized
+# from scene_data.h's SCENE_WIDTH); the scene prunes the core (no cone
+# code linked).
 rt=${1:-build/host/rt} out=${2:-build/consumer}
 . tests/check.sh
 same_image() { # same_image WHAT IMAGE
@@ -17,9 +21,11 @@ same_image() { # same_image WHAT IMAGE
 rm -rf "$out"
 mkdir -p "$out"
 "$rt" scenes/spd/balls-1.nff --size 32x32 --fixed -o "$out/ref.ppm" --quiet || bad "rt: reference render"
+scene=$out/balls-1-32x32.nff
+sed 's/^resolution .*/resolution 32 32/' scenes/spd/balls-1.nff >"$scene"
 
 # Host: configure, build, run.
-if log host-configure cmake -S tests/consumer -B "$out/host" -DCMAKE_BUILD_TYPE=Release &&
+if log host-configure cmake -S tests/consumer -B "$out/host" -DCMAKE_BUILD_TYPE=Release -DSCENE="$scene" &&
     log host-build cmake --build "$out/host" -j2; then
     ok "CMake, host: configured and built"
     if "$out/host/consumer" >"$out/host.ppm"; then
@@ -38,7 +44,7 @@ fi
 
 # Cortex-M3: cross compiled with the toolchain file, then run under QEMU.
 elf="$out/arm/consumer.elf"
-if CFLAGS=-Werror log arm-configure cmake -S tests/consumer -B "$out/arm" -DCMAKE_BUILD_TYPE=MinSizeRel \
+if CFLAGS=-Werror log arm-configure cmake -S tests/consumer -B "$out/arm" -DCMAKE_BUILD_TYPE=MinSizeRel -DSCENE="$scene" \
     -DCMAKE_TOOLCHAIN_FILE="$PWD/cmake/arm-none-eabi.cmake" && log arm-build cmake --build "$out/arm" -j2 &&
     arm-none-eabi-readelf -h "$elf" | grep -q 'Machine: *ARM'; then
     ok "CMake, Cortex-M3: cross compiled and linked ($(arm-none-eabi-size "$elf" | awk 'NR == 2 { print $1 " bytes of code" }'))"
@@ -55,11 +61,28 @@ else
     bad "CMake, Cortex-M3: configure, build or link failed"
 fi
 
-# GNU make with rt.mk.
-if log make make -f tests/consumer/Makefile O="$out/make" && "$out/make/consumer" >"$out/make.ppm"; then
-    same_image "make with rt.mk, host" "$out/make.ppm"
+# GNU make with rt.mk: examples/make/Makefile, which docs/embedding.md
+# shows, in a project of this consumer's main.c and out_host.c with
+# that scene as its scene.nff, built with -Werror.
+mk="$out/make"
+mkdir -p "$mk"
+cp tests/consumer/main.c tests/consumer/out_host.c "$mk/" && cp "$scene" "$mk/scene.nff"
+if log make make -C "$mk" -f "$PWD/examples/make/Makefile" RT_DIR="$PWD" CC="${CC:-cc} -Werror" &&
+    "$mk/app" >"$out/make.ppm"; then
+    same_image "make with rt.mk (examples/make/Makefile), host" "$out/make.ppm"
+    if nm "$mk/app" | grep -q ray_hit_sphere && ! nm "$mk/app" | grep -q ray_hit_cone; then
+        ok "make with rt.mk: pruned for the scene (sphere code linked, no cone code)"
+    else
+        bad "make with rt.mk: not pruned for the scene (cone code linked, or no sphere code)"
+    fi
 else
-    bad "make with rt.mk: build or run failed"
+    bad "make with rt.mk: examples/make/Makefile did not build or run"
+fi
+shown=$(awk '/^```make$/ { on = 1; next } on && /^```$/ { exit } on' docs/embedding.md)
+if [ -n "$shown" ] && [ "$shown" = "$(cat examples/make/Makefile)" ]; then
+    ok "docs/embedding.md shows examples/make/Makefile as it is ($(echo "$shown" | wc -l) lines)"
+else
+    bad "docs/embedding.md's make example differs from examples/make/Makefile"
 fi
 
 echo "consumer: $pass passed, $fail failed"

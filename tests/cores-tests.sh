@@ -23,10 +23,10 @@ val() { awk -v k="$2" '$1 == k { print $2 }' "$1"; }
 run() {
     rn=$1
     shift
-    make -s -j2 firmware BOARD=$B "$@" >"$OUT/$rn.build" 2>&1 &&
-        make -s board-run BOARD=$B "$@" RUN_OUT="$OUT/$rn.png" RUN_RT="$RT" >"$OUT/$rn.report" 2>&1
+    make -s -j2 firmware AA=0 BOARD=$B "$@" >"$OUT/$rn.build" 2>&1 &&
+        make -s board-run AA=0 BOARD=$B "$@" RUN_OUT="$OUT/$rn.png" RUN_RT="$RT" >"$OUT/$rn.report" 2>&1
 }
-stream_of() { eval "$(make -s board-info BOARD=$B "$@")"; echo "${elf%.elf}.stream"; }
+stream_of() { eval "$(make -s board-info AA=0 BOARD=$B "$@")"; echo "${elf%.elf}.stream"; }
 
 echo "cores: $B, two Cortex-M33, against one core and the host"
 for s in scenes/spd/balls-2.nff scenes/spd/rings-1.nff scenes/showpiece.nff; do
@@ -93,7 +93,7 @@ fi
 
 # The cores truly in parallel (not deterministic): the same image.
 vars="SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5"
-if make -s board-run BOARD=$B $vars QEMU_ACCEL="-accel tcg,thread=multi" RUN_OUT="$OUT/multi.png" RUN_RT="$RT" \
+if make -s board-run AA=0 BOARD=$B $vars QEMU_ACCEL="-accel tcg,thread=multi" RUN_OUT="$OUT/multi.png" RUN_RT="$RT" \
        >"$OUT/multi.report" 2>&1 &&
    "$RT" compare "$OUT/multi.png" "$OUT/balls-2-1.png" --max-error 0 >/dev/null; then
     ok "balls-2 under -accel tcg,thread=multi: the same image (bands $(val "$OUT/multi.report" core0_bands) + $(val "$OUT/multi.report" core1_bands))"

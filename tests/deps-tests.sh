@@ -5,6 +5,8 @@
 #  - make run (the default board) asks for the host build and the ARM
 #    toolchain and QEMU only: no clang, valgrind, cppcheck, RISC-V, Node.js;
 #  - make run BOARD=pico asks for Node.js, npm and the pinned rp2040js;
+#    make image BOARD=pico (deps-image) for Node.js (uf2.mjs) and the ARM
+#    compiler only, no npm, no rp2040js; make image BOARD=stm32f4 no QEMU;
 #  - make test asks for everything;
 #  - a failing apt-get names the package and the command and exits 1;
 #  - a failing npm names rp2040js and the command and gives the proxy
@@ -16,7 +18,7 @@ ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
 MAKE_BIN=$(command -v make)
 rm -rf "$OUT" && mkdir -p "$OUT/bin" "$OUT/npm"
-for t in sh dirname ls xargs grep sed tr tail head cat rm mktemp env; do
+for t in sh dirname ls xargs grep sed tr tail head cat rm mktemp env awk; do
     p=$(command -v "$t") && ln -s "$p" "$OUT/bin/$t"
 done
 cat >"$OUT/bin/dpkg-query" <<'EOF'
@@ -94,6 +96,19 @@ if has "$out" nodejs npm gcc-arm-none-eabi rp2040js@1.4.1 && printf '%s\n' "$out
     ok "make run BOARD=pico: Node.js, npm, rp2040js, the ARM compiler, no QEMU: $(echo $out | sed 's/ensure-deps: would install for make run (BOARD=pico)://g')"
 else
     bad "make run BOARD=pico: $out"
+fi
+out=$(ENSURE_DEPS_DRY_RUN=1 stub "$MAKE_BIN" -s deps-image BOARD=pico)
+if has "$out" nodejs gcc-arm-none-eabi && printf '%s\n' "$out" | grep -q 'for make image (BOARD=pico)' &&
+    lacks "$out" '^(npm|rp2040js.*|qemu-system-.*)$' && ! grep -q 'npm' "$STUB_LOG" 2>/dev/null; then
+    ok "make image BOARD=pico: Node.js (uf2.mjs) and the ARM compiler, no npm or rp2040js:$(echo $out | sed 's/ensure-deps: would install for make image (BOARD=pico)://g')"
+else
+    bad "make image BOARD=pico: $out"
+fi
+out=$(ENSURE_DEPS_DRY_RUN=1 stub "$MAKE_BIN" -s deps-image BOARD=stm32f4)
+if has "$out" gcc-arm-none-eabi libnewlib-arm-none-eabi && lacks "$out" '^(qemu-system-.*|nodejs|npm)$'; then
+    ok "make image BOARD=stm32f4: the ARM toolchain, no QEMU"
+else
+    bad "make image BOARD=stm32f4: $out"
 fi
 out=$(ENSURE_DEPS_DRY_RUN=1 stub "$MAKE_BIN" -s deps-host)
 if printf '%s\n' "$out" | grep -qxF 'ensure-deps: would install for make host-run: gcc make binutils'; then

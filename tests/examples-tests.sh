@@ -49,14 +49,15 @@ fi
 
 # The installed library: `cmake --install` without the host tools
 # (RT_BUILD_TOOLS=OFF; tests/install-tests.sh installs them) gives
-# librt_core.a, the public headers alone and the CMake package; an example
-# builds against them, and nm on the library shows only rt_/RT_ global
-# symbols.
+# librt_core.a, the headers and the CMake package; an example builds
+# against the public headers alone, nm on the library shows only rt_/RT_
+# global symbols, and rt_add_scene from that package (no rt-scenec) is a
+# configure error that says why.
 inst="$OUT/install"
 rm -rf "$OUT/cmake" "$inst"
 if cmake -S . -B "$OUT/cmake" -DCMAKE_INSTALL_PREFIX="$inst" -DRT_BUILD_TOOLS=OFF >"$OUT/cmake.log" 2>&1 &&
    cmake --build "$OUT/cmake" -j2 >>"$OUT/cmake.log" 2>&1 && cmake --install "$OUT/cmake" >>"$OUT/cmake.log" 2>&1; then
-    headers=$(ls "$inst/include/rt" | tr '\n' ' ')
+    headers=$(cd "$inst/include/rt" && ls *.h | tr '\n' ' ')
     if cc -std=c11 -Wall -Wextra -Werror -I"$inst/include/rt" -Iexamples -o "$OUT/installed" \
           examples/zephyr_display.c "$inst/lib/librt_core.a" 2>"$OUT/installed.build" &&
        "$OUT/installed" $SCENE "$OUT/installed.ppm" >/dev/null &&
@@ -71,6 +72,16 @@ if cmake -S . -B "$OUT/cmake" -DCMAKE_INSTALL_PREFIX="$inst" -DRT_BUILD_TOOLS=OF
         unprefixed*) bad "nm librt_core.a: $syms" ;;
         *) ok "nm librt_core.a: $syms" ;;
     esac
+    mkdir -p "$OUT/no-scenec" && : >"$OUT/no-scenec/main.c"
+    printf '%s\n' 'cmake_minimum_required(VERSION 3.16)' 'project(no_scenec C)' 'find_package(rt CONFIG REQUIRED)' \
+        'add_executable(app main.c)' 'rt_add_scene(app scene.nff)' >"$OUT/no-scenec/CMakeLists.txt"
+    if cmake -S "$OUT/no-scenec" -B "$OUT/no-scenec/b" -DCMAKE_PREFIX_PATH="$(cd "$inst" && pwd)" >"$OUT/no-scenec.log" 2>&1; then
+        bad "rt_add_scene from a package without rt-scenec configured"
+    elif tr -s ' \n' '  ' <"$OUT/no-scenec.log" | grep -q "rt-scenec is not there (rt was installed without its tools"; then
+        ok "rt_add_scene from a package without its tools: a configure error naming the missing rt-scenec"
+    else
+        bad "rt_add_scene without rt-scenec failed otherwise: $(grep -m1 -A2 'CMake Error' "$OUT/no-scenec.log")"
+    fi
 else
     bad "cmake build or install of the library failed: $(tail -3 "$OUT/cmake.log")"
 fi

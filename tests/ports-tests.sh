@@ -26,7 +26,7 @@ HEAP='^(malloc|free|calloc|realloc|_sbrk|sbrk|_malloc_r)$'
 
 echo "ports: every board and backend against the host"
 for b in $(ls platform/*/board.mk | cut -d/ -f2); do
-    eval "$(make -s board-info BOARD=$b SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5)"
+    eval "$(make -s board-info AA=0 DITHER=0 BOARD=$b SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5)"
     for be in $backends; do
         # the benchmark scenes (planes, textures, the sky) in the backends
         # a user would run: fixed and float
@@ -36,12 +36,12 @@ for b in $(ls platform/*/board.mk | cut -d/ -f2); do
             t0=$(date +%s)
             n=$b-$be-$(basename $s .nff)
             vars="BOARD=$b BACKEND=$be SCENE=$s SIZE=32x32 DEPTH=5"
-            if ! make -s -j2 firmware $vars >"$OUT/$n.build" 2>&1; then
+            if ! make -s -j2 firmware AA=0 DITHER=0 $vars >"$OUT/$n.build" 2>&1; then
                 bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
                 continue
             fi
-            eval "$(make -s board-info $vars)"
-            if ! make -s board-run $vars RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
+            eval "$(make -s board-info AA=0 DITHER=0 $vars)"
+            if ! make -s board-run AA=0 DITHER=0 $vars RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
                 bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
                 continue
             fi
@@ -106,10 +106,10 @@ for n in ("FLASH", "RAM"):
 done
 # A frame whose band buffer and stack do not fit the micro:bit's 16 KiB of
 # RAM fails to link, saying what to lower; with a smaller band it builds.
-if make -s -j2 firmware BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 >"$OUT/overflow.build" 2>&1; then
+if make -s -j2 firmware AA=0 DITHER=0 BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 >"$OUT/overflow.build" 2>&1; then
     bad "microbit at 1024x16 (12 KiB band buffer + 4 KiB stack) linked: RAM overflow not caught"
 elif grep -q "RAM overflow: data, bss and stack exceed the board's RAM: lower make BAND_LINES=" "$OUT/overflow.build" &&
-     make -s -j2 firmware BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 BAND_LINES=2 >>"$OUT/overflow.build" 2>&1; then
+     make -s -j2 firmware AA=0 DITHER=0 BOARD=microbit SCENE=scenes/spd/balls-1.nff SIZE=1024x16 BAND_LINES=2 >>"$OUT/overflow.build" 2>&1; then
     ok "microbit at 1024x16: $(grep -o 'RAM overflow.*' "$OUT/overflow.build" | head -1); BAND_LINES=2 links"
 else
     bad "microbit at 1024x16: no clear RAM overflow message, or BAND_LINES=2 failed: $(tail -2 "$OUT/overflow.build")"

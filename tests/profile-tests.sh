@@ -88,8 +88,8 @@ for run in "mps2-an385 scenes/spd/balls-2.nff 32x32 eye,reflection,shadow" \
     n=$b-$(basename $s .nff)
     t0=$(date +%s)
     vars="BOARD=$b SCENE=$s SIZE=$size DEPTH=5"
-    make -s -j2 firmware $vars >"$OUT/$n.build" 2>&1
-    if ! make -s profile $vars PROFILE_JSON="$OUT/$n.json" >"$OUT/$n.txt" 2>&1; then
+    make -s -j2 firmware AA=0 $vars >"$OUT/$n.build" 2>&1
+    if ! make -s profile AA=0 $vars PROFILE_JSON="$OUT/$n.json" >"$OUT/$n.txt" 2>&1; then
         check "$n: make profile" sh -c "tail -20 '$OUT/$n.txt'; false"
         continue
     fi
@@ -99,7 +99,7 @@ for run in "mps2-an385 scenes/spd/balls-2.nff 32x32 eye,reflection,shadow" \
     check "$n: grouped" grouped "$OUT/$n.json"
     check "$n: ray counts" rays "$OUT/$n.json" $(echo $kinds | tr , ' ')
     if [ $b = sifive_e ]; then
-        eval "$(make -s board-info $vars)"
+        eval "$(make -s board-info AA=0 $vars)"
         for f in rt_scene_occluded rt_trace_ray; do
             python3 bench/cycles.py "$elf" --machine $b --from-symbol $f --top 0 --json "$OUT/$n-$f.json" \
                 >"$OUT/$n-$f.txt" 2>&1

@@ -16,11 +16,11 @@ mkdir -p "$OUT"
 # budget BOARD BACKEND SCENE SIZE DEPTH KEY MAX: build, run, KEY <= MAX
 budget() {
     n="$1-$2-$(basename "$3" .nff)-$4"
-    if ! make -s -j2 firmware BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 >"$OUT/$n.build" 2>&1; then
+    if ! make -s -j2 firmware AA=0 BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 >"$OUT/$n.build" 2>&1; then
         bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
         return
     fi
-    if ! make -s board-run BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 RUN_OUT="$OUT/$n.png" RUN_RT="$RT" \
+    if ! make -s board-run AA=0 BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 RUN_OUT="$OUT/$n.png" RUN_RT="$RT" \
         >"$OUT/$n.report" 2>&1; then
         bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
         return

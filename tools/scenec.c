@@ -276,7 +276,8 @@ static void emit_header(FILE *f, const scene_t *sc, const char *src)
         emit_upper(f, uses[i].name);
         fprintf(f, " %d\n", uses[i].used);
     }
-    fprintf(f, "\n#if SCENE_PRUNE\n");
+    /* defined(): a user's file may include this header without SCENE_PRUNE, under -Wundef */
+    fprintf(f, "\n#if defined(SCENE_PRUNE) && SCENE_PRUNE\n");
     for (size_t i = 0; i < n_uses; i++) {
         fprintf(f, "#define RT_USE_");
         emit_upper(f, uses[i].name);
@@ -298,7 +299,9 @@ static int scenec_emit(FILE *out, FILE *hdr, const char *src, const scene_t *sc,
     if (text_mode) {
         emit_text(out, text, len);
     } else {
-        fprintf(out, "#include <stdint.h>\n\n#include \"geometry/scene.h\"\n\n");
+        fprintf(out, "#include <stdint.h>\n\n/* the core's internal headers: -I path/to/rt/src, or installed\n"
+                     " * -I PREFIX/include/rt/internal (rt_add_scene adds it) */\n"
+                     "#include \"geometry/scene.h\"\n\n");
 #if RT_BACKEND_FIXED
         fprintf(out, "#if !RT_BACKEND_FIXED || FX_FRAC_BITS != %d\n", FX_FRAC_BITS);
         fprintf(out, "#error \"these tables are for the fixed build with FX_FRAC_BITS = %d\"\n#endif\n\n",

@@ -3,8 +3,24 @@
 # SCENE, SIZE, DEPTH, FORMAT and NAME come from there.
 #
 #   make run  [BOARD=<QEMU machine>] [BACKEND=fixed|float] [SCENE=..] [SIZE=WxH] [DEPTH=N] [FORMAT=..]
-#   make firmware | size | board-run RUN_OUT=x.png   (the same variables)
+#   make image | uf2 | flash | firmware | size | board-run RUN_OUT=x.png   (the same variables)
 #   make profile [PROFILE_JSON=x.json]   (the same variables; SIZE 64x64 unless given)
+#
+# Every goal builds the same firmware from the same variables, so make run
+# runs exactly the ELF make image hands over:
+#  - SIZE: the frame, unless given: the board's BOARD_SIZE if it sets one
+#    (the OLED's panel), else the scene's `resolution` (every scene has
+#    one: the reader requires it in the viewpoint), read by
+#    scene-size.awk (tests/board-tests.sh checks it against rt for every
+#    scene of scenes/). A board with a panel (BOARD_PANEL) refuses a larger
+#    frame at build time, naming both sizes.
+#  - AA, SPP, DITHER: unless given, the board's BOARD_RUN_AA (3 levels, or
+#    one sample on the 16 KiB boards and the Pico) and BOARD_RUN_DITHER
+#    (the OLED's 1), for every goal; scripts that measure one sample say
+#    AA=0 (and DITHER=0 on the OLED).
+#  - out/ names (make run's PNG, make image's files) and the build folder
+#    are made of one list of choices (FW_CHOICES below), each named only
+#    when it is not its default: out/<scene>-<board>-<backend>[-choices].
 #
 # The port contract (platform/firmware/port.h): a board folder
 # platform/<BOARD>/ holds board.mk, which sets
@@ -45,9 +61,13 @@
 # BOARD_FLASH (the command of make flash) with BOARD_FLASH_PACKAGE (the
 # Debian package that has its tool),
 # BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
-# one word each, commas for spaces).
+# one word each, commas for spaces), BOARD_SIZE (the frame unless SIZE is
+# given, instead of the scene's resolution), BOARD_PANEL (WxH of the panel
+# the frame goes to: a larger frame is a build error) with
+# BOARD_PANEL_NAME (how that error names it), BOARD_BAND_LINES (the
+# default of BAND_LINES, 4).
 #
-# Each (scene, size, depth, format) gets its own folder: the scene
+# Each build (scene and FW_CHOICES, below) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
 # what the scene uses, and the firmware is built for exactly that.
 
@@ -78,6 +98,10 @@ BOARD_RUN_AA := 3
 BOARD_RUN_DITHER := 0
 BOARD_TAG :=
 BOARD_BENCH_VARIANTS :=
+BOARD_SIZE :=
+BOARD_PANEL :=
+BOARD_PANEL_NAME = $(BOARD_PANEL) panel
+BOARD_BAND_LINES := 4
 include platform/$(BOARD)/board.mk
 ifeq ($(filter $(BACKEND),$(BOARD_BACKENDS)),)
 $(error BACKEND=$(BACKEND) is not offered by BOARD=$(BOARD), which offers: $(BOARD_BACKENDS))
@@ -95,8 +119,23 @@ FW_OBJCOPY = $(BOARD_CROSS)objcopy
 BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
              -DRT_MAX_VERTICES=32768 -DRT_MAX_LIGHTS=16 -DRT_MAX_MATERIALS=128
 
+# The frame: SIZE if given, else the board's BOARD_SIZE, else the scene's
+# resolution (scene-size.awk; 128x128 if it finds none, and the reader
+# then says what is wrong with the scene)
+SCENE_SIZE := $(if $(wildcard $(SCENE)),$(shell awk -f platform/firmware/scene-size.awk '$(SCENE)'))
+DEFAULT_SIZE := $(or $(BOARD_SIZE),$(SCENE_SIZE),128x128)
+SIZE_IS := $(if $(filter-out undefined,$(origin SIZE)),SIZE=$(SIZE),$(if $(BOARD_SIZE),the board's default size,the resolution of $(SCENE)))
+ifeq ($(origin SIZE),undefined)
+SIZE := $(DEFAULT_SIZE)
+endif
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
+# A board whose frame goes to a panel (BOARD_PANEL, WxH) takes no larger frame
+ifneq ($(BOARD_PANEL),)
+ifneq ($(shell [ '$(W)' -le $(word 1,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && [ '$(H)' -le $(word 2,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && echo fits),fits)
+$(error the frame is larger than the $(BOARD_PANEL_NAME): $(SIZE) ($(SIZE_IS)) against the panel's $(BOARD_PANEL); give SIZE=WxH of at most $(BOARD_PANEL))
+endif
+endif
 # FORMAT: a name of RT_FB_FORMATS (include/rt_fb.h), lower case: rgb888 -> RT_FB_RGB888.
 FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # PRUNE=1 (default): code for primitive kinds and shading features the
@@ -108,34 +147,33 @@ CONFIG ?= q20
 CFG_FLAGS := $(CFG_$(CONFIG))
 # RAM: lines per band buffer (the firmware holds one band; on several
 # cores, two per core) and the stack (each core's)
-BAND_LINES ?= 4
 STACK_SIZE ?= 4096
+BAND_LINES ?= $(BOARD_BAND_LINES)
 # Cores that render: the board's (BOARD_CORES) unless CORES=1 asks for one.
 CORES ?= $(BOARD_CORES)
 ifeq ($(filter 1 $(BOARD_CORES),$(CORES)),)
 $(error CORES=$(CORES): BOARD=$(BOARD) renders on 1 or $(BOARD_CORES) cores)
 endif
 # Anti-aliasing: AA=LEVELS[,THRESHOLD] adaptive (rt --aa), SPP=N uniform
-# (rt --spp); neither (or AA=0): one sample a pixel, and the firmware links
-# none of it (RT_USE_AA=0). make run renders with RUN_AA (Makefile).
-# make run without AA or SPP renders with the board's BOARD_RUN_AA (3
-# levels unless its board.mk says otherwise: the 16 KiB boards render one
-# sample), and without DITHER with its BOARD_RUN_DITHER (the OLED's 1).
+# (rt --spp); AA=0: one sample a pixel, and the firmware links none of it
+# (RT_USE_AA=0). Without AA or SPP every goal renders with the board's
+# BOARD_RUN_AA (3 levels unless its board.mk says otherwise: the 16 KiB
+# boards and the Pico render one sample), and without DITHER with its
+# BOARD_RUN_DITHER (the OLED's 1).
 comma := ,
-ifneq ($(filter run,$(MAKECMDGOALS)),)
 ifeq ($(origin AA)$(origin SPP),undefinedundefined)
 AA := $(BOARD_RUN_AA)
 endif
 ifeq ($(origin DITHER),undefined)
 DITHER := $(BOARD_RUN_DITHER)
 endif
-endif
 AA ?= 0
 SPP ?= 0
 AA_LEVELS := $(word 1,$(subst $(comma), ,$(AA)))
 AA_THRESHOLD := $(or $(word 2,$(subst $(comma), ,$(AA))),0)
 AA_FLAGS := $(if $(filter-out 0,$(AA_LEVELS))$(filter-out 0 1,$(SPP)),-DBOARD_AA_LEVELS=$(AA_LEVELS) -DBOARD_AA_THRESHOLD=$(AA_THRESHOLD) -DBOARD_SPP=$(SPP),-DRT_USE_AA=0)
-AA_TAG := $(if $(filter-out 0,$(AA_LEVELS)),-aa$(AA_LEVELS)$(if $(filter-out 0,$(AA_THRESHOLD)),_$(AA_THRESHOLD)))$(if $(filter-out 0 1,$(SPP)),-spp$(SPP))
+# the sampling as a word: $(1) levels, $(2) threshold, $(3) SPP
+sampling_word = $(or $(if $(filter-out 0,$(1)),aa$(1)$(if $(filter-out 0,$(2)),_$(2)))$(if $(filter-out 0 1,$(3)),spp$(3)),aa0)
 # DITHER=1: ordered dithering of the packed formats (rt --dither); 0
 # (the default) links none of it (RT_USE_DITHER=0).
 DITHER ?= 0
@@ -144,7 +182,21 @@ DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
 # off), no ray cones linked; 1 (the default) filters them over the footprint.
 TEXTURE_FILTER ?= 1
 TEXTURE_FILTER_FLAGS := $(if $(filter 0,$(TEXTURE_FILTER)),-DRT_TEXTURE_FILTER=0)
-FW_DIR := build/board/$(BOARD)/$(NAME)-$(SIZE)-d$(DEPTH)-$(FORMAT)$(AA_TAG)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(TEXTURE_FILTER)),-pointtex)$(if $(filter 0,$(PRUNE)),-noprune)$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))$(if $(filter-out 4,$(BAND_LINES)),-b$(BAND_LINES))$(if $(filter-out 4096,$(STACK_SIZE)),-s$(STACK_SIZE))$(if $(filter-out 1,$(CORES)),-cores$(CORES))$(BOARD_TAG)
+# Every choice that makes one firmware differ from another, as WORD/DEFAULT:
+# the word that names it, and the word its default would have. The build
+# folder and the out/ names (RUN_OUT, make image's files) carry each word
+# that is not its default, then the board's own (BOARD_TAG: panel, flip,
+# STM32 variant, crystal, LED, USART...), so two builds that differ never
+# share a name and the defaults' names stay short.
+FW_CHOICES := $(SIZE)/$(DEFAULT_SIZE) d$(DEPTH)/d5 $(FORMAT)/$(or $(FW_FORMAT),rgb888) \
+              $(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))/$(call sampling_word,$(word 1,$(subst $(comma), ,$(BOARD_RUN_AA))),$(or $(word 2,$(subst $(comma), ,$(BOARD_RUN_AA))),0),0) \
+              $(if $(filter 1,$(DITHER)),dither,nodither)/$(if $(filter 1,$(BOARD_RUN_DITHER)),dither,nodither) \
+              $(if $(filter 0,$(TEXTURE_FILTER)),pointtex,filtertex)/filtertex $(if $(filter 0,$(PRUNE)),noprune,prune)/prune \
+              $(CONFIG)/q20 b$(BAND_LINES)/b$(BOARD_BAND_LINES) s$(STACK_SIZE)/s4096 cores$(CORES)/cores$(BOARD_CORES)
+empty :=
+space := $(empty) $(empty)
+FW_TAGS := $(subst $(space),,$(foreach c,$(FW_CHOICES),$(if $(filter-out $(lastword $(subst /, ,$(c))),$(firstword $(subst /, ,$(c)))),-$(firstword $(subst /, ,$(c))))))$(BOARD_TAG)
+FW_DIR := build/board/$(BOARD)/$(NAME)$(FW_TAGS)
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 
@@ -266,14 +318,14 @@ $(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
 
 firmware: $(FW_ELF) $(BOARD_IMAGES)
 
-# The board's images beside the PNG (out/<scene>-<board>-<backend>.<ext>),
+# The board's images beside the PNG (out/<scene>-<board>-<backend>[-choices].<ext>),
 # each copy then named by the command $(1)
 copy_images = $(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix $(f)) && $(1) $(basename $(RUN_OUT))$(suffix $(f));)
 
 # make image: the files to flash (BOARD_IMAGES) of a board that exists as
 # silicon, copied to out/ with the name make run gives the PNG; the
 # board's BOARD_IMAGE_NOTE says how to flash them
-image: deps-board $(BOARD_IMAGES)
+image: deps-image $(BOARD_IMAGES)
 	@$(if $(BOARD_IMAGES),,echo "BOARD=$(BOARD) makes no image to flash: it runs under its emulator only" >&2; exit 1)
 	@mkdir -p out
 	@$(call copy_images,$(or $(BOARD_IMAGE_SHOW),echo))
@@ -293,7 +345,7 @@ endif
 # ---- running it ------------------------------------------------------------
 
 RUN_RT  ?= build/host/rt
-RUN_OUT ?= out/$(NAME)-$(BOARD)-$(BACKEND).png
+RUN_OUT ?= out/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
 # The reference is the double build in the board's pixel format, so with
 # FORMAT=rgb565 the figure is the renderer's error, not the format's.
 RUN_REF = out/$(NAME)-double$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
@@ -353,4 +405,4 @@ print-fwdir:
 
 # the board's facts for scripts: make -s board-info BOARD=..
 board-info:
-	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT) cores=$(BOARD_CORES) variants='$(BOARD_BENCH_VARIANTS)'"
+	@echo "fw_dir=$(FW_DIR) elf=$(FW_ELF) out=$(basename $(RUN_OUT)) size=$(SIZE) cross=$(BOARD_CROSS) backends='$(BOARD_BACKENDS)' fpu='$(BOARD_FPU)' clock_hz=$(BOARD_CLOCK_HZ) format=$(FORMAT) cores=$(BOARD_CORES) variants='$(BOARD_BENCH_VARIANTS)'"

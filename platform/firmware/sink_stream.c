@@ -71,12 +71,16 @@ static int stream_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *p
     return 0;
 }
 
+/* (on a real UART the record's bytes wait for the line, like a band's:
+ * output too, not the render's) */
 static int stream_end(rt_fb_sink_t *s)
 {
     (void)s;
+    sink_io_begin();
     uint8_t rec[5] = { 'E' };
     put_u32(rec + 1, frame_adler);
     port_write(rec, sizeof rec);
+    sink_io_end();
     return 0;
 }
 

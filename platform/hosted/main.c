@@ -288,7 +288,9 @@ static int cmd_render(int argc, char **argv)
             memcpy(buf, optarg, (size_t)(x - optarg));
             buf[x - optarg] = '\0';
             if (!parse_uint(buf, 1, RT_MAX_WIDTH, &w) || !parse_uint(x + 1, 1, RT_MAX_HEIGHT, &h))
-                return render_usage_error("--size: expected WxH within the configured maximum, got '%s'", optarg);
+                return render_usage_error("--size: expected WxH from 1x1 to " TEXT_OF(RT_MAX_WIDTH) "x" TEXT_OF(
+                                              RT_MAX_HEIGHT) " (RT_MAX_WIDTH x RT_MAX_HEIGHT), got '%s'",
+                                          optarg);
             opts.width = (uint16_t)w;
             opts.height = (uint16_t)h;
             break;

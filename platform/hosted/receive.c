@@ -187,6 +187,14 @@ int cmd_receive(int argc, char **argv)
         close(src.fd);
     if (rc != 0) {
         fprintf(stderr, "rt receive: %s: %s\n", name, res.error);
+        /* bytes but no header: most often the board sent its frame header
+         * before rt receive was listening, and the rest was skipped */
+        if (res.no_header && res.offset > 0)
+            fprintf(stderr,
+                    "rt receive: %s: hint: %lu report line(s) and %lu other byte(s) but no frame header: start "
+                    "rt receive (or the capture) before resetting or powering the board, so that it reads the "
+                    "frame from its start\n",
+                    name, res.texts, res.skipped);
         return EXIT_BAD_INPUT;
     }
     if (res.skipped)

@@ -154,8 +154,10 @@ static int decode(rx_t *r)
 
     /* Before the frame: report lines, or noise to skip. */
     for (;;) {
-        if (!need(r, 1))
+        if (!need(r, 1)) {
+            res->no_header = !r->read_errno;
             return fail(r, "no frame in the stream");
+        }
         uint8_t c = at(r)[0];
         size_t len;
         if (c == 'R' && need(r, 4) && memcmp(at(r), "RTF1", 4) == 0)

@@ -41,6 +41,7 @@ typedef struct {
     unsigned long skipped; /* noise bytes skipped before the frame header
                             * (rx_reports: before the first report line) */
     unsigned long texts;   /* report lines read */
+    bool no_header;        /* rx_frame: the input ended before a frame header */
     unsigned long offset;  /* bytes consumed */
     char error[160];       /* why it failed: "what (at byte N)" */
 } rx_result_t;

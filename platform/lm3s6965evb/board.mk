@@ -23,10 +23,10 @@ BOARD_RUN      := platform/lm3s6965evb/run.sh
 BOARD_CFLAGS   += -DSINK_HOLDS_FRAME=1
 # the panel's pixel format, whatever FORMAT says
 FW_FORMAT      := l4
-# the panel's size unless SIZE is given (the top Makefile's default is
-# 128x128); a smaller frame is drawn at the panel's top left
-ifeq ($(origin SIZE),file)
-SIZE := 128x64
-endif
+# the panel's size unless SIZE is given; a smaller frame is drawn at the
+# panel's top left, a larger one does not build
+BOARD_SIZE     := 128x64
+BOARD_PANEL    := 128x64
+BOARD_PANEL_NAME := 128x64 OLED
 # 16 grey levels: make run dithers (DITHER=0 rounds to nearest)
 BOARD_RUN_DITHER := 1

@@ -28,4 +28,4 @@ BOARD_CORES    := 2
 # With adaptive anti-aliasing each band traces its top row of cell
 # corners again, so bands of 4 lines (balls-2 at 64x64, AA=3: 0.531 of one
 # core's instructions, against 0.614 with one line and 0.525 with 8)
-BAND_LINES     ?= $(if $(filter-out 0,$(AA_LEVELS)),4,1)
+BOARD_BAND_LINES = $(if $(filter-out 0,$(AA_LEVELS)),4,1)

@@ -51,7 +51,9 @@ BOARD_RUN_AA   := 0
 PICO_DISPLAY   ?= st7789
 # PANEL (st7789): 320x240 (Pimoroni's Pico Display Pack 2.0, default) or
 # 240x240 (the square 1.3" modules); PANEL_FLIP=1 turns the picture by
-# 180 degrees, for a module mounted the other way up (st7789.c)
+# 180 degrees, for a module mounted the other way up (st7789.c). A frame
+# (SIZE, else the scene's resolution) larger than the panel does not
+# build; a smaller one is centred on the panel, cleared to black first.
 PANEL          ?= 320x240
 PANEL_FLIP     ?= 0
 ifeq ($(PICO_DISPLAY),st7789)
@@ -64,9 +66,11 @@ endif
 BOARD_SINK     := platform/pico/st7789.c
 BOARD_SINK_CALLBACKS := panel_begin,panel_flush,transfer_wait,panel_end
 BOARD_CFLAGS   += -DPANEL_WIDTH=$(word 1,$(subst x, ,$(PANEL))) -DPANEL_HEIGHT=$(word 2,$(subst x, ,$(PANEL))) -DPANEL_FLIP=$(PANEL_FLIP)
+BOARD_PANEL    := $(PANEL)
+BOARD_PANEL_NAME := $(PANEL) panel (PANEL=$(PANEL))
 FW_FORMAT      := rgb565be
 # two band buffers of 4 lines (st7789.c splits the one main.c gives it)
-BAND_LINES     ?= 8
+BOARD_BAND_LINES := 8
 else ifneq ($(PICO_DISPLAY),uart)
 $(error PICO_DISPLAY=$(PICO_DISPLAY): st7789 or uart)
 endif
@@ -90,7 +94,7 @@ endif
 # serves the fixed layer)
 BOARD_BENCH_VARIANTS := PICO_DIVIDER=0
 # the build folder's name says the choices that are not the defaults
-BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart,$(if $(filter-out 320x240,$(PANEL)),-$(PANEL))$(if $(filter 1,$(PANEL_FLIP)),-flip))$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)$(if $(PICO_OMIT),-omit_$(PICO_OMIT))
+BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart,$(if $(filter-out 320x240,$(PANEL)),-panel$(PANEL))$(if $(filter 1,$(PANEL_FLIP)),-flip))$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)$(if $(PICO_OMIT),-omit_$(PICO_OMIT))
 ifneq ($(filter profile,$(MAKECMDGOALS)),)
 $(error make profile traces under QEMU, which has no RP2040: BOARD=microbit profiles the same ARMv6-M code)
 endif

@@ -4,7 +4,8 @@
 #    runs it), padded to 252 bytes and followed by its CRC (uf2.mjs), as
 #    the .boot2 section that link.ld puts first in flash;
 #  - <backend>.uf2 beside each ELF: its flash image as UF2 blocks for the
-#    RPI-RP2 drive (family RP2040), checked as it is written;
+#    RPI-RP2 drive (family RP2040), checked as it is written, and, with
+#    the panel, that it draws the frame make built it for on that panel;
 #  - make uf2, the same as make image: that file copied to out/, as
 #    make run does, and checked.
 PICO_BOOT2 := build/board/pico/boot2
@@ -33,7 +34,7 @@ $(FW_DIR)/%.bin: $(FW_DIR)/%.elf
 $(FW_DIR)/%.uf2: $(FW_DIR)/%.bin platform/pico/uf2.mjs
 	$(show) UF2 $@
 	$(Q)node platform/pico/uf2.mjs pack $< $@
-	@node platform/pico/uf2.mjs check $@ >/dev/null
+	@node platform/pico/uf2.mjs check $@ $(if $(filter st7789,$(PICO_DISPLAY)),--expect "frame $(SIZE) centred on the $(PANEL) ST7789 panel") >/dev/null
 
 # make uf2: make image by the name Pico users look for
 uf2: image

@@ -17,7 +17,11 @@
 //       (WFI) with nothing left that could wake it. Prints the report (RT
 //       receive) and writes OUT.png: from the UART stream when the console
 //       opens with a frame (the stream sink), else from the panel (the
-//       ST7789 sink, whose report gives frame_width and frame_height).
+//       ST7789 sink, whose report gives frame_width and frame_height): the
+//       frame centred on the module's picture, every other pixel of which
+//       must be black (the firmware clears the panel first); the whole
+//       picture goes to FIRMWARE.panel.stream (rt's stream format), the
+//       frame to OUT.png.
 //       Then the runner's own counts of the render (below), the clocks at
 //       the end, the render's time at CLOCK_HZ from the firmware's
 //       render_cycles, and the host's wall time.
@@ -31,9 +35,9 @@
 //       it would have with its code and scene tables in flash (slower).
 //       Also prints the LED's (GP25) state at the end.
 //   node run.mjs --panel FIRMWARE.spi W H OUT.stream [PANEL [FLIP]]
-//       Only the panel's decoding: the top left WxH pixels of the module's
-//       picture as an rgb565be frame in rt's stream format
-//       (platform/firmware/sink.h).
+//       Only the panel's decoding: the WxH frame centred on the module's
+//       picture, the rest checked black, as an rgb565be frame in rt's
+//       stream format (platform/firmware/sink.h).
 //
 // The chip's state at boot2's start: every block of RESETS in reset but
 // IO_QSPI and PADS_QSPI (the ROM's), RESET_DONE its complement; clk_sys
@@ -74,7 +78,7 @@
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { RP2040 } from 'rp2040js';
-import { PANELS, decodePanel, panelStream } from './st7789.mjs';
+import { PANELS, checkBorder, decodePanel, panelStream } from './st7789.mjs';
 import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
 const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20, PIN_LED = 25;
@@ -534,7 +538,9 @@ const argv = process.argv.slice(2);
 if (argv[0] === '--panel') {
   const [, log, w, h, out, panel = '320x240', flip = '0'] = argv;
   try {
-    writeFileSync(out, panelStream(decodePanel(readFileSync(log), panel, Number(flip)), Number(w), Number(h)));
+    const picture = decodePanel(readFileSync(log), panel, Number(flip));
+    const [x0, y0] = checkBorder(picture, Number(w), Number(h));
+    writeFileSync(out, panelStream(picture, Number(w), Number(h), x0, y0));
   } catch (e) {
     fail(e.message);
   }
@@ -617,13 +623,18 @@ if (r.markSym === undefined) {
 }
 if (!streamed) {
   if (value('frame_width') === undefined) fail(`${base}.serial: neither a frame nor a panel's frame_width in the report`);
+  const fw = Number(value('frame_width')), fh = Number(value('frame_height'));
   try {
-    writeFileSync(`${base}.panel.stream`, panelStream(decodePanel(r.spi, module[0], module[1]), Number(value('frame_width')), Number(value('frame_height'))));
+    const picture = decodePanel(r.spi, module[0], module[1]);
+    const [x0, y0] = checkBorder(picture, fw, fh);
+    writeFileSync(`${base}.panel.stream`, panelStream(picture));
+    writeFileSync(`${base}.frame.stream`, panelStream(picture, fw, fh, x0, y0));
+    console.log(`panel ${module[0]}${module[1] ? ' flipped' : ''} as the glass shows it: the ${fw}x${fh} frame at ${x0},${y0}, every other pixel black (${base}.panel.stream)`);
   } catch (e) {
     fail(`${base}.spi: ${e.message}`);
   }
   if (!r.backlight) fail(`the backlight (GP${PIN_BACKLIGHT}) is off at the end: the panel shows nothing`);
-  const img = receive(rt, [`${base}.panel.stream`, '-o', out]);
+  const img = receive(rt, [`${base}.frame.stream`, '-o', out]);
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);
 }

@@ -41,10 +41,14 @@
  * Per band: wait for the last transfer, then CASET and RASET (the band's
  * window, with the panel's offset), RAMWR and the band's bytes by DMA
  * channel 0 paced by SPI0's transmit request; chip select rises when the
- * transfer is done. A frame smaller than the panel is drawn at its top
- * left; the sink then reports frame_width and frame_height, which tell
- * run.mjs what part of the panel to take. A progress line goes to the
- * UART at each tenth of the frame, and the LED toggles at each band.
+ * transfer is done. Before the first band the whole panel is cleared to
+ * black (one window, the same zero byte sent by DMA for every pixel), and
+ * a frame smaller than the panel is centred on it (board.mk refuses a
+ * larger one at build time); the sink then reports frame_width,
+ * frame_height and a line naming the frame and the panel (PANEL_INFO,
+ * which uf2.mjs check also finds in the image), which tell run.mjs where
+ * the frame is. A progress line goes to the UART at each tenth of the
+ * frame, and the LED toggles at each band.
  *
  * Checked against run.mjs's model of the controller (st7789.mjs), not on
  * hardware: docs/boards.md, "On a real Pico", says what only a real
@@ -79,6 +83,19 @@ _Static_assert((PANEL_WIDTH == 320 || PANEL_WIDTH == 240) && PANEL_HEIGHT == 240
 
 #if defined(BOARD_WIDTH) && defined(BOARD_HEIGHT)
 _Static_assert(BOARD_WIDTH <= PANEL_WIDTH && BOARD_HEIGHT <= PANEL_HEIGHT, "the frame is larger than the panel (SIZE, PANEL)");
+#define STR_(x) #x
+#define STR(x) STR_(x)
+/* the frame and the panel, as the report's line and as bytes of the
+ * flash image that uf2.mjs check prints ("panel: " starts it) */
+#define PANEL_INFO                                                                                                   \
+    "panel: frame " STR(BOARD_WIDTH) "x" STR(BOARD_HEIGHT) " centred on the " STR(PANEL_WIDTH) "x" STR(PANEL_HEIGHT) \
+    " ST7789 panel" PANEL_INFO_FLIP ", the rest black"
+#if PANEL_FLIP
+#define PANEL_INFO_FLIP " (flipped)"
+#else
+#define PANEL_INFO_FLIP ""
+#endif
+static const char panel_info[] = PANEL_INFO;
 #endif
 #ifdef RT_FB_ONLY_FORMAT
 _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be pixels (FW_FORMAT in board.mk)");
@@ -126,7 +143,7 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 
 #define CYCLES_PER_MS (CLK_SYS_HZ / 1000u)
 
-static uint16_t frame_width, frame_height;
+static uint16_t frame_width, frame_height, frame_x, frame_y;
 static uint64_t frame_start;
 
 static void delay_ms(uint32_t ms)
@@ -178,12 +195,34 @@ static void transfer_wait(rt_fb_sink_t *s)
     sink_io_end();
 }
 
+/* The whole panel black, so that nothing but black surrounds a smaller
+ * frame: one window, the same zero byte (black, with INVON) sent by DMA
+ * without read increment for every byte. */
+static void panel_clear(void)
+{
+    static const uint8_t black = 0;
+    command16x2(ST_CASET, 0, PANEL_WIDTH - 1);
+    command16x2(ST_RASET, PANEL_ROW_OFFSET, PANEL_ROW_OFFSET + PANEL_HEIGHT - 1);
+    start_command(ST_RAMWR);
+    DMA_READ_ADDR = (uint32_t)(uintptr_t)&black;
+    DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
+    DMA_TRANS_COUNT = (uint32_t)PANEL_WIDTH * PANEL_HEIGHT * 2u;
+    DMA_CTRL_TRIG = DMA_EN | DMA_CHAIN_TO_SELF | DMA_TREQ_SPI0_TX;
+    while (DMA_CTRL_TRIG & DMA_BUSY)
+        ;
+    pl022_idle(SPI0);
+    PL022_ICR(SPI0) = 1u;
+    release_panel();
+}
+
 static int panel_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
 {
     if (s->format != RT_FB_RGB565BE || w > PANEL_WIDTH || h > PANEL_HEIGHT)
         return 1;
     frame_width = w;
     frame_height = h;
+    frame_x = (uint16_t)((PANEL_WIDTH - w) / 2u);
+    frame_y = (uint16_t)((PANEL_HEIGHT - h) / 2u);
     frame_start = board_cycles();
     return 0;
 }
@@ -193,8 +232,8 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     (void)s;
     sink_io_begin();
     /* the other buffer's transfer is done: the core waited for it */
-    command16x2(ST_CASET, a->x1, a->x2);
-    command16x2(ST_RASET, a->y1 + PANEL_ROW_OFFSET, a->y2 + PANEL_ROW_OFFSET);
+    command16x2(ST_CASET, frame_x + a->x1, frame_x + a->x2);
+    command16x2(ST_RASET, PANEL_ROW_OFFSET + frame_y + a->y1, PANEL_ROW_OFFSET + frame_y + a->y2);
     start_command(ST_RAMWR); /* the panel stays selected: transfer_wait() releases it */
     DMA_READ_ADDR = (uint32_t)(uintptr_t)px;
     DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
@@ -214,6 +253,9 @@ static int panel_end(rt_fb_sink_t *s)
     report_value("frame_ms", (board_cycles() - frame_start + CYCLES_PER_MS / 2) / CYCLES_PER_MS);
     report_value("frame_width", frame_width);
     report_value("frame_height", frame_height);
+#ifdef BOARD_WIDTH
+    report_text(panel_info);
+#endif
     sink_io_end();
     return 0;
 }
@@ -254,6 +296,7 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
     command(ST_INVON, 0, 0);
     command(ST_NORON, 0, 0);
     command(ST_DISPON, 0, 0);
+    panel_clear(); /* before the backlight: what the memory held at power-up is never seen */
     SIO_GPIO_OUT_SET = 1u << PIN_BACKLIGHT;
 
     /* two band buffers: the core renders into one while DMA sends the other */

@@ -156,16 +156,41 @@ function unwritten(picture, x, y) {
   return new Error(`panel pixel ${x},${y} of the frame was never written${hint}`);
 }
 
-// The top left w x h of the module's picture as rt's stream: header, one
-// band, end (the stream format of platform/firmware/sink.h).
-export function panelStream(picture, w, h) {
+// Where a w x h frame sits on the module's picture: centred (st7789.c),
+// rounded towards the top left.
+export function frameOrigin(picture, w, h) {
   const { width, height } = picture;
   if (!(w >= 1 && w <= width && h >= 1 && h <= height)) throw new Error(`a ${w}x${h} frame is not on the ${width}x${height} panel`);
+  return [(width - w) >> 1, (height - h) >> 1];
+}
+
+// Every pixel of the picture outside the centred w x h frame was written
+// and is black (the firmware clears the panel first): else what the glass
+// shows around the frame is whatever the memory held at power-up.
+export function checkBorder(picture, w, h) {
+  const { width, height } = picture, [x0, y0] = frameOrigin(picture, w, h);
+  for (let y = 0; y < height; y++)
+    for (let x = 0; x < width; x++) {
+      if (x >= x0 && x < x0 + w && y >= y0 && y < y0 + h) continue;
+      const i = y * width + x;
+      if (!picture.written[i]) throw new Error(`panel pixel ${x},${y}, outside the ${w}x${h} frame at ${x0},${y0}, was never written: the panel was not cleared`);
+      if (picture.pixels[2 * i] | picture.pixels[2 * i + 1])
+        throw new Error(`panel pixel ${x},${y}, outside the ${w}x${h} frame at ${x0},${y0}, is 0x${(picture.pixels[2 * i] << 8 | picture.pixels[2 * i + 1]).toString(16).padStart(4, '0')}, not black`);
+    }
+  return [x0, y0];
+}
+
+// The w x h of the module's picture at x0, y0 (the whole panel by
+// default) as rt's stream: header, one band, end (the stream format of
+// platform/firmware/sink.h).
+export function panelStream(picture, w = picture.width, h = picture.height, x0 = 0, y0 = 0) {
+  const { width, height } = picture;
+  if (!(w >= 1 && x0 >= 0 && x0 + w <= width && h >= 1 && y0 >= 0 && y0 + h <= height)) throw new Error(`a ${w}x${h} frame at ${x0},${y0} is not on the ${width}x${height} panel`);
   const px = new Uint8Array(w * h * 2);
   for (let y = 0; y < h; y++)
     for (let x = 0; x < w; x++) {
-      const i = y * width + x;
-      if (!picture.written[i]) throw unwritten(picture, x, y);
+      const i = (y0 + y) * width + x0 + x;
+      if (!picture.written[i]) throw unwritten(picture, x0 + x, y0 + y);
       px[2 * (y * w + x)] = picture.pixels[2 * i];
       px[2 * (y * w + x) + 1] = picture.pixels[2 * i + 1];
     }

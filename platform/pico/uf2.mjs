@@ -11,13 +11,17 @@
 //       IMAGE.bin (a flat image for BASE, default 0x10000000) as UF2: one
 //       512-byte block per 256 bytes, family RP2040 (0xe48bff56). The last
 //       block's 256 bytes are padded with 0xff, as erased flash reads.
-//   node uf2.mjs check FILE.uf2
+//   node uf2.mjs check FILE.uf2 [--expect TEXT]
 //       Every block (magics, flags, family, payload size, contiguous
 //       addresses from 0x10000000 within the 2 MiB flash, block numbers,
 //       block count), the boot2 CRC the boot ROM checks, and the vector
 //       table at 0x10000100 that boot2 starts (initial SP in SRAM, reset
-//       vector a thumb address in the image or SRAM). Prints one line; on
-//       a failure prints what is wrong to stderr and exits 1.
+//       vector a thumb address in the image or SRAM). Prints one line,
+//       ending with what the image says it draws (st7789.c's "panel: frame
+//       WxH centred on the WxH ST7789 panel..." string, found in its
+//       bytes) when it says it; --expect: that string must contain TEXT
+//       (image.mk passes the frame and panel it built for). On a failure
+//       prints what is wrong to stderr and exits 1.
 //
 // Formats (all words little-endian):
 //   UF2 block, 512 bytes: magic 0x0A324655, magic 0x9E5D5157, flags
@@ -165,7 +169,18 @@ export function checkImage(name, img) {
   const inImage = entry >= base + BOOT2_SIZE && entry < base + bytes.length;
   const inSram = entry >= SRAM_BASE && entry < SRAM_END;
   if (!inImage && !inSram) throw vbad(`reset vector ${hex(reset)} points neither into the image (${hex(base)}..${hex(base + bytes.length - 1)}) nor into SRAM`);
-  return `${name}: ${blocks} blocks, ${bytes.length} bytes at ${hex(base)}..${hex(base + bytes.length - 1)}, family ${hex(UF2_FAMILY_RP2040)} (RP2040), boot2 CRC ${hex(crc.stored)} ok, SP ${hex(sp)}, reset ${hex(reset)}`;
+  const info = imageInfo(bytes);
+  return `${name}: ${blocks} blocks, ${bytes.length} bytes at ${hex(base)}..${hex(base + bytes.length - 1)}, family ${hex(UF2_FAMILY_RP2040)} (RP2040), boot2 CRC ${hex(crc.stored)} ok, SP ${hex(sp)}, reset ${hex(reset)}${info ? `; ${info}` : ''}`;
+}
+
+// What the image says it draws: the NUL-terminated string that starts
+// with "panel: frame " in its bytes (st7789.c's PANEL_INFO), or null.
+export const INFO_PREFIX = 'panel: frame ';
+export function imageInfo(bytes) {
+  const at = Buffer.from(bytes.buffer, bytes.byteOffset, bytes.length).indexOf(INFO_PREFIX, 0, 'latin1');
+  if (at < 0) return null;
+  const end = bytes.indexOf(0, at);
+  return Buffer.from(bytes.buffer, bytes.byteOffset + at, (end < 0 ? bytes.length : end) - at).toString('latin1');
 }
 
 function main(argv) {
@@ -173,7 +188,7 @@ function main(argv) {
     console.error(msg);
     process.exit(1);
   };
-  const usage = 'usage: uf2.mjs boot2 BOOT2.bin OUT.S | pack IMAGE.bin OUT.uf2 [BASE] | check FILE.uf2';
+  const usage = 'usage: uf2.mjs boot2 BOOT2.bin OUT.S | pack IMAGE.bin OUT.uf2 [BASE] | check FILE.uf2 [--expect TEXT]';
   try {
     crcSelfCheck();
     const [cmd, ...args] = argv;
@@ -188,9 +203,14 @@ function main(argv) {
       const image = readFileSync(args[0]);
       if (image.length === 0) fail(`${args[0]}: empty image`);
       writeFileSync(args[1], packUf2(image, base));
-    } else if (cmd === 'check' && args.length === 1) {
-      const name = args[0];
-      console.log(checkImage(name, readUf2(readFileSync(name), name)));
+    } else if (cmd === 'check' && (args.length === 1 || (args.length === 3 && args[1] === '--expect'))) {
+      const name = args[0], img = readUf2(readFileSync(name), name);
+      const line = checkImage(name, img);
+      if (args.length === 3) {
+        const info = imageInfo(img.bytes);
+        if (!info || !info.includes(args[2])) fail(`${name}: the image says ${info ? `"${info}"` : 'nothing of its frame and panel'}, not "${args[2]}"`);
+      }
+      console.log(line);
     } else {
       fail(usage);
     }

@@ -4,7 +4,8 @@
  *
  *  - Clocks (clock.c): the PLL from the crystal, or from the HSI when
  *    no crystal answers, to 168 MHz (84 MHz on a Nucleo-64), with the
- *    flash wait states, prefetch and caches set first. When the PLL does
+ *    flash wait states, prefetch (not on a revision A F405/F407) and
+ *    caches set first. When the PLL does
  *    not lock or SYSCLK does not switch (QEMU, whose RCC reads 0), the
  *    render runs on at the reset clock, HSI 16 MHz, and the report says
  *    so.

@@ -53,6 +53,10 @@
 #define FLASH_ACR_ICEN (1u << 9)
 #define FLASH_ACR_DCEN (1u << 10)
 
+/* DBGMCU_IDCODE: DEV_ID in bits 11:0, REV_ID in bits 31:16 (in the
+ * private peripheral bus: readable without a clock enable) */
+#define DBGMCU_IDCODE STM32_REG(0xe0042000u)
+
 /* Polls before a wait gives up: the crystal's start-up is 2 ms at most
  * (about 8,000 polls at 16 MHz); the PLL locks in 0.1 ms. */
 #define WAIT_POLLS 200000u
@@ -62,9 +66,10 @@
 typedef enum { CLOCK_PLL_HSE, CLOCK_PLL_HSI, CLOCK_HSI } clock_source_t;
 
 /* The PLL from the crystal, or from the HSI when the crystal does not
- * start; flash wait states, prefetch and caches, the APB dividers, then
- * SYSCLK onto the PLL. Every wait bounded; on failure SYSCLK stays on
- * the HSI, where reset left it. Returns where it ended. */
+ * start; flash wait states, prefetch (not on a revision A F405/F407) and
+ * caches, the APB dividers, then SYSCLK onto the PLL. Every wait
+ * bounded; on failure SYSCLK stays on the HSI, where reset left it.
+ * Returns where it ended. */
 clock_source_t clocks_init(void);
 
 /* SYSCLK, and the clock of APB bus 1 or 2, in Hz, once clocks_init()

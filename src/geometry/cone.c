@@ -14,10 +14,8 @@ const char *cone_init(cone_t *c, vec3_t base, real_t r_base, vec3_t apex, real_t
         return "cone base and apex are the same point";
     if (c->r0 == 0 && r_apex == 0)
         return "cone radii are both zero";
-    /* a cone flatter than this is an annulus to within the fixed
-     * precision, and its slope would overflow the intersection sums */
-    if (r_mul(r_abs(r_abs(r_apex) - c->r0), R_RATIO(1, 256)) > c->height)
-        return "cone too flat for the fixed range (radius change over 256 times its height)";
+    /* the reader rejects a cone flatter than a radius change of 256
+     * times its height, on the position grid (nff.c, read_cone) */
     c->slope = r_div(r_abs(r_apex) - c->r0, c->height);
     real_t half = c->height / 2, rmax = r_max(c->r0, r_abs(r_apex));
     c->bound_centre = v3_madd(base, half, c->axis);

@@ -1,26 +1,6 @@
 /* polygon.c - the 'p' (polygon) and 'pp' (patch) primitives. */
 #include "geometry.h"
 
-static bool is_zero(real_wide_t x, real_wide_t y, real_wide_t z) { return x == 0 && y == 0 && z == 0; }
-
-bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count)
-{
-    const vec3_t *v = &pool[first];
-    uint16_t k = 1;
-    while (k < count && v[k].x == v[0].x && v[k].y == v[0].y && v[k].z == v[0].z)
-        k++;
-    if (k == count)
-        return true;
-    vec3_t a = v3_sub(v[k], v[0]);
-    for (uint16_t i = k + 1; i < count; i++) {
-        vec3_t b = v3_sub(v[i], v[0]);
-        if (!is_zero(r_wmul(a.y, b.z) - r_wmul(a.z, b.y), r_wmul(a.z, b.x) - r_wmul(a.x, b.z),
-                     r_wmul(a.x, b.y) - r_wmul(a.y, b.x)))
-            return false;
-    }
-    return true;
-}
-
 /* A point projected on the polygon's plane of largest extent. */
 typedef struct {
     real_t u, v;
@@ -79,7 +59,7 @@ static bool axis_rect(const polygon_t *p, const vec3_t *v, uint16_t count, uint3
 }
 
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
-                         uint32_t normals, uint16_t material)
+                         uint32_t normals, uint16_t material, vec3_t grid_normal)
 {
     const vec3_t *v = &pool[first];
     p->first = first;
@@ -87,6 +67,8 @@ const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint1
     p->normals = normals;
     p->material = material;
     p->normal = v3_unit_cross(v3_sub(v[1], v[0]), v3_sub(v[2], v[1]));
+    if (p->normal.x == 0 && p->normal.y == 0 && p->normal.z == 0)
+        p->normal = v3_unit(grid_normal);
     if (p->normal.x == 0 && p->normal.y == 0 && p->normal.z == 0)
         return "polygon's first three vertices are collinear";
     p->offset = v3_dot(p->normal, v[0]);

@@ -23,12 +23,12 @@
     X(uint8_t, rect, )     /* fixed build: an axis rectangle, see axis_rect */
 typedef struct { FIELDS_polygon_t(RT_DECLARE_FIELD) } polygon_t;
 
-/* True when all the polygon's vertices lie on one line (it has no area and
- * can never be hit; the SPD teapot has a few such triangles). */
-bool polygon_is_flat(const vec3_t *pool, uint32_t first, uint16_t count);
-/* NULL, or why the polygon is degenerate. */
+/* NULL, or why the polygon is degenerate. The reader decides that (its
+ * vertices on one line, its first three collinear) on the position grid
+ * and passes the first three's normal there, grid_normal (any size): the
+ * normal where this build's rounded vertices make the cross product zero. */
 const char *polygon_init(polygon_t *p, const vec3_t *pool, uint32_t first, uint16_t count,
-                         uint32_t normals, uint16_t material);
+                         uint32_t normals, uint16_t material, vec3_t grid_normal);
 
 /* As ray_hit_sphere (sphere.h); a ray never meets the plane it leaves. */
 bool ray_hit_polygon(const scene_t *sc, const polygon_t *p, const ray_t *r, real_t tmin,

@@ -34,10 +34,8 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
     s->hi = hi;
     if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
         return "quadric clip box is empty (need x0 < x1, y0 < y1, z0 < z1)";
-    /* object-space coordinates must stay well inside the fixed range */
-    if (r_max(r_max(r_abs(lo.x), r_abs(hi.x)), r_max(r_max(r_abs(lo.y), r_abs(hi.y)), r_max(r_abs(lo.z), r_abs(hi.z)))) >
-        R_RATIO(64, 1))
-        return "quadric too long for the fixed range (its clip box reaches over 64 times its radii)";
+    /* the reader keeps the clip box within 64 of the origin, decided on
+     * the position grid (nff_solids.c) */
     s->bound = corner_radius(lo, hi);
     /* an ellipsoid sum A_i (x_i - c_i)^2 <= K inside the clip box needs no
      * clipping, and its own box and bound are tighter */

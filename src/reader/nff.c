@@ -26,8 +26,38 @@ static bool view_key(reader_t *r, const char *key)
     if (!lex_next(&r->lx))
         return false;
     if (!lex_is(&r->lx, key))
-        return lex_fail_tok(&r->lx, "v: expected ", key);
+        return lex_fail_missing(&r->lx, "v: expected ", key);
     return true;
+}
+
+/* 'from' and 'at' less than this many steps of the position grid apart
+ * (in every coordinate) are one point: further apart, they are distinct
+ * points to every build, also to the float build, whose spacing out at
+ * the camera's extent is 2^(RT_FAR_EXTENT_LOG2 - 24), 32 steps. */
+#define VIEW_MIN_STEPS 64
+_Static_assert(VIEW_MIN_STEPS - 1 > (1 << (RT_FAR_EXTENT_LOG2 - 24 + FX_FRAC_BITS)),
+               "two points VIEW_MIN_STEPS apart on the grid are more than a float spacing apart");
+
+/* The view's degenerate cases, decided on the grid (the same integers in
+ * every build; docs/scenes.md): NULL, or why there is no camera. *cross
+ * is (at - from) x up on the grid, exact (|at - from| < 2^30 steps, |up|
+ * < 2^24). */
+static const char *view_degenerate(const int32_t from[3], const int32_t at[3], const int32_t up[3],
+                                   int64_t fwd[3], int64_t cross[3])
+{
+    bool same = true;
+    int64_t up64[3];
+    for (int i = 0; i < 3; i++) {
+        fwd[i] = (int64_t)at[i] - from[i];
+        same = same && fwd[i] < VIEW_MIN_STEPS && fwd[i] > -VIEW_MIN_STEPS;
+        up64[i] = up[i];
+    }
+    if (same)
+        return "view: 'from' and 'at' are the same point (under 64 steps of the position grid apart)";
+    rd_cross(fwd, up64, cross);
+    if (cross[0] == 0 && cross[1] == 0 && cross[2] == 0)
+        return "view: 'up' is zero or parallel to the view direction";
+    return 0;
 }
 
 static bool read_view(reader_t *r)
@@ -35,15 +65,17 @@ static bool read_view(reader_t *r)
     view_t *v = &r->st->scene.view;
     uint32_t line = r->lx.tok_line, w = 0, h = 0;
     real_t hither; /* ignored by the model */
+    int32_t from_g[3], at_g[3], up_g[3];
     if (r->have_view)
         return lex_fail(&r->lx, line, "v: a second viewpoint");
     r->far = true;
-    bool ok = view_key(r, "from") && rd_pos3(r, "from", &v->from);
+    bool ok = view_key(r, "from") && rd_pos3_grid(r, "from", &v->from, from_g);
     r->far = false;
-    bool zero; /* camera_init reports a zero 'up' */
+    bool zero; /* a zero 'up' is a parallel one */
     decimal_t a;
-    if (!ok || !view_key(r, "at") || !rd_pos3(r, "at", &v->at) || !view_key(r, "up") ||
-        !lex_direction(&r->lx, "up", &v->up, &zero) || !view_key(r, "angle") || !lex_decimal(&r->lx, "angle", &a))
+    if (!ok || !view_key(r, "at") || !rd_pos3_grid(r, "at", &v->at, at_g) || !view_key(r, "up") ||
+        !lex_direction_grid(&r->lx, "up", &v->up, &zero, up_g) || !view_key(r, "angle") ||
+        !lex_decimal(&r->lx, "angle", &a))
         return false;
     /* 0 < angle < 180 as every build resolves it: 2^-21 (half the fixed
      * build's unit) from each end, decided on the value */
@@ -62,10 +94,24 @@ static bool read_view(reader_t *r)
     r->have_view = true;
     if (r->measuring)
         return true;
-    camera_t cam;
-    const char *why = camera_init(&cam, v, r->st->scene.width, r->st->scene.height);
+    int64_t fwd[3], cross[3];
+    const char *why = view_degenerate(from_g, at_g, up_g, fwd, cross);
     if (why)
         return lex_fail(&r->lx, line, why);
+    camera_t cam;
+    if (camera_init(&cam, v, r->st->scene.width, r->st->scene.height)) {
+        /* the build's rounding made `up` parallel where the grid's is not
+         * (a few steps off the view direction): `up` as the component of
+         * the grid's up across the view, which no rounding makes parallel */
+        int64_t c[3], f[3], p[3];
+        rd_cut(cross, c);
+        rd_cut(fwd, f);
+        rd_cross(c, f, p);
+        v->up = rd_direction(p);
+        why = camera_init(&cam, v, r->st->scene.width, r->st->scene.height);
+        if (why) /* not expected: the grid's verdict stands for every build */
+            return lex_fail(&r->lx, line, why);
+    }
     return true;
 }
 
@@ -173,8 +219,18 @@ static bool read_cone(reader_t *r)
         return true;
     if (gb[0] == ga[0] && gb[1] == ga[1] && gb[2] == ga[2])
         return lex_fail(&r->lx, line, "cone base and apex are the same point");
-    if (rd_grid(r, &db) == 0 && rd_grid(r, &da) == 0)
+    int32_t rb_g = rd_grid(r, &db), ra_g = rd_grid(r, &da);
+    if (rb_g == 0 && ra_g == 0)
         return lex_fail(&r->lx, line, "cone radii are both zero");
+    /* too flat: the radii differ by over 256 times the height, on the
+     * grid: dr^2 > 2^16 h^2, exact in 64 bits (geometry stays below 2^24
+     * steps); flatter, it is an annulus to within the fixed precision, and
+     * its slope would overflow the intersection sums */
+    int64_t dr = (int64_t)(ra_g < 0 ? -ra_g : ra_g) - (rb_g < 0 ? -rb_g : rb_g), h2 = 0;
+    for (int i = 0; i < 3; i++)
+        h2 += ((int64_t)ga[i] - gb[i]) * ((int64_t)ga[i] - gb[i]);
+    if (h2 < ((int64_t)1 << 46) && dr * dr > h2 * 65536)
+        return lex_fail(&r->lx, line, "cone too flat for the fixed range (radius change over 256 times its height)");
     const char *why = cone_init(&r->st->cones[sc->n_cones], base, rb, apex, ra, r->material);
     if (why)
         return lex_fail(&r->lx, line, why);
@@ -198,10 +254,37 @@ static bool read_polygon(reader_t *r, bool patch)
         return lex_over_capacity(&r->lx, "vertices", "RT_MAX_VERTICES", RT_MAX_VERTICES);
     if (!r->measuring && patch && n > RT_MAX_VERTICES - sc->n_normals)
         return lex_over_capacity(&r->lx, "patch normals", "RT_MAX_VERTICES", RT_MAX_VERTICES);
+    /* on the grid: the first three vertices' edges and their cross
+     * product (exact: edges below 2^25 steps); area once any vertex is
+     * off the line of the first two distinct ones */
+    int64_t g0[3] = { 0 }, e[3][3] = { { 0 } }, first3[3] = { 0 };
+    bool have_line = false, area = false;
     for (uint32_t i = 0; i < n; i++) {
         vec3_t scratch;
-        if (!rd_pos3(r, what, r->measuring ? &scratch : &r->st->vertices[sc->n_vertices + i]))
+        int32_t g[3];
+        if (!rd_pos3_grid(r, what, r->measuring ? &scratch : &r->st->vertices[sc->n_vertices + i], g))
             return false;
+        int64_t d[3], c[3];
+        for (int k = 0; k < 3; k++) {
+            if (i == 0)
+                g0[k] = g[k];
+            d[k] = g[k] - g0[k];
+        }
+        if (i == 1 || i == 2)
+            for (int k = 0; k < 3; k++)
+                e[i][k] = d[k];
+        if (i == 2) {
+            int64_t a[3] = { e[1][0], e[1][1], e[1][2] }, b[3] = { e[2][0] - a[0], e[2][1] - a[1], e[2][2] - a[2] };
+            rd_cross(a, b, first3); /* (v1 - v0) x (v2 - v1) */
+        }
+        if (!have_line) {
+            have_line = d[0] != 0 || d[1] != 0 || d[2] != 0;
+            for (int k = 0; have_line && k < 3; k++)
+                e[0][k] = d[k];
+        } else if (!area) {
+            rd_cross(e[0], d, c);
+            area = c[0] != 0 || c[1] != 0 || c[2] != 0;
+        }
         if (patch) {
             vec3_t nv;
             bool zero;
@@ -217,13 +300,15 @@ static bool read_polygon(reader_t *r, bool patch)
     }
     if (r->measuring)
         return true;
-    if (polygon_is_flat(r->st->vertices, sc->n_vertices, (uint16_t)n)) {
+    if (!area) {
         sc->n_flat_skipped++; /* invisible: nothing to intersect */
         return true;
     }
+    if (first3[0] == 0 && first3[1] == 0 && first3[2] == 0)
+        return lex_fail(&r->lx, line, "polygon's first three vertices are collinear");
     const char *why = polygon_init(&r->st->polygons[sc->n_polygons], r->st->vertices,
                                    sc->n_vertices, (uint16_t)n,
-                                   patch ? sc->n_normals : POLY_NO_NORMALS, r->material);
+                                   patch ? sc->n_normals : POLY_NO_NORMALS, r->material, rd_direction(first3));
     if (why)
         return lex_fail(&r->lx, line, why);
     sc->n_vertices += n;

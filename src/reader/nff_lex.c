@@ -10,6 +10,8 @@
  */
 #include "nff_lex.h"
 
+#include "numeric/fx.h"
+
 void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err)
 {
     *lx = (lexer_t){ 0 };
@@ -28,9 +30,9 @@ bool lex_fail(lexer_t *lx, uint32_t line, const char *msg)
     return false;
 }
 
-bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg)
+static bool fail_at(lexer_t *lx, uint32_t line, const char *what, const char *msg)
 {
-    rt_error_set(lx->err, lx->tok_line, what);
+    rt_error_set(lx->err, line, what);
     rt_error_append(lx->err, msg);
     if (lx->tok == 0) {
         rt_error_append(lx->err, " (end of file)");
@@ -49,7 +51,22 @@ bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg)
     rt_error_append(lx->err, ", found '");
     rt_error_append(lx->err, q);
     rt_error_append(lx->err, "'");
+    if (line != lx->tok_line) {
+        rt_error_append(lx->err, " on line ");
+        rt_error_append_int(lx->err, (int32_t)lx->tok_line);
+    }
     return false;
+}
+
+bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg)
+{
+    return fail_at(lx, lx->tok_line, what, msg);
+}
+
+bool lex_fail_missing(lexer_t *lx, const char *what, const char *msg)
+{
+    /* at the end of input tok_line is still the last token's */
+    return fail_at(lx, lx->tok == 0 ? lx->tok_line : lx->prev_line, what, msg);
 }
 
 bool lex_out_of_range(lexer_t *lx, const char *what)
@@ -117,6 +134,7 @@ bool lex_next(lexer_t *lx)
         lx->tok_len = 0;
         return true;
     }
+    lx->prev_line = lx->tok_line;
     lx->tok_line = lx->line;
     lx->tok = lx->p;
     while (lx->p < lx->end && !is_space(*lx->p) && *lx->p != '#') {
@@ -131,15 +149,12 @@ bool lex_next(lexer_t *lx)
 
 bool lex_next_on_line(lexer_t *lx, bool *found)
 {
-    const char *save_p = lx->p;
-    uint32_t save_line = lx->line;
+    lexer_t save = *lx;
     if (!lex_next(lx))
         return false;
-    *found = lx->tok != 0 && lx->tok_line == save_line;
-    if (!*found) {
-        lx->p = save_p;
-        lx->line = save_line;
-    }
+    *found = lx->tok != 0 && lx->tok_line == save.line;
+    if (!*found)
+        *lx = save; /* the token stays the last one read */
     return true;
 }
 
@@ -207,7 +222,7 @@ static bool parse_decimal(const lexer_t *lx, decimal_t *d)
 bool lex_tok_decimal(lexer_t *lx, const char *what, const char *msg, decimal_t *d)
 {
     if (!parse_decimal(lx, d))
-        return lex_fail_tok(lx, what, msg);
+        return lex_fail_missing(lx, what, msg);
     return true;
 }
 
@@ -253,6 +268,11 @@ static int32_t decimal_log10_floor(const decimal_t *d)
 
 bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
 {
+    return lex_direction_grid(lx, what, v, zero, 0);
+}
+
+bool lex_direction_grid(lexer_t *lx, const char *what, vec3_t *v, bool *zero, int32_t grid[3])
+{
     decimal_t d[3];
     int32_t top = INT32_MIN;
     for (int i = 0; i < 3; i++) {
@@ -262,6 +282,8 @@ bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
             top = decimal_log10_floor(&d[i]);
     }
     *zero = top == INT32_MIN;
+    for (int i = 0; grid && i < 3; i++)
+        grid[i] = 0;
     if (*zero) {
         *v = v3(0, 0, 0);
         return true;
@@ -273,6 +295,8 @@ bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero)
         d[i].exp10 -= top;
         if (!lex_scalar(lx, what, &d[i], &c[i]))
             return false;
+        if (grid) /* below 10: in range */
+            (void)fx_from_decimal(d[i].neg, d[i].mant, d[i].exp10, FX_FRAC_BITS, INT32_MAX, &grid[i]);
     }
     *v = v3(c[0], c[1], c[2]);
     return true;

@@ -29,6 +29,7 @@ typedef struct {
     const char *p, *end;
     uint32_t line;      /* line of the current position */
     uint32_t tok_line;  /* line of the last token read */
+    uint32_t prev_line; /* line of the token before it */
     const char *tok;    /* the last token, NULL at the end of input */
     size_t tok_len;
     rt_error_t *err;
@@ -38,8 +39,13 @@ void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err);
 
 /* Errors: each sets lx->err and returns false. */
 bool lex_fail(lexer_t *lx, uint32_t line, const char *msg);
-/* "<what><msg>, found '<token>'" with the token shortened. */
+/* "<what><msg>, found '<token>'" with the token shortened, on the token's line. */
 bool lex_fail_tok(lexer_t *lx, const char *what, const char *msg);
+/* The same for a token an entity needed but did not get (a number, a
+ * field's name): on the line where the entity stopped short, the previous
+ * token's, naming the found token's line when it is a later one (most
+ * often the next entity's keyword: `s 0 1 1` then `f ...`). */
+bool lex_fail_missing(lexer_t *lx, const char *what, const char *msg);
 bool lex_out_of_range(lexer_t *lx, const char *what);
 bool lex_over_capacity(lexer_t *lx, const char *what, const char *macro, int32_t cap);
 
@@ -61,6 +67,9 @@ bool lex_count(lexer_t *lx, const char *what, uint32_t lo, uint32_t hi, uint32_t
  * 0, else the vector times a power of ten that brings its largest
  * component to 1..10 in size (not unit). */
 bool lex_direction(lexer_t *lx, const char *what, vec3_t *v, bool *zero);
+/* The same, and the direction as the fixed build holds it: on the
+ * position grid (2^-FX_FRAC_BITS), the same integers in every build. */
+bool lex_direction_grid(lexer_t *lx, const char *what, vec3_t *v, bool *zero, int32_t grid[3]);
 /* An exponent (Phong's, the sky's): 0 to RT_SHINE_MAX, or with `positive`
  * 2^RT_SHINE_MIN_LOG2 (the fixed build's least positive exponent) to
  * RT_SHINE_MAX; else the error msg. */

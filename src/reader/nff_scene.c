@@ -73,3 +73,34 @@ bool rd_need_material(reader_t *r, const char *what)
     rt_error_append(r->lx.err, " before any 'f' material line");
     return false;
 }
+
+void rd_cross(const int64_t a[3], const int64_t b[3], int64_t out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void rd_cut(const int64_t v[3], int64_t out[3])
+{
+    uint64_t top = 0;
+    for (int i = 0; i < 3; i++) {
+        uint64_t m = v[i] < 0 ? 0 - (uint64_t)v[i] : (uint64_t)v[i];
+        top = m > top ? m : top;
+    }
+    int64_t div = 1;
+    for (; top >= (uint64_t)1 << 20; top >>= 1)
+        div *= 2;
+    for (int i = 0; i < 3; i++)
+        out[i] = v[i] / div; /* toward zero: the same in every build */
+}
+
+vec3_t rd_direction(const int64_t v[3])
+{
+    int64_t c[3];
+    real_t x[3];
+    rd_cut(v, c);
+    for (int i = 0; i < 3; i++) /* |c| < 2^20: exact in every scalar */
+        (void)r_from_decimal_scaled(c[i] < 0, (uint64_t)(c[i] < 0 ? -c[i] : c[i]), 0, -20, &x[i]);
+    return v3(x[0], x[1], x[2]);
+}

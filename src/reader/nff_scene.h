@@ -61,6 +61,14 @@ bool rd_pos3(reader_t *r, const char *what, vec3_t *v);
  * that every build gives one verdict. */
 int32_t rd_grid(const reader_t *r, const decimal_t *d);
 bool rd_pos3_grid(reader_t *r, const char *what, vec3_t *v, int32_t g[3]);
+/* Exact integer vectors on the position grid, for the degenerate-shape
+ * verdicts every build shares (docs/scenes.md): a x b, exact while each
+ * |a_i b_j| < 2^62; v cut to its leading bits (the largest component
+ * below 2^20, keeping its direction to 2^-19); and a nonzero v as a
+ * direction every build holds exactly (v cut, times 2^-20). */
+void rd_cross(const int64_t a[3], const int64_t b[3], int64_t out[3]);
+void rd_cut(const int64_t v[3], int64_t out[3]);
+vec3_t rd_direction(const int64_t v[3]);
 /* The "<what> before any 'f' material line" error unless there is one. */
 bool rd_need_material(reader_t *r, const char *what);
 /* The innermost open block, or NULL. */

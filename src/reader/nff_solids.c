@@ -152,13 +152,15 @@ static bool add_shape(reader_t *r, shape_t *proto, const char *why, const vec3_t
     return place_solid(r, (uint16_t)sc->n_shapes++, line);
 }
 
-/* Object-space scales below this would put a distant ray origin past the
- * fixed range once mapped into the object's space. */
-#define MIN_OBJECT_SCALE R_RATIO(1, 64)
-
-static bool sizes_ok(reader_t *r, vec3_t v, const char *what, uint32_t line)
+/* Sizes (on the position grid, the same in every build) must be at least
+ * 1/64: smaller object-space scales would put a distant ray origin past
+ * the fixed range once mapped into the object's space. */
+static bool sizes_ok(reader_t *r, const int32_t *grid, unsigned n, const char *what, uint32_t line)
 {
-    if (v.x >= MIN_OBJECT_SCALE && v.y >= MIN_OBJECT_SCALE && v.z >= MIN_OBJECT_SCALE)
+    unsigned i = 0;
+    while (i < n && grid[i] >= ((int32_t)1 << FX_FRAC_BITS) / 64)
+        i++;
+    if (i == n)
         return true;
     rt_error_set(r->lx.err, line, what);
     rt_error_append(r->lx.err, ": sizes must be positive and at least 1/64 of the scene scale");
@@ -328,6 +330,11 @@ bool rd_torus(reader_t *r)
     return add_shape(r, &sh, shape_init_torus(&sh, major, minor), 0, line);
 }
 
+/* A quadric's clip box, in object space, reaches at most 64 from its
+ * origin: its coordinates stay well inside the fixed range. */
+#define QUADRIC_REACH_STEPS ((int32_t)64 << FX_FRAC_BITS)
+#define QUADRIC_TOO_LONG "quadric too long for the fixed range (its clip box reaches over 64 times its radii)"
+
 /* A general quadric's coefficients follow the scene scale 2^k like the
  * positions do: q(x / 2^k) 2^2k keeps the same surface. */
 bool rd_quadric(reader_t *r)
@@ -341,10 +348,18 @@ bool rd_quadric(reader_t *r)
     for (int i = 0; i < 10; i++)
         if (!lex_decimal(&r->lx, "quadric", &d[i]))
             return false;
-    if (!rd_pos3(r, "quadric", &lo) || !rd_pos3(r, "quadric", &hi))
+    int32_t lo_g[3], hi_g[3];
+    if (!rd_pos3_grid(r, "quadric", &lo, lo_g) || !rd_pos3_grid(r, "quadric", &hi, hi_g))
         return false;
     if (r->measuring)
         return true;
+    /* the clip box on the grid: not empty, and reaching at most 64 */
+    for (int i = 0; i < 3; i++) {
+        if (lo_g[i] >= hi_g[i])
+            return lex_fail(&r->lx, line, "quadric clip box is empty (need x0 < x1, y0 < y1, z0 < z1)");
+        if (lo_g[i] < -QUADRIC_REACH_STEPS || hi_g[i] > QUADRIC_REACH_STEPS)
+            return lex_fail(&r->lx, line, QUADRIC_TOO_LONG);
+    }
     int32_t k = r->scale_log2;
     for (int i = 0; i < 10; i++)
         if (!lex_scalar_scaled(&r->lx, "quadric", &d[i], i < 6 ? 0 : i < 9 ? k : 2 * k, &q[i]))
@@ -360,23 +375,40 @@ typedef enum { ELLIPSOID, PARABOLOID, HYPERBOLOID, HYPERBOLOID2, QUADCONE, QUADC
 static bool named_quadric(reader_t *r, const char *what, named_quadric_t kind)
 {
     uint32_t line = r->lx.tok_line;
-    vec3_t s;
+    vec3_t s = { 0 };
     real_t h = 0;
     bool has_h = kind != ELLIPSOID;
     bool three_radii = kind == ELLIPSOID || kind == HYPERBOLOID || kind == HYPERBOLOID2;
-    if (!rd_need_material(r, what) || !rd_pos(r, what, &s.x) || !rd_pos(r, what, &s.y))
+    decimal_t d[4];
+    real_t *size[4] = { &s.x, &s.y, &s.z, &h };
+    unsigned n = 0; /* the sizes read: rx ry [rz] [h] */
+    if (!rd_need_material(r, what))
         return false;
-    s.z = 0;
-    if (three_radii && !rd_pos(r, what, &s.z))
-        return false;
-    if (has_h && !rd_pos(r, what, &h))
-        return false;
+    for (unsigned i = 0; i < 4; i++)
+        if ((i < 2 || (i == 2 && three_radii) || (i == 3 && has_h)) && !rd_pos_decimal(r, what, &d[n++], size[i]))
+            return false;
     if (r->measuring)
         return true;
     if (!three_radii)
         s.z = h; /* the unit shape spans z in [0, 1] or [-1, 1] */
-    if (!sizes_ok(r, s, what, line) || (has_h && !sizes_ok(r, v3(h, h, h), what, line)))
+    int32_t g[4];
+    for (unsigned i = 0; i < n; i++)
+        g[i] = rd_grid(r, &d[i]);
+    if (!sizes_ok(r, g, n, what, line))
         return false;
+    if (kind == HYPERBOLOID || kind == HYPERBOLOID2) {
+        /* the unit shape's clip box reaches h / rz along z and sqrt((h /
+         * rz)^2 +- 1) across it; decided on the grid, exactly (sizes are
+         * below 2^31 steps, so h^2 < 2^62; from rz = 2^25 on, 4095 rz^2
+         * passes that, and h^2 stays below it): two sheets need h > rz,
+         * and neither reaches past 64 */
+        int64_t rz = g[2], hz = g[3];
+        if (kind == HYPERBOLOID2 && hz <= rz)
+            return lex_fail(&r->lx, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
+        bool too_long = kind == HYPERBOLOID ? rz < ((int64_t)1 << 25) && hz * hz > 4095 * rz * rz : hz > 64 * rz;
+        if (too_long)
+            return lex_fail(&r->lx, line, QUADRIC_TOO_LONG);
+    }
     real_t q[10] = { R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, 0, 0 };
     vec3_t lo = v3(-R_ONE, -R_ONE, -R_ONE), hi = v3(R_ONE, R_ONE, R_ONE);
     switch (kind) {
@@ -394,9 +426,9 @@ static bool named_quadric(reader_t *r, const char *what, named_quadric_t kind)
         real_t zc = r_div(h, s.z);
         q[2] = -R_ONE, q[9] = one_sheet ? -R_ONE : R_ONE;
         real_wide_t m2 = r_wmul(zc, zc) + (one_sheet ? r_to_wide(R_ONE) : -r_to_wide(R_ONE));
-        if (m2 <= 0)
-            return lex_fail(&r->lx, line, "hyperboloid2: height must exceed rz (the sheets start at |z| = rz)");
-        real_t m = r_wsqrt(m2);
+        real_t m = m2 > 0 ? r_wsqrt(m2) : 0;
+        if (m < R_ULPS(1)) /* h a step or so over rz: rounding must not empty the box */
+            m = R_ULPS(1);
         lo = v3(-m, -m, -zc);
         hi = v3(m, m, zc);
         break;
@@ -432,9 +464,11 @@ bool rd_sphere_solid(reader_t *r)
     if (r->measuring)
         return true;
     a = r_abs(a);
-    if (rd_grid(r, &d) == 0)
+    int32_t g = rd_grid(r, &d);
+    g = g < 0 ? -g : g;
+    if (g == 0)
         return lex_fail(&r->lx, line, "sphere radius is zero");
-    if (!sizes_ok(r, v3(a, a, a), "s", line))
+    if (!sizes_ok(r, &g, 1, "s", line))
         return false;
     const real_t q[10] = { R_ONE, R_ONE, R_ONE, 0, 0, 0, 0, 0, 0, -R_ONE };
     shape_t sh = { 0 };

@@ -1,18 +1,19 @@
 /*
- * main.c - a user's program: render the compiled-in scene at 32x32 into a
- * sink that writes a binary PPM through out_write() (out_host.c: stdout;
- * out_mps2.c: the board's UART0). Includes nothing but rt.h.
+ * main.c - a user's program: render the compiled-in scene at its own
+ * resolution into a sink that writes a binary PPM through out_write()
+ * (out_host.c: stdout; out_mps2.c: the board's UART0). Includes rt.h and
+ * the scene compiler's scene_data.h, for the size of the band buffer.
  */
 #include "rt.h"
+#include "scene_data.h" /* SCENE_WIDTH, SCENE_HEIGHT: the scene's resolution */
 
-#define WIDTH 32
-#define HEIGHT 32
 #define BAND_LINES 4
 
 extern const rt_scene_t rt_scene;         /* rt_add_scene: scene_data.c */
 int out_write(const void *p, size_t n); /* 0 on success */
 
-static uint8_t band[BAND_LINES * WIDTH * 3];
+/* opts.width 0 renders SCENE_WIDTH pixels a line */
+static uint8_t band[BAND_LINES * RT_FB_CONST_LINE_BYTES(RT_FB_RGB888, SCENE_WIDTH)];
 static int out_status;
 
 static char *put_uint(char *p, unsigned v)
@@ -57,7 +58,7 @@ int main(void)
 {
     rt_fb_sink_t sink = { .format = RT_FB_RGB888, .band = { band, 0 }, .band_bytes = sizeof band,
                        .begin = begin, .flush = flush, .end = end };
-    rt_render_opts_t opts = { .width = WIDTH, .height = HEIGHT }; /* depth: RT_MAX_DEPTH */
+    rt_render_opts_t opts = { .width = 0, .height = 0 }; /* the scene's resolution; depth: RT_DEFAULT_DEPTH */
     static rt_error_t err;
     return rt_render(&rt_scene, &opts, &sink, NULL, &err) == 0 ? 0 : 1;
 }
