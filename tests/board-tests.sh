@@ -232,6 +232,18 @@ done
 sz=$(make -s board-info SCENE=scenes/bench/card.nff SIZE=100x50 | sed -n 's/.* size=\([^ ]*\).*/\1/p')
 [ "$sz" = 100x50 ] && ok "SIZE=100x50 on the command line wins over the scene's 320x240" || bad "SIZE=100x50 gave $sz"
 
+# Two scenes of one file name in different folders share a build folder:
+# the second gets its own tables even when its file is the older one
+mkdir -p "$OUT/same-a" "$OUT/same-b"
+printf 'v from 0 0 -5 at 0 0 0 up 0 1 0 angle 40 hither 1 resolution 16 16\nl 5 5 -5\nf 1 0 0 0.8 0.2 20 0 1\ns 0 0 0 1\n' >"$OUT/same-a/same.nff"
+printf 'v from 0 0 -5 at 0 0 0 up 0 1 0 angle 40 hither 1 resolution 16 16\nl 5 5 -5\nf 0 0 1 0.8 0.2 20 0 1\ns 0 0 0 1\n' >"$OUT/same-b/same.nff"
+touch -d '2001-01-01' "$OUT/same-b/same.nff"
+same_elf() { make -s -j2 firmware SCENE="$1" AA=0 >"$OUT/same.build" 2>&1 && cksum <"$(make -s print-fwdir SCENE="$1" AA=0)/fixed.elf"; }
+ea=$(same_elf "$OUT/same-a/same.nff") eb=$(same_elf "$OUT/same-b/same.nff") ea2=$(same_elf "$OUT/same-a/same.nff")
+[ -n "$ea" ] && [ -n "$eb" ] && [ "$ea" != "$eb" ] && [ "$ea" = "$ea2" ] &&
+    ok "same.nff in two folders: each built from its own file (the older one too)" ||
+    bad "same.nff in two folders: ELF a '$ea', b '$eb', a again '$ea2' ($(tail -2 "$OUT/same.build"))"
+
 # Names in out/: the default run keeps the README's name; every choice
 # that changes the firmware (size, sampling, dither, format, depth,
 # texture filter, configuration, bands, cores, and the boards' own: panel,

@@ -253,7 +253,15 @@ $(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst src
 
 # ---- firmware ------------------------------------------------------------
 
-$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(SCENEC_DIR)/rt-scenec
+# Two scenes of one file name in different folders share a build folder:
+# scene.path holds the scene's path and changes when another one is
+# built there, so its tables are made again even when that file is older.
+$(FW_DIR)/scene.path: FORCE
+	@mkdir -p $(@D)
+	@[ "$$(cat $@ 2>/dev/null)" = '$(abspath $(SCENE))' ] || echo '$(abspath $(SCENE))' >$@
+FORCE:
+
+$(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(FW_DIR)/scene.path $(SCENEC_DIR)/rt-scenec
 	@mkdir -p $(@D)
 	$(show) SCENEC $(FW_DIR)/scene_data.c
 	$(Q)$(SCENEC_DIR)/rt-scenec $(SCENE) -o $(FW_DIR)/scene_data.c --header $(FW_DIR)/scene_data.h
@@ -273,7 +281,7 @@ $(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsub
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
 	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
 
-$(FW_DIR)/scene_data_$(1).c: $(SCENE) $(SCENEC_DIR)-$(1)/rt-scenec
+$(FW_DIR)/scene_data_$(1).c: $(SCENE) $(FW_DIR)/scene.path $(SCENEC_DIR)-$(1)/rt-scenec
 	@mkdir -p $$(@D)
 	$$(show) SCENEC $$@
 	$$(Q)$(SCENEC_DIR)-$(1)/rt-scenec $(SCENE) -o $$@
