@@ -87,9 +87,10 @@ GROUPS = [
     ("output", "frame set-up and pixel loop, camera rays, pixel packing, band hand-over",
      ["render*", "camera_*", "scene_eye_setup", "wait_flushed", "corner_row", "spd_line", "plain_line", "put_pixel", "flush_band", "add_stats", "stats_add",
       "fb_*",
-      # the sink's end of frame: rt_render tail-calls it, so it is no call
-      # counted apart (cycles.py warns), and the firmware's count has it too
-      "stream_*", "oled_*", "port_*", "report_*"]),
+      # the sink's end of frame (and the output window sink_io_* opens
+      # for it): rt_render tail-calls it, so it is no call counted apart
+      # (cycles.py warns), and the firmware's count has it too
+      "stream_*", "oled_*", "sink_io_*", "port_*", "report_*"]),
 ]
 GROUP_ORDER = [g for g, _, _ in GROUPS] + ["other"]
 GROUP_DOC = {g: d for g, d, _ in GROUPS}
