@@ -254,7 +254,7 @@ def write_svg(rows):
     for i, b in enumerate(names):
         colour = COLOURS[i % len(COLOURS)]
         mine = [r for r in pts if r["board"] == b]
-        for be in {r["backend"] for r in mine}:
+        for be in sorted({r["backend"] for r in mine}):
             pair = sorted((r for r in mine if r["backend"] == be), key=lambda r: r["sampling"] != "1 sample")
             if len(pair) == 2:
                 s.append('<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="%s" stroke-opacity="0.5"/>' % (
