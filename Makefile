@@ -317,6 +317,8 @@ bench: deps
 	@sh bench/keep.sh bench/profile.md "Where balls-2's instructions go on mps2-an385 (fixed, 64x64)" \
 	    $(MAKE) -s profile BOARD=mps2-an385 BACKEND=fixed SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=0
 	@echo
+	@sh bench/keep.sh bench/specialise.md "Firmware built for its scene (SPECIALISE=1) against the generic firmware" sh bench/specialise-bench.sh
+	@echo
 	@sh bench/keep.sh bench/pico-xip.md "The Pico's flash reads in the render, through a model of the XIP cache" sh bench/pico-xip.sh
 	@echo
 	python3 bench/boards_bench.py

@@ -49,6 +49,7 @@ run tests/board-oled-test.sh "$B/rt"
 run tests/board-pico-tests.sh "$B/rt"
 run tests/board-stm32f4-tests.sh "$B/rt"
 run tests/speed-tests.sh "$B/rt"
+run tests/specialise-tests.sh "$B/rt"
 run tests/consumer-tests.sh "$B/rt" build/consumer
 run tests/install-tests.sh "$B/rt" "$B/test-install"
 run tests/scenec-tables-tests.sh "$B/rt" "$B/test-scenec-tables"

@@ -182,6 +182,31 @@ DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
 # off), no ray cones linked; 1 (the default) filters them over the footprint.
 TEXTURE_FILTER ?= 1
 TEXTURE_FILTER_FLAGS := $(if $(filter 0,$(TEXTURE_FILTER)),-DRT_TEXTURE_FILTER=0)
+# SPECIALISE=1: firmware built for its one scene by the compiler. The
+# tracer reads the scene's const tables as the constant rt_scene
+# (RT_CONST_SCENE, src/tracer/trace.h), and the program is optimised
+# whole (-flto, -O3, loops over the scene's few primitives unrolled), so
+# counts, materials and positions fold into the code: the same source and
+# the same image, fewer instructions for more code (docs/performance.md).
+# 0 (the default): the generic firmware. libc_min.c and the board's own
+# files stay out of LTO (the compiler emits memset/memcpy calls after the
+# IR is read; runners look board symbols up by name). make size and make
+# profile take the generic firmware: LTO writes no stack-usage files, and
+# the whole program inlines the frames profile.py sorts by.
+SPECIALISE ?= 0
+ifeq ($(filter 0 1,$(SPECIALISE)),)
+$(error SPECIALISE=$(SPECIALISE): 0 (generic) or 1 (built for the scene))
+endif
+ifneq ($(filter 1,$(SPECIALISE)),)
+ifneq ($(filter size profile,$(MAKECMDGOALS)),)
+$(error make $(filter size profile,$(MAKECMDGOALS)) takes the generic firmware (SPECIALISE=0): LTO writes no stack-usage files and inlines the frames profile.py sorts by)
+endif
+endif
+SPEC_OPT := -O3 --param max-completely-peel-times=64 --param max-completely-peeled-insns=1000 \
+            --param max-inline-insns-single=1000 --param large-function-growth=1000
+SPEC_CFLAGS := $(if $(filter 1,$(SPECIALISE)),-flto -DRT_CONST_SCENE=rt_scene $(SPEC_OPT))
+SPEC_LDFLAGS = $(if $(filter 1,$(SPECIALISE)),-flto $(SPEC_OPT) $(FW_FLAGS_$(1)) -ffunction-sections -fdata-sections \
+               -fno-tree-loop-distribute-patterns)
 # Every choice that makes one firmware differ from another, as WORD/DEFAULT:
 # the word that names it, and the word its default would have. The build
 # folder and the out/ names (RUN_OUT, make image's files) carry each word
@@ -192,7 +217,8 @@ FW_CHOICES := $(SIZE)/$(DEFAULT_SIZE) d$(DEPTH)/d5 $(FORMAT)/$(or $(FW_FORMAT),r
               $(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))/$(call sampling_word,$(word 1,$(subst $(comma), ,$(BOARD_RUN_AA))),$(or $(word 2,$(subst $(comma), ,$(BOARD_RUN_AA))),0),0) \
               $(if $(filter 1,$(DITHER)),dither,nodither)/$(if $(filter 1,$(BOARD_RUN_DITHER)),dither,nodither) \
               $(if $(filter 0,$(TEXTURE_FILTER)),pointtex,filtertex)/filtertex $(if $(filter 0,$(PRUNE)),noprune,prune)/prune \
-              $(CONFIG)/q20 b$(BAND_LINES)/b$(BOARD_BAND_LINES) s$(STACK_SIZE)/s4096 cores$(CORES)/cores$(BOARD_CORES)
+              $(CONFIG)/q20 b$(BAND_LINES)/b$(BOARD_BAND_LINES) s$(STACK_SIZE)/s4096 cores$(CORES)/cores$(BOARD_CORES) \
+              $(if $(filter 1,$(SPECIALISE)),spec,generic)/generic
 empty :=
 space := $(empty) $(empty)
 FW_TAGS := $(subst $(space),,$(foreach c,$(FW_CHOICES),$(if $(filter-out $(lastword $(subst /, ,$(c))),$(firstword $(subst /, ,$(c)))),-$(firstword $(subst /, ,$(c))))))$(BOARD_TAG)
@@ -204,7 +230,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(TEXTURE_FILTER_FLAGS) \
-            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR)
+            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (render.c: set-up and once per pixel), errors and
 # counters, the UART sink, and the solids' object-space code (xform,
@@ -294,7 +320,8 @@ define firmware_objs
 $(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) $(wildcard platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
-	$$(Q)$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) -c $$< -o $$@
+	$$(Q)$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) \
+	    $$(if $$(filter libc_min $$(basename $$(notdir $$(BOARD_SRC))),$$(basename $$(notdir $$<))),-fno-lto) -c $$< -o $$@
 $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(show) AS $$@
@@ -313,7 +340,7 @@ PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fix
 define firmware_elf
 $(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) platform/firmware/sections.ld
 	$$(show) LD $$@
-	$$(Q)$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
+	$$(Q)$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) $$(call SPEC_LDFLAGS,$(1)) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
 endef
 $(eval $(call firmware_elf,fixed,))
 $(eval $(call firmware_elf,float,-lm -lc))

@@ -120,7 +120,7 @@ RT_NOINLINE static void add_light(colour_t *c, const material_terms_t *t, const 
 
 RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray, int depth)
 {
-    const scene_t *sc = tr->scene;
+    const scene_t *sc = TRACER_SCENE(tr);
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
     (void)ray; /* only the lights' shares and a filtered texture look at it */
@@ -209,9 +209,9 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
     hit_t h; /* the rest is written with a hit: no memset of it per ray (the M0's GCC calls one) */
     h.t = RT_T_FAR;
     h.leaf = RT_NO_LEAF;
-    if (!scene_nearest(tr->scene, ray, RT_T_MIN, &h, tr->scratch))
+    if (!scene_nearest(TRACER_SCENE(tr), ray, RT_T_MIN, &h, tr->scratch))
         return false;
-    surface_at(tr->scene, &h, ray, s);
+    surface_at(TRACER_SCENE(tr), &h, ray, s);
     return true;
 }
 
@@ -271,7 +271,7 @@ static real_t cone_bend(const tracer_t *tr, const surface_t *s)
     (void)tr, (void)s;
 #if RT_USE_SPHERES
     if (s->ref != PRIM_NONE && PRIM_KIND(s->ref) == PRIM_SPHERE && s->cone_width != 0) {
-        const sphere_t *sp = &tr->scene->spheres[PRIM_INDEX(s->ref)];
+        const sphere_t *sp = &TRACER_SCENE(tr)->spheres[PRIM_INDEX(s->ref)];
         real_t bend = cone_mul(s->cone_width, sp->inv_radius != 0 ? sp->inv_radius : r_recip(sp->radius));
         return s->entering ? bend : -bend;
     }
@@ -332,7 +332,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weigh
     bool found = find_surface(tr, ray, &s);
 #endif
     if (!found)
-        return background(tr->scene, ray);
+        return background(TRACER_SCENE(tr), ray);
     if (depth == 1)
         tr->scratch->stats.eye_hits++;
 

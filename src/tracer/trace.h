@@ -27,6 +27,16 @@ typedef struct {
     material_terms_t *terms;  /* per depth (material 0 at the start) */
 } tracer_t;
 
+/* The scene the tracer reads: its record's, or, in firmware built for one
+ * scene (SPECIALISE=1), that scene's tables as the constant RT_CONST_SCENE,
+ * so that the compiler sees them where they are read and folds them. */
+#ifdef RT_CONST_SCENE
+extern const scene_t RT_CONST_SCENE;
+#define TRACER_SCENE(tr) ((void)(tr), &RT_CONST_SCENE)
+#else
+#define TRACER_SCENE(tr) ((tr)->scene)
+#endif
+
 /* Colour seen along `ray`; `weight` is its share of the pixel (1 for an
  * eye ray, times Ks or T at each bounce). */
 colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight);

@@ -1,0 +1,70 @@
+#!/bin/sh
+# Firmware built for its scene (SPECIALISE=1: the scene's tables a
+# constant where the tracer reads them, the program optimised whole) is
+# the generic firmware's algorithm: the same image, byte for byte, and
+# fewer instructions a pixel. Each case builds both and runs both under
+# the emulator (deterministic counts: QEMU -icount shift=0, rp2040js):
+#  - the card scene (4 spheres, a plane) on the Cortex-M4F in float and
+#    the Cortex-M3 in fixed point, point-sampled and filtered textures,
+#    at most 0.85 of the generic instructions a pixel (0.79 to 0.82 when
+#    written);
+#  - the showpiece (BVH, solids, CSG, anti-aliased by default) and
+#    picolib on the M3, at most the generic count;
+#  - the card on the Pico, at most the generic cycles (SysTick);
+#  - SPECIALISE=2 and make size SPECIALISE=1 refused with a message.
+RT=${1:-build/host/rt}
+OUT=build/test-specialise
+mkdir -p "$OUT"
+. tests/check.sh
+
+# run_one NAME VARS...: build and run, the report in $OUT/NAME.report
+run_one() {
+    one=$1
+    shift
+    make -s -j2 firmware "$@" >"$OUT/$one.build" 2>&1 &&
+        make -s board-run "$@" RUN_OUT="$OUT/$one.png" RUN_RT="$RT" >"$OUT/$one.report" 2>&1
+}
+value() { awk -v k="$2" '$1 == k { print $2 }' "$OUT/$1.report"; }
+
+# pair NAME KEY LIMIT VARS...: generic and specialised, same image, KEY of
+# the specialised at most LIMIT (a fraction) of the generic's
+pair() {
+    n=$1 key=$2 limit=$3
+    shift 3
+    if ! run_one "$n-generic" "$@" SPECIALISE=0 || ! run_one "$n-spec" "$@" SPECIALISE=1; then
+        bad "$n: build or run failed: $(tail -3 "$OUT/$n-spec.build" "$OUT/$n-spec.report" 2>/dev/null | tr '\n' ' ')"
+        return
+    fi
+    g=$(value "$n-generic" "$key") s=$(value "$n-spec" "$key")
+    if ! cmp=$("$RT" compare "$OUT/$n-spec.png" "$OUT/$n-generic.png" --max-error 0); then
+        bad "$n: the specialised image differs from the generic one: $cmp"
+    elif [ -z "$g" ] || [ -z "$s" ]; then
+        bad "$n: no $key in the reports"
+    elif awk -v s="$s" -v g="$g" -v l="$limit" 'BEGIN { exit !(s <= g * l) }'; then
+        ok "$n: same image; $key $s against $g generic ($(awk -v s="$s" -v g="$g" 'BEGIN { printf "%.3f", s / g }'), limit $limit)"
+    else
+        bad "$n: $key $s against $g generic: over $limit of it"
+    fi
+}
+
+card="SCENE=scenes/bench/card.nff SIZE=40x30 DEPTH=3 AA=0"
+pair card-m4f-float-pointtex instructions_per_pixel 0.85 BOARD=mps2-an386 BACKEND=float $card TEXTURE_FILTER=0
+pair card-m4f-float instructions_per_pixel 0.85 BOARD=mps2-an386 BACKEND=float $card
+pair card-m3-fixed-pointtex instructions_per_pixel 0.85 BOARD=mps2-an385 BACKEND=fixed $card TEXTURE_FILTER=0
+pair card-m3-fixed instructions_per_pixel 0.85 BOARD=mps2-an385 BACKEND=fixed $card
+pair showpiece-m3-fixed-aa3 instructions_per_pixel 1 BOARD=mps2-an385 SCENE=scenes/showpiece.nff SIZE=24x24
+pair picolib-m3-fixed instructions_per_pixel 1 BOARD=mps2-an385 SCENE=scenes/bench/picolib.nff SIZE=40x30 DEPTH=6 AA=0
+pair card-pico-fixed render_cycles 1 BOARD=pico SCENE=scenes/bench/card.nff SIZE=24x18 DEPTH=3
+
+if msg=$(make -s firmware SPECIALISE=2 2>&1); then
+    bad "SPECIALISE=2 built"
+else
+    ok "SPECIALISE=2 refused: $(echo "$msg" | grep -o 'SPECIALISE=2.*' | head -1)"
+fi
+if msg=$(make -s size SPECIALISE=1 2>&1); then
+    bad "make size SPECIALISE=1 ran"
+else
+    ok "make size SPECIALISE=1 refused: $(echo "$msg" | grep -o 'make size.*' | head -1)"
+fi
+echo "specialise: $pass passed, $fail failed"
+[ $fail -eq 0 ]
