@@ -18,6 +18,13 @@ same_image() { # same_image WHAT IMAGE
         bad "$1: image differs from rt --fixed ($("$rt" compare "$2" "$out/ref.ppm" 2>&1))"
     fi
 }
+pruned() { # pruned WHAT PROGRAM: the scene's sphere code linked, no cone code
+    if nm "$2" | grep -q ray_hit_sphere && ! nm "$2" | grep -q ray_hit_cone; then
+        ok "$1: pruned for the scene (sphere code linked, no cone code)"
+    else
+        bad "$1: not pruned for the scene (cone code linked, or no sphere code)"
+    fi
+}
 rm -rf "$out"
 mkdir -p "$out"
 "$rt" scenes/spd/balls-1.nff --size 32x32 --fixed -o "$out/ref.ppm" --quiet || bad "rt: reference render"
@@ -33,11 +40,7 @@ if log host-configure cmake -S tests/consumer -B "$out/host" -DCMAKE_BUILD_TYPE=
     else
         bad "CMake, host: the consumer failed"
     fi
-    if nm "$out/host/consumer" | grep -q ray_hit_sphere && ! nm "$out/host/consumer" | grep -q ray_hit_cone; then
-        ok "CMake, host: pruned for the scene (sphere code linked, no cone code)"
-    else
-        bad "CMake, host: not pruned for the scene (cone code linked, or no sphere code)"
-    fi
+    pruned "CMake, host" "$out/host/consumer"
 else
     bad "CMake, host: configure or build failed"
 fi
@@ -70,11 +73,7 @@ cp tests/consumer/main.c tests/consumer/out_host.c "$mk/" && cp "$scene" "$mk/sc
 if log make make -C "$mk" -f "$PWD/examples/make/Makefile" RT_DIR="$PWD" CC="${CC:-cc} -Werror" &&
     "$mk/app" >"$out/make.ppm"; then
     same_image "make with rt.mk (examples/make/Makefile), host" "$out/make.ppm"
-    if nm "$mk/app" | grep -q ray_hit_sphere && ! nm "$mk/app" | grep -q ray_hit_cone; then
-        ok "make with rt.mk: pruned for the scene (sphere code linked, no cone code)"
-    else
-        bad "make with rt.mk: not pruned for the scene (cone code linked, or no sphere code)"
-    fi
+    pruned "make with rt.mk" "$mk/app"
 else
     bad "make with rt.mk: examples/make/Makefile did not build or run"
 fi
