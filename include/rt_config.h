@@ -315,6 +315,15 @@
 #else
 #define RT_NOINLINE
 #endif
+/* The frames bench/profile.py sorts instructions by ray kind with
+ * (rt_render, trace_ray, scene_occluded): kept as calls of their own when
+ * a whole-program build (SPECIALISE=1) is profiled: make profile adds
+ * -DRT_KEEP_FRAMES. */
+#ifdef RT_KEEP_FRAMES
+#define RT_FRAME __attribute__((noinline, noclone))
+#else
+#define RT_FRAME
+#endif
 
 /* Hot functions called from several places in the traversal (the box
  * test, the primitive dispatch): a copy inline at each call saves the

@@ -182,31 +182,30 @@ DITHER_FLAGS := $(if $(filter 1,$(DITHER)),-DBOARD_DITHER=1,-DRT_USE_DITHER=0)
 # off), no ray cones linked; 1 (the default) filters them over the footprint.
 TEXTURE_FILTER ?= 1
 TEXTURE_FILTER_FLAGS := $(if $(filter 0,$(TEXTURE_FILTER)),-DRT_TEXTURE_FILTER=0)
-# SPECIALISE=1: firmware built for its one scene by the compiler. The
-# tracer reads the scene's const tables as the constant rt_scene
-# (RT_CONST_SCENE, src/tracer/trace.h), and the program is optimised
-# whole (-flto, -O3, loops over the scene's few primitives unrolled), so
-# counts, materials and positions fold into the code: the same source and
-# the same image, fewer instructions for more code (docs/performance.md).
-# 0 (the default): the generic firmware. libc_min.c and the board's own
-# files stay out of LTO (the compiler emits memset/memcpy calls after the
-# IR is read; runners look board symbols up by name). make size and make
-# profile take the generic firmware: LTO writes no stack-usage files, and
-# the whole program inlines the frames profile.py sorts by.
-SPECIALISE ?= 0
+# SPECIALISE=1 (the default): firmware built for its one scene by the
+# compiler. The tracer reads the scene's const tables as the constant
+# rt_scene (RT_CONST_SCENE, src/tracer/trace.h), and the program is
+# optimised whole (-flto, -O3, loops over the scene's few primitives
+# unrolled), so counts, materials and positions fold into the code: the
+# same source and the same image, fewer instructions for more code
+# (docs/performance.md). 0: the generic firmware, which reads any scene's
+# tables. libc_min.c and the board's own files stay out of LTO (the
+# compiler emits memset/memcpy calls after the IR is read; runners look
+# board symbols up by name). The link writes the one partition's call
+# graph (lto-ltrans0.ltrans.ci) for make size's stack bound; make profile
+# keeps rt_render, trace_ray and scene_occluded as calls (RT_KEEP_FRAMES:
+# its own build folder), the frames profile.py sorts ray kinds by.
+SPECIALISE ?= 1
 ifeq ($(filter 0 1,$(SPECIALISE)),)
 $(error SPECIALISE=$(SPECIALISE): 0 (generic) or 1 (built for the scene))
 endif
-ifneq ($(filter 1,$(SPECIALISE)),)
-ifneq ($(filter size profile,$(MAKECMDGOALS)),)
-$(error make $(filter size profile,$(MAKECMDGOALS)) takes the generic firmware (SPECIALISE=0): LTO writes no stack-usage files and inlines the frames profile.py sorts by)
-endif
-endif
+KEEP_FRAMES ?= $(if $(filter profile,$(MAKECMDGOALS)),$(SPECIALISE),0)
 SPEC_OPT := -O3 --param max-completely-peel-times=64 --param max-completely-peeled-insns=1000 \
             --param max-inline-insns-single=1000 --param large-function-growth=1000
-SPEC_CFLAGS := $(if $(filter 1,$(SPECIALISE)),-flto -DRT_CONST_SCENE=rt_scene $(SPEC_OPT))
+SPEC_CFLAGS := $(if $(filter 1,$(SPECIALISE)),-flto -DRT_CONST_SCENE=rt_scene $(SPEC_OPT) $(if $(filter 1,$(KEEP_FRAMES)),-DRT_KEEP_FRAMES))
 SPEC_LDFLAGS = $(if $(filter 1,$(SPECIALISE)),-flto $(SPEC_OPT) $(FW_FLAGS_$(1)) -ffunction-sections -fdata-sections \
-               -fno-tree-loop-distribute-patterns)
+               -fno-tree-loop-distribute-patterns -flto-partition=one -fstack-usage -fcallgraph-info=su \
+               -dumpdir $(FW_DIR)/$(1)/lto-)
 # Every choice that makes one firmware differ from another, as WORD/DEFAULT:
 # the word that names it, and the word its default would have. The build
 # folder and the out/ names (RUN_OUT, make image's files) carry each word
@@ -218,7 +217,7 @@ FW_CHOICES := $(SIZE)/$(DEFAULT_SIZE) d$(DEPTH)/d5 $(FORMAT)/$(or $(FW_FORMAT),r
               $(if $(filter 1,$(DITHER)),dither,nodither)/$(if $(filter 1,$(BOARD_RUN_DITHER)),dither,nodither) \
               $(if $(filter 0,$(TEXTURE_FILTER)),pointtex,filtertex)/filtertex $(if $(filter 0,$(PRUNE)),noprune,prune)/prune \
               $(CONFIG)/q20 b$(BAND_LINES)/b$(BOARD_BAND_LINES) s$(STACK_SIZE)/s4096 cores$(CORES)/cores$(BOARD_CORES) \
-              $(if $(filter 1,$(SPECIALISE)),spec,generic)/generic
+              $(if $(filter 1,$(SPECIALISE)),spec$(if $(filter 1,$(KEEP_FRAMES)),frames),generic)/spec
 empty :=
 space := $(empty) $(empty)
 FW_TAGS := $(subst $(space),,$(foreach c,$(FW_CHOICES),$(if $(filter-out $(lastword $(subst /, ,$(c))),$(firstword $(subst /, ,$(c)))),-$(firstword $(subst /, ,$(c))))))$(BOARD_TAG)
@@ -429,7 +428,7 @@ profile: deps-board
 	@$(MAKE) -s profile CORES=1 SIZE=$(SIZE)
 else
 profile: deps-board
-	@$(MAKE) -s $(FW_ELF) SIZE=$(SIZE)
+	@$(MAKE) -s $(FW_ELF) SIZE=$(SIZE) KEEP_FRAMES=$(KEEP_FRAMES)
 	python3 bench/profile.py $(FW_ELF) --machine $(BOARD) --qemu $(word 1,$(BOARD_QEMU)) \
 	    --sink $(BOARD_SINK_CALLBACKS) --json $(PROFILE_JSON) --check
 	@echo "JSON: $(PROFILE_JSON)"

@@ -26,9 +26,21 @@ def load(folder):
             if m:
                 frames[title] = int(m.group(1))
         for src, dst in EDGE.findall(text):
-            edges.setdefault(src, set()).add(dst)
+            edges.setdefault(bare(src), set()).add(bare(dst))
     # static functions are titled "file:name"; calls from other files use "name"
-    return frames, edges
+    return {bare(t): n for t, n in frames.items()}, edges
+
+
+# A whole-program (LTO) build writes one call graph for its one partition,
+# titled after a temporary object: its names are unique already.
+LTRANS = re.compile(r"^[^:]*\.ltrans\d+\.o:")
+# The linker folds identical copies of a local function (x.lto_priv.0,
+# x.lto_priv.1) into one; a call may name a copy that has no frame left.
+LTO_COPY = re.compile(r"^(.*\.lto_priv)\.\d+$")
+
+
+def bare(title):
+    return LTRANS.sub("", title)
 
 
 def main():
@@ -58,6 +70,9 @@ def main():
             return memo[fn]
         if fn in stack:
             sys.exit("stack_usage: call cycle through %s (only self-recursion is bounded)" % fn)
+        copies = [frames[t] for t in frames if LTO_COPY.match(fn) and LTO_COPY.sub(r"\1", t) == LTO_COPY.sub(r"\1", fn)]
+        if fn not in frames and copies:
+            frames[fn] = max(copies)
         if fn not in frames:
             unknown.add(fn)
             return args.unknown, [fn + " (unknown, assumed)"]

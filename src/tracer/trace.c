@@ -321,7 +321,7 @@ static colour_t background(const scene_t *sc, const ray_t *ray)
 
 /* The ray helpers above are not inlined: their temporaries stay out of
  * this frame, which the recursion repeats RT_MAX_DEPTH times. */
-colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
+RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
 {
     surface_t s;
 #if RT_USE_FLAT
