@@ -99,7 +99,7 @@ for run in "mps2-an385 scenes/spd/balls-2.nff 32x32 eye,reflection,shadow" \
     check "$n: grouped" grouped "$OUT/$n.json"
     check "$n: ray counts" rays "$OUT/$n.json" $(echo $kinds | tr , ' ')
     if [ $b = sifive_e ]; then
-        eval "$(make -s board-info AA=0 $vars)"
+        eval "$(make -s board-info AA=0 $vars KEEP_FRAMES=1)" # the ELF make profile built
         for f in rt_scene_occluded rt_trace_ray; do
             python3 bench/cycles.py "$elf" --machine $b --from-symbol $f --top 0 --json "$OUT/$n-$f.json" \
                 >"$OUT/$n-$f.txt" 2>&1
