@@ -10,7 +10,7 @@
 #                        for a scene (source tree), OFF for the installed,
 #                        prebuilt library
 #
-# rt_add_scene(<target> <scene.nff> [PRUNE ON|OFF])
+# rt_add_scene(<target> <scene.nff> [PRUNE ON|OFF] [SPECIALISE ON|OFF])
 #
 # Compiles the NFF scene into const tables (scene_data.c, in the section
 # .scene.tables) and adds them to <target>, which then renders
@@ -24,13 +24,25 @@
 # one library, so a pruned core renders that scene alone: to link several
 # scenes, give them all PRUNE OFF. The installed library is already
 # compiled: PRUNE is OFF there, and ON is an error.
+# SPECIALISE ON (the default where PRUNE is ON) goes further, as the board
+# firmware's SPECIALISE=1: the tracer reads the scene as the constant
+# rt_scene (-DRT_CONST_SCENE=rt_scene on rt_core) and rt_core, the tables
+# and <target> are optimised whole (INTERPROCEDURAL_OPTIMIZATION; with GCC
+# also -O3 and the firmware's unrolling limits), so the scene's counts,
+# materials and positions fold into the code. It needs PRUNE ON.
 function(rt_add_scene target scene)
-  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "PRUNE" "")
+  cmake_parse_arguments(PARSE_ARGV 2 ARG "" "PRUNE;SPECIALISE" "")
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "rt_add_scene: unexpected arguments: ${ARG_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT DEFINED ARG_PRUNE)
     set(ARG_PRUNE ${RT_SCENE_PRUNABLE})
+  endif()
+  if(NOT DEFINED ARG_SPECIALISE)
+    set(ARG_SPECIALISE ${ARG_PRUNE})
+  endif()
+  if(ARG_SPECIALISE AND NOT ARG_PRUNE)
+    message(FATAL_ERROR "rt_add_scene(${target} ...): SPECIALISE ON compiles rt_core for the scene: it needs PRUNE ON")
   endif()
   if(ARG_PRUNE AND NOT RT_SCENE_PRUNABLE)
     message(FATAL_ERROR "rt_add_scene(${target} ...): PRUNE ON recompiles rt_core for the scene, and the installed "
@@ -90,5 +102,22 @@ function(rt_add_scene target scene)
     target_compile_definitions(rt_core PRIVATE SCENE_PRUNE=1)
     target_compile_options(rt_core PRIVATE "SHELL:-include \"${out}/scene_data.h\"")
     add_dependencies(rt_core rt_scene_${target}_tables)
+  endif()
+  if(ARG_SPECIALISE)
+    target_compile_definitions(rt_core PRIVATE RT_CONST_SCENE=rt_scene)
+    include(CheckIPOSupported)
+    check_ipo_supported(RESULT ipo OUTPUT why LANGUAGES C)
+    if(ipo)
+      set_property(TARGET rt_core rt_scene_${target} ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION TRUE)
+    else()
+      message(WARNING "rt_add_scene(${target} ...): no link-time optimisation here (${why}): the scene is read "
+                      "as a constant, but not folded into the code")
+    endif()
+    if(CMAKE_C_COMPILER_ID STREQUAL "GNU")
+      set(opt -O3 --param=max-completely-peel-times=64 --param=max-completely-peeled-insns=1000
+              --param=max-inline-insns-single=1000 --param=large-function-growth=1000)
+      target_compile_options(rt_core PRIVATE ${opt})
+      target_link_options(${target} PRIVATE ${opt})
+    endif()
   endif()
 endfunction()

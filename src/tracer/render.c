@@ -444,6 +444,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     }
     ctx->sink = sink;
     ctx->y = ctx->y_end = 0; /* done, should the caller step after a failure */
+#ifdef RT_CONST_SCENE
+    if (sc != &RT_CONST_SCENE) { /* the tracer reads that scene alone (trace.h) */
+        rt_error_set(err, 0, "this core was built for one scene (RT_CONST_SCENE), not this one");
+        return -1;
+    }
+#endif
     if (w == 0 || h == 0 || w > RT_MAX_WIDTH || h > RT_MAX_HEIGHT) {
         rt_error_set(err, 0, "image size must be 1x1 to ");
         rt_error_append_int(err, RT_MAX_WIDTH);
