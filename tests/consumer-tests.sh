@@ -35,6 +35,11 @@ sed 's/^resolution .*/resolution 32 32/' scenes/spd/balls-1.nff >"$scene"
 if log host-configure cmake -S tests/consumer -B "$out/host" -DCMAKE_BUILD_TYPE=Release -DSCENE="$scene" &&
     log host-build cmake --build "$out/host" -j2; then
     ok "CMake, host: configured and built"
+    # rt_add_scene's default: the core built for the scene, optimised whole
+    f="$out/host/rt/CMakeFiles/rt_core.dir/flags.make"
+    grep -q 'RT_CONST_SCENE=rt_scene' "$f" && grep -q -- '-flto' "$f" &&
+        ok "CMake, host: rt_core built for the scene (RT_CONST_SCENE=rt_scene, -flto)" ||
+        bad "CMake, host: rt_core not built for the scene: $(grep -E '^C_(FLAGS|DEFINES)' "$f" | cut -c1-200)"
     if "$out/host/consumer" >"$out/host.ppm"; then
         same_image "CMake, host" "$out/host.ppm"
     else
