@@ -316,13 +316,23 @@
 #define RT_NOINLINE
 #endif
 /* The frames bench/profile.py sorts instructions by ray kind with
- * (rt_render, trace_ray, scene_occluded): kept as calls of their own when
+ * (trace_ray, scene_occluded; rt_render always is): kept as calls of their own when
  * a whole-program build (SPECIALISE=1) is profiled: make profile adds
  * -DRT_KEEP_FRAMES. */
 #ifdef RT_KEEP_FRAMES
 #define RT_FRAME __attribute__((noinline, noclone))
 #else
 #define RT_FRAME
+#endif
+/* rt_render stays a function of its own in every build, whole-program
+ * ones included: one call a frame, and where bench/cycles.py and the
+ * benchmarks start counting a render. */
+#if defined(__GNUC__) && !defined(__clang__)
+#define RT_ENTRY __attribute__((noinline, noclone))
+#elif defined(__GNUC__)
+#define RT_ENTRY __attribute__((noinline))
+#else
+#define RT_ENTRY
 #endif
 
 /* Hot functions called from several places in the traversal (the box

@@ -36,9 +36,7 @@ mkdir -p "$OUT"
 pass=0 fail=0
 ok() { pass=$((pass + 1)); printf '  ok    %s\n' "$1"; }
 bad() { fail=$((fail + 1)); printf '  FAIL  %s\n' "$1"; }
-# KEEP_FRAMES=1: rt_render stays a function of its own in the whole-
-# program build, where bench/cycles.py starts counting (as make profile)
-vars="BOARD=stm32f4 SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5 KEEP_FRAMES=1"
+vars="BOARD=stm32f4 SCENE=scenes/spd/balls-2.nff SIZE=32x32 DEPTH=5"
 
 echo "stm32f4: the image for the chip, and its run under QEMU"
 if ! make -s -j2 firmware AA=0 $vars >"$OUT/build.log" 2>&1; then

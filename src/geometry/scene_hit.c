@@ -356,8 +356,8 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
     }
 }
 
-RT_FRAME bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
-                    ray_scratch_t *w)
+RT_FRAME bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
+                             prim_ref_t *last_blocker, ray_scratch_t *w)
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t *s = &w->any_slab;

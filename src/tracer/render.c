@@ -661,8 +661,8 @@ static RT_INLINE int render_end(rt_render_ctx_t *ctx)
     return ctx->sink->end ? ctx->sink->end(ctx->sink) : 0;
 }
 
-RT_FRAME RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats,
-                      rt_error_t *err)
+RT_ENTRY RT_COLD int rt_render(const scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_t *sink,
+                               rt_stats_t *stats, rt_error_t *err)
 {
     /* the worker's own context: off the stack, under the whole render
      * (an invalid worker fails before render_begin touches it) */
