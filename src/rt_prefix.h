@@ -62,6 +62,7 @@
 #define lex_vec3                 rt_lex_vec3
 #define nff_read                 rt_nff_read
 #define object_prim_surface      rt_object_prim_surface
+#define plane_hit_inside         rt_plane_hit_inside
 #define plane_init               rt_plane_init
 #define polygon_init             rt_polygon_init
 #define polygon_shading_normal   rt_polygon_shading_normal

@@ -142,18 +142,24 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
  * reference or dispatch per primitive): the reference the traversal is
  * tested against, and the whole search when the tree is one leaf (a few
  * primitives: it holds them all in table order, and needs no box test).
- * Ties go to the earlier, as in the traversal. */
-#define FLAT_TEST(KIND, table, name, use, t, hit) \
+ * Ties go to the earlier, as in the traversal. The kinds tested inline
+ * read the ray from `r`, a local copy that never leaves the function, so
+ * it lives in registers and hit writes cannot alias it; the others get
+ * the caller's `ray`. An eye ray starts on no primitive: it skips none. */
+#define FLAT_TEST(KIND, table, name, use, t, hit, eye) \
     prim_ref_t ref = PRIM_REF(PRIM_##KIND, i); \
-    bool self = ref == r->from; \
+    bool self = !(eye) && ref == r->from; \
     if (self && !r->from_far) { \
         skipped++; /* leaving its outside, or a plane */ \
         continue; \
     } \
-    if (FLAT_HIT(name, &sc->table[i])(sc, &sc->table[i], r, tmin, t, self, w, hit))
-/* a kind's test: the sphere's inline (a call cost a quarter of a test
- * that misses), the others through their interface */
-#define FLAT_HIT(name, e) _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: name##_prim_hit)
+    if (FLAT_HIT(name, &sc->table[i])(sc, &sc->table[i], FLAT_RAY(&sc->table[i]), tmin, t, self, w, hit))
+/* a kind's test: the sphere's and the plane's inline (a call cost a
+ * quarter of a test that misses), the others through their interface */
+#define FLAT_HIT(name, e) \
+    _Generic((e), const sphere_t *: sphere_prim_hit_inline, const plane_t *: plane_prim_hit_inline, \
+             default: name##_prim_hit)
+#define FLAT_RAY(e) _Generic((e), const sphere_t *: r, const plane_t *: r, default: ray)
 
 /* Whether the scene is searched flat: one leaf (or none), where the
  * build has the flat search; always, where it has no BVH traversal. */
@@ -162,9 +168,9 @@ static RT_INLINE bool searched_flat(const scene_t *sc)
     return RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1);
 }
 
-static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratch_t *w)
 {
-    (void)p, (void)r, (void)i, (void)w;
+    (void)p, (void)i, (void)w;
     return false;
 }
 
@@ -182,10 +188,10 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 }
 
 /* Whether an eye ray's sample lies outside sphere i's box. */
-static RT_INLINE bool sphere_eye_miss(const sphere_t *s, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_scratch_t *w)
 {
-    (void)s, (void)r;
-    if (!w->eye_ray || i >= w->n_eye_spheres)
+    (void)s;
+    if (i >= w->n_eye_spheres)
         return false;
     const int32_t *box = w->eye_spheres[i].box;
     return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
@@ -203,17 +209,20 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
     if ((use) && sc->n_##table) \
         w->stats.prim_tests[PRIM_##KIND] += sc->n_##table - skipped;
 
-RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h, ray_scratch_t *w)
+/* eye: an eye ray (w->eye_ray), culled by the eye boxes; a constant in
+ * each of the two copies below, so neither tests it per primitive. */
+static RT_INLINE bool flat_nearest_with(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h,
+                                        ray_scratch_t *w, bool eye)
 {
-    const ray_t copy = *ray, *r = &copy; /* a local: hit writes cannot alias it, so it stays in registers */
+    const ray_t copy = *ray, *r = &copy;
     bool found = false;
 #define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
-            if (FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], r, i, w)) \
+            if (eye && FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], i, w)) \
                 continue; /* counted as tested */ \
-            FLAT_TEST(KIND, table, name, use, &h->t, h) { \
+            FLAT_TEST(KIND, table, name, use, &h->t, h, eye) { \
                 h->kind = PRIM_##KIND; \
                 h->index = i; \
                 h->leaf = RT_PRIM_UNBOUNDED(PRIM_##KIND) ? RT_NO_LEAF : 0; \
@@ -227,16 +236,29 @@ RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t
     return found;
 }
 
+RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h, ray_scratch_t *w)
+{
+    return flat_nearest_with(sc, ray, tmin, h, w, false);
+}
+
+#if RT_USE_FLAT
+RT_NOINLINE static bool flat_nearest_eye(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h,
+                                         ray_scratch_t *w)
+{
+    return flat_nearest_with(sc, ray, tmin, h, w, true);
+}
+#endif
+
 RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
                                     prim_ref_t *last_blocker, ray_scratch_t *w)
 {
-    const ray_t copy = *ray, *r = &copy; /* as in flat_nearest */
+    const ray_t copy = *ray, *r = &copy; /* as in flat_nearest_with */
 #define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
             real_t t = tmax; \
-            FLAT_TEST(KIND, table, name, use, &t, 0) { \
+            FLAT_TEST(KIND, table, name, use, &t, 0, false) { \
                 w->stats.prim_tests[PRIM_##KIND] += i + 1 - skipped; \
                 *last_blocker = ref; \
                 return true; \
@@ -293,8 +315,13 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    if (searched_flat(sc))
+    if (searched_flat(sc)) {
+#if RT_USE_FLAT
+        if (w->eye_ray)
+            return flat_nearest_eye(sc, r, tmin, h, w);
+#endif
         return flat_nearest(sc, r, tmin, h, w);
+    }
     bool found = unbounded_nearest(sc, r, tmin, h, w);
     if (!enter_root(sc, &s, r, tmin, h->t))
         return found;
