@@ -202,6 +202,9 @@
 #ifndef RT_FLAT_EYE_SPHERES         /* a flat scene's spheres set up per frame */
 #define RT_FLAT_EYE_SPHERES 8       /* for eye rays (16 bytes each a worker) */
 #endif
+#ifndef RT_FLAT_SHADOW_LIGHTS       /* the lights whose shadow rays a flat scene's */
+#define RT_FLAT_SHADOW_LIGHTS 1     /* spheres cull by a cone (16 bytes a sphere) */
+#endif
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1
 #endif

@@ -175,6 +175,35 @@ static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratc
 }
 
 #if RT_USE_FLAT
+/* A shadow ray from P along d (unit) to the light L that meets sphere
+ * (C, r) at X leaves L towards X along -d, inside the cone from L that
+ * holds the sphere: d . unit(L - C) >= cos a, sin a = r / |L - C|. The
+ * cut is taken 2^-10 lower, more than the error of d, of a test's hit
+ * point seen from at least a unit away, and of these products; a light
+ * less than a unit off a sphere gets no cut (-2: every ray is tested). */
+RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
+{
+    w->shadow_light = RT_NO_SHADOW_LIGHT;
+    w->n_light_spheres = w->n_eye_spheres;
+    for (uint32_t l = 0; l < RT_FLAT_SHADOW_LIGHTS; l++) {
+        for (uint32_t i = 0; i < w->n_light_spheres; i++) {
+            light_sphere_t *ls = &w->light_spheres[l][i];
+            const sphere_t *s = &sc->spheres[i];
+            ls->toward = v3(0, 0, 0);
+            ls->cos_cut = -2 * R_ONE;
+            if (l >= sc->n_lights)
+                continue;
+            vec3_t lc = v3_sub(sc->lights[l].pos, s->centre);
+            real_t d = v3_length(lc);
+            if (d - s->radius < R_ONE)
+                continue;
+            real_t sin_a = r_div(s->radius, d);
+            ls->toward = v3_unit(lc);
+            ls->cos_cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - R_RATIO(1, 1024);
+        }
+    }
+}
+
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
     w->eye_ray = false;
@@ -185,6 +214,7 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++)
         camera_sphere_box(cam, sc->spheres[i].centre, sc->spheres[i].radius, w->eye_spheres[i].box);
     w->n_eye_spheres = i;
+    light_setup(sc, w);
 }
 
 /* Whether an eye ray's sample lies outside sphere i's box. */
@@ -197,12 +227,38 @@ static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_s
     return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
 }
 #define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
+
+/* Whether a shadow ray to light l (below RT_FLAT_SHADOW_LIGHTS) lies
+ * outside sphere i's cone (light_setup). */
+static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint32_t i, uint32_t l,
+                                         const ray_scratch_t *w)
+{
+    (void)s;
+    if (i >= w->n_light_spheres)
+        return false;
+    const light_sphere_t *ls = &w->light_spheres[l][i];
+    return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;
+}
+static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
+                                        const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)l, (void)w;
+    return false;
+}
+#define FLAT_SHADOW_MISS(e) _Generic((e), const sphere_t *: sphere_shadow_miss, default: never_shadow_miss)
 #else
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
     (void)sc, (void)cam, (void)w;
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
+#define FLAT_SHADOW_MISS(e) never_shadow_miss
+static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
+                                        const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)l, (void)w;
+    return false;
+}
 #endif
 /* the tests of a kind's loop, counted once (64-bit counters) */
 #define FLAT_COUNT(KIND, table, use) \
@@ -249,15 +305,21 @@ RT_NOINLINE static bool flat_nearest_eye(const scene_t *sc, const ray_t *ray, re
 }
 #endif
 
-RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
-                                    prim_ref_t *last_blocker, ray_scratch_t *w)
+/* light: the light the shadow ray goes to, culled by the light cones
+ * (light_setup), or RT_NO_SHADOW_LIGHT; cull: light is one of those set
+ * up, a constant in each of the two copies below. */
+static RT_INLINE bool flat_occluded_with(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                         prim_ref_t *last_blocker, ray_scratch_t *w, uint32_t light, bool cull)
 {
     const ray_t copy = *ray, *r = &copy; /* as in flat_nearest_with */
+    (void)light;
 #define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
             real_t t = tmax; \
+            if (cull && FLAT_SHADOW_MISS(&sc->table[i])(&sc->table[i], r, i, light, w)) \
+                continue; /* counted as tested */ \
             FLAT_TEST(KIND, table, name, use, &t, 0, false) { \
                 w->stats.prim_tests[PRIM_##KIND] += i + 1 - skipped; \
                 *last_blocker = ref; \
@@ -271,6 +333,20 @@ RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_
     *last_blocker = PRIM_NONE;
     return false;
 }
+
+RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                    prim_ref_t *last_blocker, ray_scratch_t *w)
+{
+    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, RT_NO_SHADOW_LIGHT, false);
+}
+
+#if RT_USE_FLAT
+RT_NOINLINE static bool flat_occluded_cone(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                           prim_ref_t *last_blocker, ray_scratch_t *w, uint32_t light)
+{
+    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, light, true);
+}
+#endif
 
 /* The unbounded kinds (planes), every one of them: before the BVH, so
  * their nearest hit limits the traversal. Their kinds come last in the
@@ -389,10 +465,19 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t *s = &w->any_slab;
     real_t t = tmax;
+#if RT_USE_FLAT
+    uint32_t light = w->shadow_light;
+    w->shadow_light = RT_NO_SHADOW_LIGHT; /* for this ray only */
+#endif
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;
-    if (searched_flat(sc))
+    if (searched_flat(sc)) {
+#if RT_USE_FLAT
+        if (light < RT_FLAT_SHADOW_LIGHTS)
+            return flat_occluded_cone(sc, r, tmin, tmax, last_blocker, w, light);
+#endif
         return flat_occluded(sc, r, tmin, tmax, last_blocker, w);
+    }
     if (unbounded_occluded(sc, r, tmin, tmax, last_blocker, w))
         return true;
     if (!enter_root(sc, s, r, tmin, tmax))

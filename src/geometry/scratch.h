@@ -39,6 +39,15 @@ typedef struct {
     int32_t box[4]; /* the eye samples that may meet it (camera_sphere_box) */
 } eye_sphere_t;
 
+/* Per sphere of a flat scene and light (scene_hit.c): the cone from the
+ * light that holds the sphere, made once a frame, so a shadow ray to the
+ * light outside it skips the sphere with one dot product. */
+typedef struct {
+    vec3_t toward; /* unit, from the centre to the light */
+    real_t cos_cut; /* a shadow ray's d . toward below it misses (less a margin) */
+} light_sphere_t;
+#define RT_NO_SHADOW_LIGHT UINT8_MAX
+
 typedef struct ray_scratch {
     rt_stats_t stats;                          /* added to the caller's after each step */
     bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH]; /* scene_nearest */
@@ -49,6 +58,10 @@ typedef struct ray_scratch {
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
     uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
+    uint8_t shadow_light;                      /* the light the next scene_occluded's ray goes to
+                                                * (trace.c), or RT_NO_SHADOW_LIGHT; read once */
+    uint32_t n_light_spheres;                  /* 0: no light set-up (scene_eye_setup) */
+    light_sphere_t light_spheres[RT_FLAT_SHADOW_LIGHTS][RT_FLAT_EYE_SPHERES];
 #endif
 #if RT_USE_OBJECTS
     spans_t csg_spans[RT_CSG_MAX_DEPTH + 1][2]; /* both children, per CSG level */
