@@ -108,6 +108,7 @@
 #define rd_transform_block       rt_rd_transform_block
 #define rd_translate             rt_rd_translate
 #define rd_union_block           rt_rd_union_block
+#define scene_fold_stats         rt_scene_fold_stats
 #define scene_nearest            rt_scene_nearest
 #define scene_nearest_brute      rt_scene_nearest_brute
 #define scene_eye_setup          rt_scene_eye_setup

@@ -208,7 +208,10 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
     w->eye_ray = false;
     w->n_eye_spheres = 0;
-    if (!searched_flat(sc))
+    for (unsigned k = 0; k < RT_STATS_MAX_KINDS; k++)
+        w->flat_tests[k] = 0;
+    w->flat = searched_flat(sc);
+    if (!w->flat)
         return;
     uint32_t i = 0;
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++)
@@ -249,7 +252,9 @@ static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t 
 #else
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
-    (void)sc, (void)cam, (void)w;
+    (void)sc, (void)cam;
+    for (unsigned k = 0; k < RT_STATS_MAX_KINDS; k++)
+        w->flat_tests[k] = 0;
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
 #define FLAT_SHADOW_MISS(e) never_shadow_miss
@@ -260,10 +265,19 @@ static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t 
     return false;
 }
 #endif
-/* the tests of a kind's loop, counted once (64-bit counters) */
+/* the tests of a kind's loop, counted once (32-bit counters that
+ * scene_fold_stats adds to the 64-bit ones) */
 #define FLAT_COUNT(KIND, table, use) \
     if ((use) && sc->n_##table) \
-        w->stats.prim_tests[PRIM_##KIND] += sc->n_##table - skipped;
+        w->flat_tests[PRIM_##KIND] += sc->n_##table - skipped;
+
+void scene_fold_stats(ray_scratch_t *w)
+{
+    for (unsigned k = 0; k < PRIM_KIND_COUNT; k++) {
+        w->stats.prim_tests[k] += w->flat_tests[k];
+        w->flat_tests[k] = 0;
+    }
+}
 
 /* eye: an eye ray (w->eye_ray), culled by the eye boxes; a constant in
  * each of the two copies below, so neither tests it per primitive. */
@@ -321,7 +335,7 @@ static RT_INLINE bool flat_occluded_with(const scene_t *sc, const ray_t *ray, re
             if (cull && FLAT_SHADOW_MISS(&sc->table[i])(&sc->table[i], r, i, light, w)) \
                 continue; /* counted as tested */ \
             FLAT_TEST(KIND, table, name, use, &t, 0, false) { \
-                w->stats.prim_tests[PRIM_##KIND] += i + 1 - skipped; \
+                w->flat_tests[PRIM_##KIND] += i + 1 - skipped; \
                 *last_blocker = ref; \
                 return true; \
             } \

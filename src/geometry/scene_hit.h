@@ -27,6 +27,11 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
  * scratch.h, eye_sphere_t and light_sphere_t); nothing otherwise. */
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w);
 
+/* Adds the flat search's 32-bit test counts to w->stats (and clears
+ * them): after each line of a scene searched flat (w->flat), and before
+ * w->stats is read. */
+void scene_fold_stats(ray_scratch_t *w);
+
 /* scene_nearest without the BVH: every primitive, in table order (the
  * reference the traversal is tested against). */
 bool scene_nearest_brute(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray_scratch_t *w);

@@ -50,10 +50,13 @@ typedef struct {
 
 typedef struct ray_scratch {
     rt_stats_t stats;                          /* added to the caller's after each step */
+    uint32_t flat_tests[RT_STATS_MAX_KINDS];   /* the flat search's tests, into stats a line at
+                                                * a time (scene_fold_stats): a 32-bit add */
     bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH]; /* scene_nearest */
     uint32_t any_stack[RT_BVH_MAX_DEPTH];      /* scene_occluded */
     slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
 #if RT_USE_FLAT
+    bool flat;                                 /* the scene is searched flat (scene_eye_setup) */
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
     uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
