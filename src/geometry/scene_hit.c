@@ -184,9 +184,8 @@ static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratc
 RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
 {
     w->shadow_light = RT_NO_SHADOW_LIGHT;
-    w->n_light_spheres = w->n_eye_spheres;
     for (uint32_t l = 0; l < RT_FLAT_SHADOW_LIGHTS; l++) {
-        for (uint32_t i = 0; i < w->n_light_spheres; i++) {
+        for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
             light_sphere_t *ls = &w->light_spheres[l][i];
             const sphere_t *s = &sc->spheres[i];
             ls->toward = v3(0, 0, 0);
@@ -220,11 +219,12 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
     light_setup(sc, w);
 }
 
-/* Whether an eye ray's sample lies outside sphere i's box. */
+/* Whether an eye ray's sample lies outside sphere i's box (every sphere
+ * below RT_FLAT_EYE_SPHERES has one, set up for the frame). */
 static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_scratch_t *w)
 {
     (void)s;
-    if (i >= w->n_eye_spheres)
+    if (i >= RT_FLAT_EYE_SPHERES)
         return false;
     const int32_t *box = w->eye_spheres[i].box;
     return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
@@ -237,8 +237,8 @@ static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint
                                          const ray_scratch_t *w)
 {
     (void)s;
-    if (i >= w->n_light_spheres)
-        return false;
+    if (i >= RT_FLAT_EYE_SPHERES)
+        return false; /* (below it, each has its cone, set up for the frame) */
     const light_sphere_t *ls = &w->light_spheres[l][i];
     return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;
 }
@@ -407,7 +407,7 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
     slab_ray_t s;
     if (searched_flat(sc)) {
 #if RT_USE_FLAT
-        if (w->eye_ray)
+        if (w->eye_ray) /* (set by trace_ray, whose caller set the frame up) */
             return flat_nearest_eye(sc, r, tmin, h, w);
 #endif
         return flat_nearest(sc, r, tmin, h, w);
@@ -487,7 +487,7 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
         return true;
     if (searched_flat(sc)) {
 #if RT_USE_FLAT
-        if (light < RT_FLAT_SHADOW_LIGHTS)
+        if (light < RT_FLAT_SHADOW_LIGHTS) /* (as w->eye_ray) */
             return flat_occluded_cone(sc, r, tmin, tmax, last_blocker, w, light);
 #endif
         return flat_occluded(sc, r, tmin, tmax, last_blocker, w);

@@ -57,13 +57,14 @@ typedef struct ray_scratch {
     slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
 #if RT_USE_FLAT
     bool flat;                                 /* the scene is searched flat (scene_eye_setup) */
+    /* eye_ray and shadow_light are set by trace_ray only, whose caller
+     * (render.c) has set the frame up (scene_eye_setup) */
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
-    uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
+    uint32_t n_eye_spheres;                    /* set up: min(spheres, RT_FLAT_EYE_SPHERES) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
     uint8_t shadow_light;                      /* the light the next scene_occluded's ray goes to
                                                 * (trace.c), or RT_NO_SHADOW_LIGHT; read once */
-    uint32_t n_light_spheres;                  /* 0: no light set-up (scene_eye_setup) */
     light_sphere_t light_spheres[RT_FLAT_SHADOW_LIGHTS][RT_FLAT_EYE_SPHERES];
 #endif
 #if RT_USE_OBJECTS
