@@ -183,7 +183,7 @@ static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratc
  * less than a unit off a sphere gets no cut (-2: every ray is tested). */
 RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
 {
-    w->shadow_light = RT_NO_SHADOW_LIGHT;
+    w->shadow_light = 0;
     for (uint32_t l = 0; l < RT_FLAT_SHADOW_LIGHTS; l++) {
         for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
             light_sphere_t *ls = &w->light_spheres[l][i];
@@ -320,7 +320,7 @@ RT_NOINLINE static bool flat_nearest_eye(const scene_t *sc, const ray_t *ray, re
 #endif
 
 /* light: the light the shadow ray goes to, culled by the light cones
- * (light_setup), or RT_NO_SHADOW_LIGHT; cull: light is one of those set
+ * (light_setup), or UINT32_MAX; cull: light is one of those set
  * up, a constant in each of the two copies below. */
 static RT_INLINE bool flat_occluded_with(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
                                          prim_ref_t *last_blocker, ray_scratch_t *w, uint32_t light, bool cull)
@@ -351,7 +351,7 @@ static RT_INLINE bool flat_occluded_with(const scene_t *sc, const ray_t *ray, re
 RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
                                     prim_ref_t *last_blocker, ray_scratch_t *w)
 {
-    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, RT_NO_SHADOW_LIGHT, false);
+    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, UINT32_MAX, false);
 }
 
 #if RT_USE_FLAT
@@ -480,8 +480,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
     slab_ray_t *s = &w->any_slab;
     real_t t = tmax;
 #if RT_USE_FLAT
-    uint32_t light = w->shadow_light;
-    w->shadow_light = RT_NO_SHADOW_LIGHT; /* for this ray only */
+    uint32_t light = w->shadow_light - 1u; /* UINT32_MAX: none */
+    w->shadow_light = 0; /* for this ray only */
 #endif
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;

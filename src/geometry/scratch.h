@@ -46,7 +46,6 @@ typedef struct {
     vec3_t toward; /* unit, from the centre to the light */
     real_t cos_cut; /* a shadow ray's d . toward below it misses (less a margin) */
 } light_sphere_t;
-#define RT_NO_SHADOW_LIGHT UINT8_MAX
 
 typedef struct ray_scratch {
     rt_stats_t stats;                          /* added to the caller's after each step */
@@ -63,8 +62,8 @@ typedef struct ray_scratch {
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
     uint32_t n_eye_spheres;                    /* set up: min(spheres, RT_FLAT_EYE_SPHERES) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
-    uint8_t shadow_light;                      /* the light the next scene_occluded's ray goes to
-                                                * (trace.c), or RT_NO_SHADOW_LIGHT; read once */
+    uint8_t shadow_light;                      /* 1 + the light the next scene_occluded's ray goes
+                                                * to (trace.c), or 0 (as zeroed); read once */
     light_sphere_t light_spheres[RT_FLAT_SHADOW_LIGHTS][RT_FLAT_EYE_SPHERES];
 #endif
 #if RT_USE_OBJECTS
