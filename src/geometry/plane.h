@@ -58,8 +58,13 @@ static RT_INLINE bool plane_hit_inline(const plane_t *pl, const ray_t *r, real_t
     if (t0 <= tmin || t0 >= *t)
         return false;
     /* Inside the far cube when t0 < far - 1 - max |o_a| (|d_a| <= 1 + 2^-19
-     * and t0 < 2^11): most hits, at no product. */
+     * and t0 < 2^11): most hits, at no product. Float and double take the
+     * sum of the |o_a| (three vabs, two adds), no less than their largest. */
+#if RT_BACKEND_FIXED
     real_t omax = r_max(r_max(r_abs(r->origin.x), r_abs(r->origin.y)), r_abs(r->origin.z));
+#else
+    real_t omax = R_FN(fabs)(r->origin.x) + R_FN(fabs)(r->origin.y) + R_FN(fabs)(r->origin.z);
+#endif
     if (t0 >= PLANE_FAR - R_ONE - omax && !plane_hit_inside(r, t0))
         return false;
     *t = t0;
