@@ -168,9 +168,9 @@ static RT_INLINE bool searched_flat(const scene_t *sc)
     return RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1);
 }
 
-static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratch_t *w)
+static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratch_t *w, uint32_t row, int32_t k)
 {
-    (void)p, (void)i, (void)w;
+    (void)p, (void)i, (void)w, (void)row, (void)k;
     return false;
 }
 
@@ -216,19 +216,44 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++)
         camera_sphere_box(cam, sc->spheres[i].centre, sc->spheres[i].radius, w->eye_spheres[i].box);
     w->n_eye_spheres = i;
+    w->row_m = INT32_MIN; /* (m is 2j - cy: never that) */
     light_setup(sc, w);
 }
 
+/* The spheres whose boxes hold the eye ray's row m (bit i), made when
+ * m changes: along a row, each eye ray then tests only k. */
+RT_NOINLINE static uint32_t eye_row_setup(ray_scratch_t *w)
+{
+    uint32_t mask = 0;
+    for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
+        const int32_t *box = w->eye_spheres[i].box;
+        mask |= (uint32_t)(w->eye_m >= box[2] && w->eye_m <= box[3]) << i;
+    }
+    w->row_m = w->eye_m;
+    w->row_mask = mask;
+    return mask;
+}
+
+static RT_INLINE uint32_t eye_row(ray_scratch_t *w)
+{
+    return w->eye_m == w->row_m ? w->row_mask : eye_row_setup(w);
+}
+
 /* Whether an eye ray's sample lies outside sphere i's box (every sphere
- * below RT_FLAT_EYE_SPHERES has one, set up for the frame). */
-static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_scratch_t *w)
+ * below RT_FLAT_EYE_SPHERES has one, set up for the frame): row is
+ * eye_row's mask. */
+static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_scratch_t *w, uint32_t row,
+                                      int32_t k)
 {
     (void)s;
     if (i >= RT_FLAT_EYE_SPHERES)
         return false;
+    if (!(row >> i & 1))
+        return true;
     const int32_t *box = w->eye_spheres[i].box;
-    return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
+    return k < box[0] || k > box[1];
 }
+_Static_assert(RT_FLAT_EYE_SPHERES <= 32, "a row's spheres are the bits of a word");
 #define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
 
 /* Whether a shadow ray to light l (below RT_FLAT_SHADOW_LIGHTS) lies
@@ -286,11 +311,19 @@ static RT_INLINE bool flat_nearest_with(const scene_t *sc, const ray_t *ray, rea
 {
     const ray_t copy = *ray, *r = &copy;
     bool found = false;
+    uint32_t row = 0;
+    int32_t k = 0;
+#if RT_USE_FLAT
+    if (eye) {
+        row = eye_row(w);
+        k = w->eye_k;
+    }
+#endif
 #define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
-            if (eye && FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], i, w)) \
+            if (eye && FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], i, w, row, k)) \
                 continue; /* counted as tested */ \
             FLAT_TEST(KIND, table, name, use, &h->t, h, eye) { \
                 h->kind = PRIM_##KIND; \

@@ -60,6 +60,8 @@ typedef struct ray_scratch {
      * (render.c) has set the frame up (scene_eye_setup) */
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
+    int32_t row_m;                             /* row_mask is for this m */
+    uint32_t row_mask;                         /* bit i: sphere i's box holds row m */
     uint32_t n_eye_spheres;                    /* set up: min(spheres, RT_FLAT_EYE_SPHERES) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
     uint8_t shadow_light;                      /* 1 + the light the next scene_occluded's ray goes
