@@ -224,6 +224,7 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
  * m changes: along a row, each eye ray then tests only k. */
 RT_NOINLINE static uint32_t eye_row_setup(ray_scratch_t *w)
 {
+    scene_fold_stats(w); /* a row's tests fit the 32-bit counts */
     uint32_t mask = 0;
     for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
         const int32_t *box = w->eye_spheres[i].box;
@@ -277,9 +278,7 @@ static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t 
 #else
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
-    (void)sc, (void)cam;
-    for (unsigned k = 0; k < RT_STATS_MAX_KINDS; k++)
-        w->flat_tests[k] = 0;
+    (void)sc, (void)cam, (void)w; /* (flat_tests: only the tests' brute force counts there) */
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
 #define FLAT_SHADOW_MISS(e) never_shadow_miss

@@ -28,8 +28,8 @@ bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax,
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w);
 
 /* Adds the flat search's 32-bit test counts to w->stats (and clears
- * them): after each line of a scene searched flat (w->flat), and before
- * w->stats is read. */
+ * them): at each new row of eye rays (scene_hit.c) and, in a scene
+ * searched flat (w->flat), before w->stats is read. */
 void scene_fold_stats(ray_scratch_t *w);
 
 /* scene_nearest without the BVH: every primitive, in table order (the

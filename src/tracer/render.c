@@ -612,6 +612,10 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 static void add_stats(rt_render_ctx_t *ctx)
 {
     rt_stats_t *part = &ctx->worker->scratch.stats;
+#if RT_USE_FLAT
+    if (ctx->worker->scratch.flat)
+        scene_fold_stats(&ctx->worker->scratch); /* (and at each row of eye rays) */
+#endif
     if (ctx->stats)
         rt_stats_add(ctx->stats, part);
     *part = (rt_stats_t){ 0 };
@@ -637,10 +641,6 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
         else
 #endif
             plain_line(ctx, y, line);
-#if RT_USE_FLAT
-        if (ctx->worker->scratch.flat)
-            scene_fold_stats(&ctx->worker->scratch); /* a line's tests fit its 32-bit counts */
-#endif
         if ((size_t)(y - ctx->band_y + 1) == ctx->band_lines || ctx->y == ctx->y_end) {
             status = flush_band(ctx, y);
             if (status != 0) {
