@@ -188,8 +188,12 @@ RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
         for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
             light_sphere_t *ls = &w->light_spheres[l][i];
             const sphere_t *s = &sc->spheres[i];
-            ls->toward = v3(0, 0, 0);
+            *ls = (light_sphere_t){ 0 };
+#if RT_BACKEND_FIXED
+            ls->cos_cut = INT32_MIN;
+#else
             ls->cos_cut = -2 * R_ONE;
+#endif
             if (l >= sc->n_lights)
                 continue;
             vec3_t lc = v3_sub(sc->lights[l].pos, s->centre);
@@ -197,8 +201,20 @@ RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
             if (d - s->radius < R_ONE)
                 continue;
             real_t sin_a = r_div(s->radius, d);
-            ls->toward = v3_unit(lc);
-            ls->cos_cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - R_RATIO(1, 1024);
+            vec3_t u = v3_unit(lc);
+            real_t cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - R_RATIO(1, 1024);
+#if RT_BACKEND_FIXED
+            /* d's components floored to Q.14 (an error below 2^-14 each),
+             * the axis rounded to it (2^-15): the dot product is within
+             * 2 sqrt3 2^-15 < 2^-12 of d . u, so the cut goes 2^-12 lower */
+            const int32_t axis[3] = { u.x, u.y, u.z };
+            for (int a = 0; a < 3; a++)
+                ls->toward[a] = (axis[a] + (1 << 5)) >> 6;
+            ls->cos_cut = cut * 256 - ((int32_t)1 << 16);
+#else
+            ls->toward = u;
+            ls->cos_cut = cut;
+#endif
         }
     }
 }
@@ -266,7 +282,14 @@ static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint
     if (i >= RT_FLAT_EYE_SPHERES)
         return false; /* (below it, each has its cone, set up for the frame) */
     const light_sphere_t *ls = &w->light_spheres[l][i];
+#if RT_BACKEND_FIXED /* 32-bit products, Q.14 x Q.14: cheap also without a long multiply */
+    _Static_assert(FX_FRAC_BITS == 20, "the cones' directions are Q.20");
+    /* |d_a| <= 1 + 2^-18: each product below 2^28 + 2^15, the sum in range */
+    return (r->dir.x >> 6) * ls->toward[0] + (r->dir.y >> 6) * ls->toward[1] + (r->dir.z >> 6) * ls->toward[2] <
+           ls->cos_cut;
+#else
     return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;
+#endif
 }
 static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
                                         const ray_scratch_t *w)

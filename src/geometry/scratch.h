@@ -43,8 +43,14 @@ typedef struct {
  * light that holds the sphere, made once a frame, so a shadow ray to the
  * light outside it skips the sphere with one dot product. */
 typedef struct {
-    vec3_t toward; /* unit, from the centre to the light */
+#if RT_BACKEND_FIXED
+    /* in 32-bit products (scene_hit.c): cheap also without a long multiply */
+    int32_t toward[3]; /* unit, from the centre to the light, in Q.14 */
+    int32_t cos_cut;   /* in Q.28 */
+#else
+    vec3_t toward;  /* unit, from the centre to the light */
     real_t cos_cut; /* a shadow ray's d . toward below it misses (less a margin) */
+#endif
 } light_sphere_t;
 
 typedef struct ray_scratch {
