@@ -61,7 +61,7 @@ GROUPS = [
     ("traversal", "BVH traversal, box tests, the dispatch to primitives",
      ["scene_nearest*", "scene_occluded", "slab_*", "enter_root", "hit_prim", "bvh_*", "unbounded_*"]),
     ("flat", "a one-leaf scene searched kind by kind, the primitives' tests inline in it",
-     ["flat_nearest*", "flat_occluded*", "scene_fold_stats"]),
+     ["flat_nearest*", "flat_occluded*", "scene_fold_stats", "eye_row_setup"]),
     ("sphere", "ray-sphere intersection", ["ray_hit_sphere", "sphere_prim_hit"]),
     ("plane", "ray-plane intersection", ["ray_hit_plane", "plane_hit_inside"]),
     ("polygon", "ray-polygon and patch intersection, inside tests",
