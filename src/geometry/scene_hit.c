@@ -157,9 +157,9 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
 /* a kind's test: the sphere's and the plane's inline (a call cost a
  * quarter of a test that misses), the others through their interface */
 #define FLAT_HIT(name, e) \
-    _Generic((e), const sphere_t *: sphere_prim_hit_inline, const plane_t *: plane_prim_hit_inline, \
-             default: name##_prim_hit)
-#define FLAT_RAY(e) _Generic((e), const sphere_t *: r, const plane_t *: r, default: ray)
+    _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: FLAT_HIT_NOT_SPHERE(name, e))
+#define FLAT_HIT_NOT_SPHERE(name, e) _Generic((e), const plane_t *: plane_prim_hit_inline, default: name##_prim_hit)
+#define FLAT_RAY(e) _Generic((e), const sphere_t *: r, default: _Generic((e), const plane_t *: r, default: ray))
 
 /* Whether the scene is searched flat: one leaf (or none), where the
  * build has the flat search; always, where it has no BVH traversal. */
