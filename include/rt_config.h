@@ -202,6 +202,9 @@
 #ifndef RT_FLAT_EYE_SPHERES         /* a flat scene's spheres set up per frame */
 #define RT_FLAT_EYE_SPHERES 8       /* for eye rays (16 bytes each a worker) */
 #endif
+#ifndef RT_FLAT_SHADOW_LIGHTS       /* the lights whose shadow rays a flat scene's */
+#define RT_FLAT_SHADOW_LIGHTS 1     /* spheres cull by a cone (16 bytes a sphere a light) */
+#endif
 #ifndef RT_USE_PATCHES
 #define RT_USE_PATCHES 1
 #endif
@@ -405,6 +408,12 @@
 #endif
 #if !(RT_MAX_LIGHTS >= 1 && RT_MAX_LIGHTS <= 255)
 #error "RT_MAX_LIGHTS out of 1..255"
+#endif
+#if !(RT_FLAT_EYE_SPHERES >= 1 && RT_FLAT_EYE_SPHERES <= 32)
+#error "RT_FLAT_EYE_SPHERES out of 1..32"
+#endif
+#if !(RT_FLAT_SHADOW_LIGHTS >= 1 && RT_FLAT_SHADOW_LIGHTS <= RT_MAX_LIGHTS)
+#error "RT_FLAT_SHADOW_LIGHTS out of 1..RT_MAX_LIGHTS"
 #endif
 
 #endif

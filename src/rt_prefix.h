@@ -62,6 +62,7 @@
 #define lex_vec3                 rt_lex_vec3
 #define nff_read                 rt_nff_read
 #define object_prim_surface      rt_object_prim_surface
+#define plane_hit_inside         rt_plane_hit_inside
 #define plane_init               rt_plane_init
 #define polygon_init             rt_polygon_init
 #define polygon_shading_normal   rt_polygon_shading_normal
@@ -107,6 +108,7 @@
 #define rd_transform_block       rt_rd_transform_block
 #define rd_translate             rt_rd_translate
 #define rd_union_block           rt_rd_union_block
+#define scene_fold_stats         rt_scene_fold_stats
 #define scene_nearest            rt_scene_nearest
 #define scene_nearest_brute      rt_scene_nearest_brute
 #define scene_eye_setup          rt_scene_eye_setup

@@ -8,7 +8,9 @@
  * with the right leaf and with a random one, the hit must not change. Any-
  * hit rays (shadow rays, scene_occluded) must say "blocked" exactly when
  * brute force finds a hit before their end, whatever the blocker they try
- * first.
+ * first. And a flat scene's shadow rays to its light, which skip spheres
+ * outside the light's cones, are blocked exactly as without the cones (in
+ * every backend).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -41,6 +43,72 @@ static void unit(double d[3])
     double l = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int k = 0; k < 3; k++)
         d[k] /= l;
+}
+
+/* The light cones of a flat scene's shadow rays (scene_hit.c,
+ * light_setup): for random scenes of a few spheres (and a floor), shadow
+ * rays from random points and from points of the spheres to the light
+ * must be blocked exactly as without the cones. */
+static void light_cones(const rt_backend_t *be, const char *name)
+{
+    int scenes_flat = 0, rays = 0, blocked_n = 0, differ = 0;
+    for (int n = 0; n < 60; n++) {
+        char text[1024];
+        int len = 0, spheres = 1 + (int)(tl_rand() % 4);
+        double light[3], c[4][4];
+        for (int k = 0; k < 3; k++)
+            light[k] = tl_uniform(-12, 12);
+        len += snprintf(text + len, sizeof text - (size_t)len,
+                        "v\nfrom 0 -30 4\nat 0 0 0\nup 0 0 1\nangle 40\nhither 0.01\nresolution 16 16\n"
+                        "l %.4f %.4f %.4f\nf 1 1 1 0.8 0.2 8 0 1\n", light[0], light[1], light[2]);
+        if (n & 1)
+            len += snprintf(text + len, sizeof text - (size_t)len, "plane 0 0 -8  0 0 1\n");
+        for (int i = 0; i < spheres; i++) {
+            for (int k = 0; k < 3; k++)
+                c[i][k] = tl_uniform(-6, 6);
+            c[i][3] = pow(2.0, tl_uniform(-3, 1.5));
+            len += snprintf(text + len, sizeof text - (size_t)len, "s %.4f %.4f %.4f %.4f\n", c[i][0], c[i][1],
+                            c[i][2], c[i][3]);
+        }
+        rt_error_t err;
+        bvh_stats_t bs;
+        if (!be->load(text, (size_t)len, &err))
+            continue;
+        be->bvh_stats(&bs);
+        scenes_flat += bs.nodes <= 1;
+        for (int i = 0; i < 400; i++) {
+            double o[3], d[3], tmax = 0;
+            if (i & 1) { /* on a sphere, or just off it */
+                int j = (int)(tl_rand() % (unsigned)spheres);
+                double u[3] = { tl_uniform(-1, 1), tl_uniform(-1, 1), tl_uniform(-1, 1) };
+                unit(u);
+                for (int k = 0; k < 3; k++)
+                    o[k] = c[j][k] + (c[j][3] + tl_uniform(-1e-4, 1e-4)) * u[k];
+            } else {
+                for (int k = 0; k < 3; k++)
+                    o[k] = tl_uniform(-10, 10);
+            }
+            for (int k = 0; k < 3; k++) {
+                d[k] = light[k] - o[k];
+                tmax += d[k] * d[k];
+            }
+            tmax = sqrt(tmax);
+            unit(d);
+            uint32_t lb_a = UINT32_MAX, lb_b = UINT32_MAX;
+            bool a = be->occluded_light(0, o, d, tmax, &lb_a), b = be->occluded(o, d, tmax, UINT32_MAX, &lb_b);
+            rays++;
+            blocked_n += b;
+            if (a != b) {
+                if (differ < 3)
+                    printf("    %s: scene %d: o %.6f %.6f %.6f to the light: %d with the cones, %d without\n", name,
+                           n, o[0], o[1], o[2], a, b);
+                differ++;
+            }
+        }
+    }
+    CHECK(differ == 0 && scenes_flat > 20 && blocked_n > rays / 20,
+          "%s light cones: %d shadow rays in %d flat scenes (%d blocked): %d differ from the search without them",
+          name, rays, scenes_flat, blocked_n, differ);
 }
 
 int main(void)
@@ -148,5 +216,8 @@ int main(void)
         CHECK(differ == 0, "%s: %d rays (%d hits): BVH and brute force differ on %d", scenes[s], rays, hits,
               differ);
     }
+    light_cones(&rt_backend_fixed, "fixed");
+    light_cones(&rt_backend_float, "float");
+    light_cones(&rt_backend_double, "double");
     return tl_summary("test_bvh");
 }

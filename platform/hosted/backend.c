@@ -166,6 +166,26 @@ static bool occluded(const double o[3], const double d[3], double tmax, uint32_t
     return b;
 }
 
+static bool occluded_light(uint32_t light, const double o[3], const double d[3], double tmax,
+                           uint32_t *last_blocker)
+{
+    ray_t r = probe_ray(o, d, RT_NO_LEAF);
+    static ray_scratch_t st; /* one probe at a time */
+    camera_t cam;
+    if (camera_init(&cam, &store.scene.view, 16, 16))
+        return false;
+    scene_eye_setup(&store.scene, &cam, &st);
+#if RT_USE_FLAT
+    st.shadow_light = (uint8_t)(light < UINT8_MAX ? light + 1 : 0);
+#else
+    (void)light;
+#endif
+    prim_ref_t blocker = *last_blocker;
+    bool b = scene_occluded(&store.scene, &r, RT_T_MIN, to_real(tmax / world_per_unit()), &blocker, &st);
+    *last_blocker = blocker;
+    return b;
+}
+
 static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 {
     camera_t cam;
@@ -201,5 +221,5 @@ static bool texture_at(uint32_t texture, const double p[3], double rgb[3])
 
 const rt_backend_t BACKEND_SYMBOL = {
     load, resolution, flat_skipped, scale_log2, saturations, bvh_stats, render, render_steps, rt_stats_each, rt_stats_add, probe, probe_leaf, occluded,
-    bounds, eye_dir, pow_unit, texture_at,
+    occluded_light, bounds, eye_dir, pow_unit, texture_at,
 };

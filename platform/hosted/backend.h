@@ -62,6 +62,11 @@ typedef struct {
     bool (*probe_leaf)(const double origin[3], const double dir[3], uint32_t leaf, probe_hit_t *hit);
     bool (*occluded)(const double origin[3], const double dir[3], double tmax, uint32_t leaf,
                      uint32_t *last_blocker);
+    /* The same for a shadow ray to light `light`, with the frame set up as
+     * a render sets it (scene_eye_setup): a flat scene's search may skip
+     * spheres by the light's cones. */
+    bool (*occluded_light)(uint32_t light, const double origin[3], const double dir[3], double tmax,
+                           uint32_t *last_blocker);
     /* The scene's bounds (root box of the BVH); false for an empty scene. */
     bool (*bounds)(double min[3], double max[3]);
     /* Eye-ray direction of grid sample (i, j) of an nx x ny camera. */

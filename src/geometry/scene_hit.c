@@ -142,18 +142,24 @@ static RT_INLINE void children(const bvh_node_t *n, uint32_t node, uint32_t path
  * reference or dispatch per primitive): the reference the traversal is
  * tested against, and the whole search when the tree is one leaf (a few
  * primitives: it holds them all in table order, and needs no box test).
- * Ties go to the earlier, as in the traversal. */
-#define FLAT_TEST(KIND, table, name, use, t, hit) \
+ * Ties go to the earlier, as in the traversal. The kinds tested inline
+ * read the ray from `r`, a local copy that never leaves the function, so
+ * it lives in registers and hit writes cannot alias it; the others get
+ * the caller's `ray`. An eye ray starts on no primitive: it skips none. */
+#define FLAT_TEST(KIND, table, name, use, t, hit, eye) \
     prim_ref_t ref = PRIM_REF(PRIM_##KIND, i); \
-    bool self = ref == r->from; \
+    bool self = !(eye) && ref == r->from; \
     if (self && !r->from_far) { \
         skipped++; /* leaving its outside, or a plane */ \
         continue; \
     } \
-    if (FLAT_HIT(name, &sc->table[i])(sc, &sc->table[i], r, tmin, t, self, w, hit))
-/* a kind's test: the sphere's inline (a call cost a quarter of a test
- * that misses), the others through their interface */
-#define FLAT_HIT(name, e) _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: name##_prim_hit)
+    if (FLAT_HIT(name, &sc->table[i])(sc, &sc->table[i], FLAT_RAY(&sc->table[i]), tmin, t, self, w, hit))
+/* a kind's test: the sphere's and the plane's inline (a call cost a
+ * quarter of a test that misses), the others through their interface */
+#define FLAT_HIT(name, e) \
+    _Generic((e), const sphere_t *: sphere_prim_hit_inline, default: FLAT_HIT_NOT_SPHERE(name, e))
+#define FLAT_HIT_NOT_SPHERE(name, e) _Generic((e), const plane_t *: plane_prim_hit_inline, default: name##_prim_hit)
+#define FLAT_RAY(e) _Generic((e), const sphere_t *: r, default: _Generic((e), const plane_t *: r, default: ray))
 
 /* Whether the scene is searched flat: one leaf (or none), where the
  * build has the flat search; always, where it has no BVH traversal. */
@@ -162,58 +168,186 @@ static RT_INLINE bool searched_flat(const scene_t *sc)
     return RT_USE_FLAT && (!RT_USE_BVH || sc->n_bvh_nodes <= 1);
 }
 
-static RT_INLINE bool never_eye_miss(const void *p, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratch_t *w, uint32_t row, int32_t k)
 {
-    (void)p, (void)r, (void)i, (void)w;
+    (void)p, (void)i, (void)w, (void)row, (void)k;
     return false;
 }
 
 #if RT_USE_FLAT
+/* A shadow ray from P along d (unit) to the light L that meets sphere
+ * (C, r) at X leaves L towards X along -d, inside the cone from L that
+ * holds the sphere: d . unit(L - C) >= cos a, sin a = r / |L - C|. The
+ * cut is taken 2^-10 lower, more than the error of d, of a test's hit
+ * point seen from at least a unit away, and of these products; a light
+ * less than a unit off a sphere gets no cut (-2: every ray is tested). */
+RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
+{
+    w->shadow_light = 0;
+    for (uint32_t l = 0; l < RT_FLAT_SHADOW_LIGHTS; l++) {
+        for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
+            light_sphere_t *ls = &w->light_spheres[l][i];
+            const sphere_t *s = &sc->spheres[i];
+            *ls = (light_sphere_t){ 0 };
+#if RT_BACKEND_FIXED
+            ls->cos_cut = INT32_MIN;
+#else
+            ls->cos_cut = -2 * R_ONE;
+#endif
+            if (l >= sc->n_lights)
+                continue;
+            vec3_t lc = v3_sub(sc->lights[l].pos, s->centre);
+            real_t d = v3_length(lc);
+            if (d - s->radius < R_ONE)
+                continue;
+            real_t sin_a = r_div(s->radius, d);
+            vec3_t u = v3_unit(lc);
+            real_t cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - R_RATIO(1, 1024);
+#if RT_BACKEND_FIXED
+            /* d's components floored to Q.14 (an error below 2^-14 each),
+             * the axis rounded to it (2^-15): the dot product is within
+             * 2 sqrt3 2^-15 < 2^-12 of d . u, so the cut goes 2^-12 lower */
+            const int32_t axis[3] = { u.x, u.y, u.z };
+            for (int a = 0; a < 3; a++)
+                ls->toward[a] = (axis[a] + (1 << 5)) >> 6;
+            ls->cos_cut = cut * 256 - ((int32_t)1 << 16);
+#else
+            ls->toward = u;
+            ls->cos_cut = cut;
+#endif
+        }
+    }
+}
+
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
     w->eye_ray = false;
     w->n_eye_spheres = 0;
-    if (!searched_flat(sc))
+    for (unsigned k = 0; k < RT_STATS_MAX_KINDS; k++)
+        w->flat_tests[k] = 0;
+    w->flat = searched_flat(sc);
+    if (!w->flat)
         return;
     uint32_t i = 0;
     for (; i < sc->n_spheres && i < RT_FLAT_EYE_SPHERES; i++)
         camera_sphere_box(cam, sc->spheres[i].centre, sc->spheres[i].radius, w->eye_spheres[i].box);
     w->n_eye_spheres = i;
+    w->row_m = INT32_MIN; /* (m is 2j - cy: never that) */
+    light_setup(sc, w);
 }
 
-/* Whether an eye ray's sample lies outside sphere i's box. */
-static RT_INLINE bool sphere_eye_miss(const sphere_t *s, const ray_t *r, uint32_t i, const ray_scratch_t *w)
+/* The spheres whose boxes hold the eye ray's row m (bit i), made when
+ * m changes: along a row, each eye ray then tests only k. */
+RT_NOINLINE static uint32_t eye_row_setup(ray_scratch_t *w)
 {
-    (void)s, (void)r;
-    if (!w->eye_ray || i >= w->n_eye_spheres)
-        return false;
-    const int32_t *box = w->eye_spheres[i].box;
-    return w->eye_k < box[0] || w->eye_k > box[1] || w->eye_m < box[2] || w->eye_m > box[3];
+    scene_fold_stats(w); /* a row's tests fit the 32-bit counts */
+    uint32_t mask = 0;
+    for (uint32_t i = 0; i < w->n_eye_spheres; i++) {
+        const int32_t *box = w->eye_spheres[i].box;
+        mask |= (uint32_t)(w->eye_m >= box[2] && w->eye_m <= box[3]) << i;
+    }
+    w->row_m = w->eye_m;
+    w->row_mask = mask;
+    return mask;
 }
+
+static RT_INLINE uint32_t eye_row(ray_scratch_t *w)
+{
+    return w->eye_m == w->row_m ? w->row_mask : eye_row_setup(w);
+}
+
+/* Whether an eye ray's sample lies outside sphere i's box (every sphere
+ * below RT_FLAT_EYE_SPHERES has one, set up for the frame): row is
+ * eye_row's mask. */
+static RT_INLINE bool sphere_eye_miss(const sphere_t *s, uint32_t i, const ray_scratch_t *w, uint32_t row,
+                                      int32_t k)
+{
+    (void)s;
+    if (i >= RT_FLAT_EYE_SPHERES)
+        return false;
+    if (!(row >> i & 1))
+        return true;
+    const int32_t *box = w->eye_spheres[i].box;
+    return k < box[0] || k > box[1];
+}
+_Static_assert(RT_FLAT_EYE_SPHERES <= 32, "a row's spheres are the bits of a word");
 #define FLAT_EYE_MISS(e) _Generic((e), const sphere_t *: sphere_eye_miss, default: never_eye_miss)
+
+/* Whether a shadow ray to light l (below RT_FLAT_SHADOW_LIGHTS) lies
+ * outside sphere i's cone (light_setup). */
+static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint32_t i, uint32_t l,
+                                         const ray_scratch_t *w)
+{
+    (void)s;
+    if (i >= RT_FLAT_EYE_SPHERES)
+        return false; /* (below it, each has its cone, set up for the frame) */
+    const light_sphere_t *ls = &w->light_spheres[l][i];
+#if RT_BACKEND_FIXED /* 32-bit products, Q.14 x Q.14: cheap also without a long multiply */
+    _Static_assert(FX_FRAC_BITS == 20, "the cones' directions are Q.20");
+    /* |d_a| <= 1 + 2^-18: each product below 2^28 + 2^15, the sum in range */
+    return (r->dir.x >> 6) * ls->toward[0] + (r->dir.y >> 6) * ls->toward[1] + (r->dir.z >> 6) * ls->toward[2] <
+           ls->cos_cut;
+#else
+    return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;
+#endif
+}
+static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
+                                        const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)l, (void)w;
+    return false;
+}
+#define FLAT_SHADOW_MISS(e) _Generic((e), const sphere_t *: sphere_shadow_miss, default: never_shadow_miss)
 #else
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 {
-    (void)sc, (void)cam, (void)w;
+    (void)sc, (void)cam, (void)w; /* (flat_tests: only the tests' brute force counts there) */
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
+#define FLAT_SHADOW_MISS(e) never_shadow_miss
+static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
+                                        const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)l, (void)w;
+    return false;
+}
 #endif
-/* the tests of a kind's loop, counted once (64-bit counters) */
+/* the tests of a kind's loop, counted once (32-bit counters that
+ * scene_fold_stats adds to the 64-bit ones) */
 #define FLAT_COUNT(KIND, table, use) \
     if ((use) && sc->n_##table) \
-        w->stats.prim_tests[PRIM_##KIND] += sc->n_##table - skipped;
+        w->flat_tests[PRIM_##KIND] += sc->n_##table - skipped;
 
-RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h, ray_scratch_t *w)
+void scene_fold_stats(ray_scratch_t *w)
 {
-    const ray_t copy = *ray, *r = &copy; /* a local: hit writes cannot alias it, so it stays in registers */
+    for (unsigned k = 0; k < PRIM_KIND_COUNT; k++) {
+        w->stats.prim_tests[k] += w->flat_tests[k];
+        w->flat_tests[k] = 0;
+    }
+}
+
+/* eye: an eye ray (w->eye_ray), culled by the eye boxes; a constant in
+ * each of the two copies below, so neither tests it per primitive. */
+static RT_INLINE bool flat_nearest_with(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h,
+                                        ray_scratch_t *w, bool eye)
+{
+    const ray_t copy = *ray, *r = &copy;
     bool found = false;
+    uint32_t row = 0;
+    int32_t k = 0;
+#if RT_USE_FLAT
+    if (eye) {
+        row = eye_row(w);
+        k = w->eye_k;
+    }
+#endif
 #define RT_FLAT_NEAREST(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
-            if (FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], r, i, w)) \
+            if (eye && FLAT_EYE_MISS(&sc->table[i])(&sc->table[i], i, w, row, k)) \
                 continue; /* counted as tested */ \
-            FLAT_TEST(KIND, table, name, use, &h->t, h) { \
+            FLAT_TEST(KIND, table, name, use, &h->t, h, eye) { \
                 h->kind = PRIM_##KIND; \
                 h->index = i; \
                 h->leaf = RT_PRIM_UNBOUNDED(PRIM_##KIND) ? RT_NO_LEAF : 0; \
@@ -227,17 +361,36 @@ RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t
     return found;
 }
 
-RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
-                                    prim_ref_t *last_blocker, ray_scratch_t *w)
+RT_NOINLINE static bool flat_nearest(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h, ray_scratch_t *w)
 {
-    const ray_t copy = *ray, *r = &copy; /* as in flat_nearest */
+    return flat_nearest_with(sc, ray, tmin, h, w, false);
+}
+
+#if RT_USE_FLAT
+RT_NOINLINE static bool flat_nearest_eye(const scene_t *sc, const ray_t *ray, real_t tmin, hit_t *h,
+                                         ray_scratch_t *w)
+{
+    return flat_nearest_with(sc, ray, tmin, h, w, true);
+}
+#endif
+
+/* light: the light the shadow ray goes to, culled by the light cones
+ * (light_setup), or UINT32_MAX; cull: light is one of those set
+ * up, a constant in each of the two copies below. */
+static RT_INLINE bool flat_occluded_with(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                         prim_ref_t *last_blocker, ray_scratch_t *w, uint32_t light, bool cull)
+{
+    const ray_t copy = *ray, *r = &copy; /* as in flat_nearest_with */
+    (void)light;
 #define RT_FLAT_ANY(type, table, cap, KIND, name, use) \
     { \
         uint32_t skipped = 0; \
         for (uint32_t i = 0; (use) && i < sc->n_##table; i++) { \
             real_t t = tmax; \
-            FLAT_TEST(KIND, table, name, use, &t, 0) { \
-                w->stats.prim_tests[PRIM_##KIND] += i + 1 - skipped; \
+            if (cull && FLAT_SHADOW_MISS(&sc->table[i])(&sc->table[i], r, i, light, w)) \
+                continue; /* counted as tested */ \
+            FLAT_TEST(KIND, table, name, use, &t, 0, false) { \
+                w->flat_tests[PRIM_##KIND] += i + 1 - skipped; \
                 *last_blocker = ref; \
                 return true; \
             } \
@@ -249,6 +402,20 @@ RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_
     *last_blocker = PRIM_NONE;
     return false;
 }
+
+RT_NOINLINE static bool flat_occluded(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                    prim_ref_t *last_blocker, ray_scratch_t *w)
+{
+    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, UINT32_MAX, false);
+}
+
+#if RT_USE_FLAT
+RT_NOINLINE static bool flat_occluded_cone(const scene_t *sc, const ray_t *ray, real_t tmin, real_t tmax,
+                                           prim_ref_t *last_blocker, ray_scratch_t *w, uint32_t light)
+{
+    return flat_occluded_with(sc, ray, tmin, tmax, last_blocker, w, light, true);
+}
+#endif
 
 /* The unbounded kinds (planes), every one of them: before the BVH, so
  * their nearest hit limits the traversal. Their kinds come last in the
@@ -293,8 +460,13 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 {
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t s;
-    if (searched_flat(sc))
+    if (searched_flat(sc)) {
+#if RT_USE_FLAT
+        if (w->eye_ray) /* (set by trace_ray, whose caller set the frame up) */
+            return flat_nearest_eye(sc, r, tmin, h, w);
+#endif
         return flat_nearest(sc, r, tmin, h, w);
+    }
     bool found = unbounded_nearest(sc, r, tmin, h, w);
     if (!enter_root(sc, &s, r, tmin, h->t))
         return found;
@@ -362,10 +534,19 @@ RT_FRAME bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, rea
     const bvh_node_t *nodes = sc->bvh_nodes;
     slab_ray_t *s = &w->any_slab;
     real_t t = tmax;
+#if RT_USE_FLAT
+    uint32_t light = w->shadow_light - 1u; /* UINT32_MAX: none */
+    w->shadow_light = 0; /* for this ray only */
+#endif
     if (*last_blocker != PRIM_NONE && hit_prim(sc, *last_blocker, r, tmin, &t, w, 0))
         return true;
-    if (searched_flat(sc))
+    if (searched_flat(sc)) {
+#if RT_USE_FLAT
+        if (light < RT_FLAT_SHADOW_LIGHTS) /* (as w->eye_ray) */
+            return flat_occluded_cone(sc, r, tmin, tmax, last_blocker, w, light);
+#endif
         return flat_occluded(sc, r, tmin, tmax, last_blocker, w);
+    }
     if (unbounded_occluded(sc, r, tmin, tmax, last_blocker, w))
         return true;
     if (!enter_root(sc, s, r, tmin, tmax))

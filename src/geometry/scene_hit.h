@@ -21,10 +21,16 @@ bool scene_nearest(const scene_t *sc, const ray_t *r, real_t tmin, hit_t *h, ray
 bool scene_occluded(const scene_t *sc, const ray_t *r, real_t tmin, real_t tmax, prim_ref_t *last_blocker,
                     ray_scratch_t *w);
 
-/* Per frame, for the camera's eye rays: what lets them reject the spheres
- * of a flat scene early (the samples each may meet: scratch.h,
- * eye_sphere_t); nothing otherwise. */
+/* Per frame, for the camera's eye rays and the shadow rays to the first
+ * lights: what lets them reject the spheres of a flat scene early (the
+ * samples each may meet, the cone from the light that holds each:
+ * scratch.h, eye_sphere_t and light_sphere_t); nothing otherwise. */
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w);
+
+/* Adds the flat search's 32-bit test counts to w->stats (and clears
+ * them): at each new row of eye rays (scene_hit.c) and, in a scene
+ * searched flat (w->flat), before w->stats is read. */
+void scene_fold_stats(ray_scratch_t *w);
 
 /* scene_nearest without the BVH: every primitive, in table order (the
  * reference the traversal is tested against). */

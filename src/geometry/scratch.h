@@ -39,16 +39,40 @@ typedef struct {
     int32_t box[4]; /* the eye samples that may meet it (camera_sphere_box) */
 } eye_sphere_t;
 
+/* Per sphere of a flat scene and light (scene_hit.c): the cone from the
+ * light that holds the sphere, made once a frame, so a shadow ray to the
+ * light outside it skips the sphere with one dot product. */
+typedef struct {
+#if RT_BACKEND_FIXED
+    /* in 32-bit products (scene_hit.c): cheap also without a long multiply */
+    int32_t toward[3]; /* unit, from the centre to the light, in Q.14 */
+    int32_t cos_cut;   /* in Q.28 */
+#else
+    vec3_t toward;  /* unit, from the centre to the light */
+    real_t cos_cut; /* a shadow ray's d . toward below it misses (less a margin) */
+#endif
+} light_sphere_t;
+
 typedef struct ray_scratch {
     rt_stats_t stats;                          /* added to the caller's after each step */
+    uint32_t flat_tests[RT_STATS_MAX_KINDS];   /* the flat search's tests, into stats a line at
+                                                * a time (scene_fold_stats): a 32-bit add */
     bvh_stack_t nearest_stack[RT_BVH_MAX_DEPTH]; /* scene_nearest */
     uint32_t any_stack[RT_BVH_MAX_DEPTH];      /* scene_occluded */
     slab_ray_t any_slab;                       /* scene_occluded's ray: off the stack under the shading */
 #if RT_USE_FLAT
+    bool flat;                                 /* the scene is searched flat (scene_eye_setup) */
+    /* eye_ray and shadow_light are set by trace_ray only, whose caller
+     * (render.c) has set the frame up (scene_eye_setup) */
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
     int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
-    uint32_t n_eye_spheres;                    /* 0: no eye set-up (scene_eye_setup) */
+    int32_t row_m;                             /* row_mask is for this m */
+    uint32_t row_mask;                         /* bit i: sphere i's box holds row m */
+    uint32_t n_eye_spheres;                    /* set up: min(spheres, RT_FLAT_EYE_SPHERES) */
     eye_sphere_t eye_spheres[RT_FLAT_EYE_SPHERES];
+    uint8_t shadow_light;                      /* 1 + the light the next scene_occluded's ray goes
+                                                * to (trace.c), or 0 (as zeroed); read once */
+    light_sphere_t light_spheres[RT_FLAT_SHADOW_LIGHTS][RT_FLAT_EYE_SPHERES];
 #endif
 #if RT_USE_OBJECTS
     spans_t csg_spans[RT_CSG_MAX_DEPTH + 1][2]; /* both children, per CSG level */

@@ -618,6 +618,10 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
 static void add_stats(rt_render_ctx_t *ctx)
 {
     rt_stats_t *part = &ctx->worker->scratch.stats;
+#if RT_USE_FLAT
+    if (ctx->worker->scratch.flat)
+        scene_fold_stats(&ctx->worker->scratch); /* (and at each row of eye rays) */
+#endif
     if (ctx->stats)
         rt_stats_add(ctx->stats, part);
     *part = (rt_stats_t){ 0 };

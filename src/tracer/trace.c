@@ -176,6 +176,9 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
          * (L - O) . ldir, within a few ulps of |L - O| */
         if (!R_UNIT_LEN_FREE || s->offset != 0)
             dist = v3_dot(v3_sub(l->pos, shadow.origin), ldir);
+#if RT_USE_FLAT
+        tr->scratch->shadow_light = (uint8_t)(i + 1); /* it goes to light i (scene_eye_setup) */
+#endif
         if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
             add_light(&c, t, s, l, &shadow.dir, ndl);
     }
