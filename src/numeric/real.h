@@ -117,7 +117,31 @@ static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
 #if RT_BACKEND_FLOAT
 /* x^s in float arithmetic alone, 0 for x <= 0 (real_float.c, with its accuracy) */
 float r_pow_float(float x, float s);
-static inline real_t r_pow_unit(real_t x, shine_t s) { return r_pow_float(x, s); }
+/* x^s for an integer s, 2 <= s <= 64, by its binary powers, each product
+ * rounded once: r_pow_float's own first path, the same products, inline
+ * (a Phong exponent is mostly such an s); 0 where it leaves the result
+ * to r_pow_float's general path (x <= 0, or a factor below 2^-100) */
+static inline float r_pow_float_small_int(float x, float s)
+{
+    if (!(x > 0) || !(s >= 2 && s <= 64 && s == (float)(int32_t)s))
+        return 0;
+    uint32_t m = (uint32_t)s;
+    float u = x;
+    for (; !(m & 1); m >>= 1)
+        u *= u;
+    float p = u; /* x^(lowest bit of s) */
+    for (m >>= 1; m; m >>= 1) {
+        u *= u;
+        if (m & 1)
+            p *= u;
+    }
+    return p >= 0x1p-100f ? p : 0; /* no factor was subnormal (x <= 1: each is >= p) */
+}
+static inline real_t r_pow_unit(real_t x, shine_t s)
+{
+    float p = r_pow_float_small_int(x, s);
+    return p != 0 ? p : r_pow_float(x, s);
+}
 #else
 static inline real_t r_pow_unit(real_t x, shine_t s) { return x <= 0 ? 0 : R_FN(pow)(x, s); }
 #endif
@@ -299,7 +323,7 @@ static inline real_t r_mul_bounded(real_t a, real_t b, real_t lim)
 }
 static inline real_t r_add_bounded(real_t a, real_t b, real_t lim) { return r_bound_wide((int64_t)a + b, lim); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
-static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit(x, s); }
+static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit_fast(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
 {

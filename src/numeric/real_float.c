@@ -233,21 +233,10 @@ float r_pow_float(float x, float s)
         return x;
     /* s an integer, 2 <= s <= 64: its binary powers, each product
      * rounded once (relative error below s 2^-24), a tenth of the general
-     * path's work, for the exponents scenes pick by hand */
-    if (s >= 2 && s <= 64 && s == (float)(int32_t)s) {
-        uint32_t m = (uint32_t)s;
-        float u = x;
-        for (; !(m & 1); m >>= 1)
-            u *= u;
-        float p = u; /* x^(lowest bit of s) */
-        for (m >>= 1; m; m >>= 1) {
-            u *= u;
-            if (m & 1)
-                p *= u;
-        }
-        if (p >= 0x1p-100f) /* no factor was subnormal (x <= 1: each is >= p); else the general path */
-            return p;
-    }
+     * path's work, for the exponents scenes pick by hand (real.h) */
+    float small = r_pow_float_small_int(x, s);
+    if (small != 0)
+        return small;
 
     /* y = s log2 x = yh + yl */
     float lh, ll, yh, yl;
