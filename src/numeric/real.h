@@ -139,6 +139,8 @@ static inline float r_pow_float_small_int(float x, float s)
 }
 static inline real_t r_pow_unit(real_t x, shine_t s)
 {
+    if (x <= 0) /* as r_pow_float (a highlight facing away) */
+        return 0;
     float p = r_pow_float_small_int(x, s);
     return p != 0 ? p : r_pow_float(x, s);
 }
