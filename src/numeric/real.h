@@ -117,14 +117,13 @@ static inline real_t r_next_up(real_t a) { return a + a * R_EPSILON; }
 #if RT_BACKEND_FLOAT
 /* x^s in float arithmetic alone, 0 for x <= 0 (real_float.c, with its accuracy) */
 float r_pow_float(float x, float s);
-/* x^s for an integer s, 2 <= s <= 64, by its binary powers, each product
- * rounded once: r_pow_float's own first path, the same products, inline
- * (a Phong exponent is mostly such an s); 0 where it leaves the result
- * to r_pow_float's general path (x <= 0, or a factor below 2^-100) */
-static inline float r_pow_float_small_int(float x, float s)
+/* Whether s is an integer, 2 <= s <= 64: x^s is then its binary powers,
+ * each product rounded once (relative error below s 2^-24 while no factor
+ * is subnormal), a tenth of the general path's work (r_pow_float), for
+ * the exponents scenes pick by hand. */
+static inline bool r_pow_float_small_int(float s) { return s >= 2 && s <= 64 && s == (float)(int32_t)s; }
+static inline float r_pow_float_int(float x, float s)
 {
-    if (!(x > 0) || !(s >= 2 && s <= 64 && s == (float)(int32_t)s))
-        return 0;
     uint32_t m = (uint32_t)s;
     float u = x;
     for (; !(m & 1); m >>= 1)
@@ -135,14 +134,18 @@ static inline float r_pow_float_small_int(float x, float s)
         if (m & 1)
             p *= u;
     }
-    return p >= 0x1p-100f ? p : 0; /* no factor was subnormal (x <= 1: each is >= p) */
+    return p;
 }
+/* x^s for x in [0, 1] as a shading weight: r_pow_float's value, but for
+ * an integer s a result below 2^-100 (a factor may have been subnormal)
+ * is taken as it came, within 2^-100 of x^s (r_pow_float takes its
+ * general path there): a weight that small adds nothing to any colour.
+ * Inline, so a highlight with such an s calls nothing. */
 static inline real_t r_pow_unit(real_t x, shine_t s)
 {
     if (x <= 0) /* as r_pow_float (a highlight facing away) */
         return 0;
-    float p = r_pow_float_small_int(x, s);
-    return p != 0 ? p : r_pow_float(x, s);
+    return r_pow_float_small_int(s) ? r_pow_float_int(x, s) : r_pow_float(x, s);
 }
 #else
 static inline real_t r_pow_unit(real_t x, shine_t s) { return x <= 0 ? 0 : R_FN(pow)(x, s); }

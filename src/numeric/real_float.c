@@ -234,9 +234,11 @@ float r_pow_float(float x, float s)
     /* s an integer, 2 <= s <= 64: its binary powers, each product
      * rounded once (relative error below s 2^-24), a tenth of the general
      * path's work, for the exponents scenes pick by hand (real.h) */
-    float small = r_pow_float_small_int(x, s);
-    if (small != 0)
-        return small;
+    if (r_pow_float_small_int(s)) {
+        float p = r_pow_float_int(x, s);
+        if (p >= 0x1p-100f) /* no factor was subnormal (x <= 1: each is >= p); else the general path */
+            return p;
+    }
 
     /* y = s log2 x = yh + yl */
     float lh, ll, yh, yl;

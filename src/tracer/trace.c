@@ -194,10 +194,18 @@ static inline vec3_t mirror_dir(vec3_t d, vec3_t n)
 #endif
 
 #if RT_USE_REFLECTION || RT_USE_REFRACTION /* (the child rays) */
-/* Whether a child ray of this weight is worth tracing. */
-static inline bool worth_tracing(const tracer_t *tr, real_t weight)
+/* Whether the child ray of a ray of this weight, whose colour counts
+ * `factor` times, is worth tracing. */
+static inline bool worth_tracing(const tracer_t *tr, real_t weight, real_t factor)
 {
-    return tr->min_weight == 0 || weight >= tr->min_weight;
+    return tr->min_weight == 0 || r_mul(weight, factor) >= tr->min_weight;
+}
+
+/* That child's weight; in the fixed build only where worth_tracing reads
+ * it (a saturating product costs more than the test, a float one less). */
+static inline real_t child_weight(const tracer_t *tr, real_t weight, real_t factor)
+{
+    return RT_BACKEND_FIXED && tr->min_weight == 0 ? weight : r_mul(weight, factor);
 }
 #endif
 
@@ -323,7 +331,7 @@ static colour_t background(const scene_t *sc, const ray_t *ray)
  * with one of these a depth, so no C recursion bounds the stack. */
 typedef struct {
     colour_t c;         /* direct light, then + Ks mirror, then + T refracted */
-    real_t weight;      /* the ray's share of the pixel */
+    real_t weight;      /* the ray's share of the pixel (where worth_tracing reads it) */
 #if RT_USE_REFLECTION
     real_t ks;          /* the mirror child's factor (0: traced, adds nothing: SPD rule 8) */
 #endif
@@ -393,7 +401,7 @@ PATH_STEP bool trace_segment(const tracer_t *tr, const ray_t *ray, int depth, pa
     (void)weight;
 #if RT_USE_REFRACTION
     real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
-    if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &lv->refr)) {
+    if (m->t > 0 && worth_tracing(tr, weight, m->t) && refracted(ray, &s, cos_i, &lv->refr)) {
 #if RT_RAY_CONES
         cone_refracted(tr, ray, &s, cos_i, &lv->refr);
 #endif
@@ -401,7 +409,7 @@ PATH_STEP bool trace_segment(const tracer_t *tr, const ray_t *ray, int depth, pa
     }
 #endif
 #if RT_USE_REFLECTION
-    if (mirrors && worth_tracing(tr, r_mul(weight, m->ks))) {
+    if (mirrors && worth_tracing(tr, weight, m->ks)) {
         reflected(ray, &s, &mdir, mirror);
 #if RT_RAY_CONES
         cone_reflected(tr, ray, &s, mirror);
@@ -431,7 +439,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *eye, int depth, real_t weigh
             count_reflect_ray(tr);
             ray = &rays[next];
             next ^= 1u;
-            lv[k + 1].weight = r_mul(lv[k].weight, lv[k].ks);
+            lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].ks);
             k++;
             continue;
         }
@@ -446,7 +454,7 @@ colour_t trace_ray(const tracer_t *tr, const ray_t *eye, int depth, real_t weigh
                 lv[k].refracting = true;
                 count_refract_ray(tr);
                 ray = &lv[k].refr;
-                lv[k + 1].weight = r_mul(lv[k].weight, lv[k].t);
+                lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].t);
                 k++;
                 break;
             }
