@@ -79,7 +79,7 @@ GROUPS = [
      ["ray_hit_object", "solid_spans", "csg_*", "object_ray", "box_*", "quadric_*", "torus_*", "safe_div",
       "polish", "bnd", "to_world", "shape_*", "spans_*", "xform_*", "row_dot", "mat_mul", "mat_vec", "first_root",
       "corner_radius"]),
-    ("texture", "textures and the sky", ["texture_colour", "sky_colour", "checker", "marble", "noise",
+    ("texture", "textures and the sky", ["texture_colour*", "checker_at_point", "sky_colour", "checker", "marble", "noise",
                                          "lattice_hash", "gradient_dot", "fade", "lerp", "background"]),
     ("maths", "fixed-point and real operations, vectors, libgcc and soft-float helpers, libm",
      ["fx_*", "unit3_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
