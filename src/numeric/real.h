@@ -328,7 +328,8 @@ static inline real_t r_mul_bounded(real_t a, real_t b, real_t lim)
 }
 static inline real_t r_add_bounded(real_t a, real_t b, real_t lim) { return r_bound_wide((int64_t)a + b, lim); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
-static inline real_t r_pow_unit(real_t x, shine_t s) { return fx_pow_unit_fast(x, s); }
+/* (the integer path inline where the code has room: RT_INLINE_HOT) */
+static inline real_t r_pow_unit(real_t x, shine_t s) { return RT_INLINE_HOT ? fx_pow_unit_fast(x, s) : fx_pow_unit(x, s); }
 static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
 {

@@ -64,8 +64,10 @@ static inline void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ra
  * from, or `through` it. Spheres and cones say whether it goes into them
  * (from_far) or away (skipped); polygons are skipped; solids, which may be
  * met again anywhere, offset the origin by their error bound instead
- * (s->offset; 0 for the others except polygons in the float build). */
-static inline void leave(const surface_t *s, bool through, ray_t *out)
+ * (s->offset; 0 for the others except polygons in the float build).
+ * Inline but where the code has no room for the copies (RT_HOT: with
+ * solids, whose firmware fills its 20 KiB budget, out of line). */
+RT_HOT static void leave(const surface_t *s, bool through, ray_t *out)
 {
     out->origin = s->point;
     if (s->offset != 0)
@@ -76,18 +78,19 @@ static inline void leave(const surface_t *s, bool through, ray_t *out)
 }
 #endif
 
-/* Colour arithmetic, out of line: a few calls per light and bounce, where
- * each inline copy of three rounded products costs ~100 bytes of flash. */
+/* Colour arithmetic: a few uses per light and bounce, each inline copy of
+ * three rounded products ~100 bytes of flash; inline but with solids
+ * (RT_HOT, as leave). */
 /* c k: a weight's product (r_mul_weight) for k in [0, 1], the most a
  * scene's reflectances and intensities are */
-RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k)
+RT_HOT static colour_t colour_scale(colour_t c, real_t k)
 {
     return r_is_weight(k) ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated (a weight's product inline, the rare
  * reflectance over 1 by colour_scale) */
-static inline colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
+RT_HOT static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 {
     return c3_add(a, r_is_weight(k) ? c3_scale_weight(b, k) : colour_scale(b, k));
 }
