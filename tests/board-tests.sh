@@ -79,9 +79,11 @@ done
 
 # Textures, planes and the sky are pruned from firmware for a scene
 # without them (balls-2), and linked for one with them (textures).
-syms() { arm-none-eabi-nm "$(fwdir $1 64x64)/fixed.elf" | awk '{ print $NF }' | grep -E '^rt_(texture_colour|ray_hit_plane|sky_colour)$' | sort | tr '\n' ' '; }
+# (texture_colour is inline, a checker's point sample in it; the rest is
+# texture_colour_at)
+syms() { arm-none-eabi-nm "$(fwdir $1 64x64)/fixed.elf" | awk '{ print $NF }' | grep -E '^rt_(texture_colour_at|ray_hit_plane|sky_colour)$' | sort | tr '\n' ' '; }
 none=$(syms balls-2) all=$(syms textures)
-if [ -z "$none" ] && [ "$all" = "rt_ray_hit_plane rt_sky_colour rt_texture_colour " ]; then
+if [ -z "$none" ] && [ "$all" = "rt_ray_hit_plane rt_sky_colour rt_texture_colour_at " ]; then
     ok "pruning: balls-2 links no plane, texture or sky code; textures links $all"
 else
     bad "pruning: balls-2 links '$none'; textures links '$all'"

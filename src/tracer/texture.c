@@ -221,3 +221,10 @@ colour_t texture_colour_at(const texture_t *tx, vec3_t p, const footprint_t *fp)
         RT_UNREACHABLE(); /* a scene holds only the kinds this build has */
     }
 }
+
+colour_t sky_colour(const sky_t *sky, vec3_t d)
+{
+    real_t up = v3_dot_axis(sky->up, sky->up_axis, d);
+    real_t k = r_pow_unit(R_ONE - r_max(up, 0), sky->exponent); /* in [0, 1] */
+    return v3_add(sky->zenith, c3_scale_weight(v3_sub(sky->horizon, sky->zenith), k));
+}

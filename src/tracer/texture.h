@@ -49,13 +49,7 @@ static inline colour_t texture_colour(const texture_t *tx, vec3_t p, const footp
     return texture_colour_at(tx, p, fp);
 }
 
-/* What a ray along unit direction d sees of the sky (inline: a few
- * products, called for every ray that meets nothing). */
-static inline colour_t sky_colour(const sky_t *sky, vec3_t d)
-{
-    real_t up = v3_dot_axis(sky->up, sky->up_axis, d);
-    real_t k = r_pow_unit(R_ONE - r_max(up, 0), sky->exponent); /* in [0, 1] */
-    return v3_add(sky->zenith, c3_scale_weight(v3_sub(sky->horizon, sky->zenith), k));
-}
+/* What a ray along unit direction d sees of the sky. */
+colour_t sky_colour(const sky_t *sky, vec3_t d);
 
 #endif
