@@ -12,32 +12,35 @@ instruction executed inside rt_render, the display sink's callbacks (--sink)
 apart as the firmware's own count has them: the same total as cycles.py
 --from-symbol rt_render, which the firmware's render_instructions confirms.
 
-Ray kinds. A shadow stack of the frames of rt_render, rt_trace_ray,
+Ray kinds. A shadow stack of the frames of rt_render, rt_trace_ray (a
+pixel's ray tree, walked without recursion), trace_segment (one ray of it),
 rt_scene_occluded and the sink callbacks (cycles.Extents: a frame is pushed
 when a call reaches the function's entry and popped when a return reaches the
 call's fall-through) says which ray each instruction works for:
-  eye         inside a trace_ray called by rt_render;
-  reflection  inside a trace_ray called by trace_ray after it called
-              reflected() (the helper that builds the mirror ray);
-  refraction  inside a trace_ray called by trace_ray after refracted();
-  shadow      inside scene_occluded (called by direct_light for each light
+  eye         inside the first trace_segment of a trace_ray called by rt_render;
+  reflection  inside a trace_segment after trace_ray called count_reflect_ray()
+              (the counter of the mirror rays it goes on with);
+  refraction  inside a trace_segment after count_refract_ray();
+  shadow      inside scene_occluded (called by trace_segment for each light
               above the surface): the occlusion test only;
   frame       inside rt_render but outside any ray: frame set-up, the pixel
               loop, camera rays, packing pixels, handing bands to the sink.
 The innermost such frame wins: the shading of a reflection ray's hit point
-(direct_light, the mirror direction of its own children) is reflection work,
-its shadow rays' occlusion tests are shadow work. Which ray a trace_ray call
-traces is told by which helper the calling trace_ray frame called last
-(reflected / refracted, also under GCC's clone names such as
-reflected.constprop.0), so code layout does not matter.
+(its direct light, the mirror direction of its own children) is reflection
+work, its shadow rays' occlusion tests are shadow work. trace_ray's own
+instructions between segments (the walk, adding a child's colour to its
+parent's) go to the kind of the segment it called last. Which ray a
+trace_segment call traces is told by which counter the trace_ray frame called
+last (also under GCC's clone names such as count_reflect_ray.constprop.0), so
+code layout does not matter.
 
 Checks (printed; --check makes a failure the exit status):
   - the total is within 0.1% of the firmware's render_instructions;
-  - trace_ray entries per kind equal the firmware's counters eye_rays,
+  - trace_segment entries per kind equal the firmware's counters eye_rays,
     reflect_rays and refract_rays, and scene_occluded entries equal
     shadow_rays (shadow_rays also counts lights a patch hides from itself,
     which trace no ray: with patches, entries <= shadow_rays);
-  - every trace_ray entry was classified.
+  - every trace_segment entry was classified.
 
 Groups: GROUPS below maps function names (without the rt_ prefix and GCC's
 .isra/.part/.constprop suffixes; shell patterns, first match wins) to groups;
@@ -69,14 +72,14 @@ GROUPS = [
       "vertex_before", "is_zero"]),
     ("cone", "ray-cone/cylinder intersection", ["ray_hit_cone", "cylinder_missed", "quotient_below", "refine_root"]),
     ("shading", "the tracer, hit surface and normals, lights, secondary rays",
-     ["trace_ray", "colour_*", "find_surface", "surface_at", "direct_light", "add_light", "mirror_dir", "reflected", "refracted", "leave", "snell",
+     ["trace_ray", "trace_segment", "count_re*_ray", "colour_*", "find_surface", "surface_at", "direct_light", "add_light", "mirror_dir", "reflected", "refracted", "leave", "snell",
       "worth_tracing", "prim_surface", "object_prim_surface", "sphere_normal", "cone_normal",
       "polygon_shading_normal", "shape_normal", "xform_normal"]),
     ("solids", "quadrics, tori, boxes, CSG, object-space rays and transforms",
      ["ray_hit_object", "solid_spans", "csg_*", "object_ray", "box_*", "quadric_*", "torus_*", "safe_div",
       "polish", "bnd", "to_world", "shape_*", "spans_*", "xform_*", "row_dot", "mat_mul", "mat_vec", "first_root",
       "corner_radius"]),
-    ("texture", "textures and the sky", ["texture_colour", "sky_colour", "checker", "marble", "noise",
+    ("texture", "textures and the sky", ["texture_colour*", "checker_at_point", "sky_colour", "checker", "marble", "noise",
                                          "lattice_hash", "gradient_dot", "fade", "lerp", "background"]),
     ("maths", "fixed-point and real operations, vectors, libgcc and soft-float helpers, libm",
      ["fx_*", "unit3_*", "isqrt*", "rsqrt*", "recip*", "clz*", "smul64", "sdiv64", "udiv64", "div_*", "wsqrt_*", "abs_u32", "sign_mask", "normalise_even", "log2_*", "exp2_*", "cos_q30",
@@ -98,12 +101,12 @@ GROUP_DOC["other"] = "in no group of GROUPS (bench/profile.py)"
 
 KINDS = ["eye", "reflection", "refraction", "shadow", "frame"]
 KIND_DOC = {
-    "eye": "trace_ray from rt_render",
-    "reflection": "trace_ray after reflected()",
-    "refraction": "trace_ray after refracted()",
+    "eye": "first trace_segment of a trace_ray",
+    "reflection": "trace_segment after count_reflect_ray()",
+    "refraction": "trace_segment after count_refract_ray()",
     "shadow": "scene_occluded (occlusion tests)",
     "frame": "rt_render outside any ray",
-    "unclassified": "trace_ray from trace_ray with no helper call before it",
+    "unclassified": "a later trace_segment with no counter call before it",
 }
 # firmware counter of each ray kind (include/rt_stats.h)
 KIND_COUNTER = {"eye": "eye_rays", "reflection": "reflect_rays", "refraction": "refract_rays", "shadow": "shadow_rays"}
@@ -134,17 +137,18 @@ def group_of(sym):
 
 class RayKinds(cycles.Extents):
     """cycles.Extents with the ray kinds as buckets (see the module docstring):
-    frames of rt_render ("frame"), trace_ray (its kind), scene_occluded
-    ("shadow") and the sink ("excluded"); entries of reflected/refracted
-    only mark the trace_ray frame that calls them."""
+    frames of rt_render ("frame"), trace_ray and trace_segment (its kind),
+    scene_occluded ("shadow") and the sink ("excluded"); entries of the ray
+    counters only mark the trace_ray frame that calls them."""
 
-    def __init__(self, root, trace, occluded, sinks, marks, names):
+    def __init__(self, root, trace, segments, occluded, sinks, marks, names):
         self.trace, self.occluded = trace, occluded
+        self.segments = frozenset(segments)
         self.sinks = frozenset(sinks)
         self.marks = marks                     # entry PC -> "reflection" / "refraction"
         self.names = names                     # PC -> symbol, for warnings
-        self.rays = collections.Counter()      # kind -> rays (trace_ray / scene_occluded entries)
-        self.inner = [p for p in [trace, occluded] if p is not None] + sorted(self.sinks)
+        self.rays = collections.Counter()      # kind -> rays (trace_segment / scene_occluded entries)
+        self.inner = [p for p in [trace, occluded] if p is not None] + sorted(self.segments) + sorted(self.sinks)
         super().__init__(root, self.sinks)
 
     def enterable(self):
@@ -169,13 +173,16 @@ class RayKinds(cycles.Extents):
         elif f.pc == self.occluded:
             f.kind = "shadow"
             self.rays["shadow"] += 1
-        else:
-            if top.pc == self.trace:
-                f.kind = top.note or "unclassified"
-                top.note = None
-            else:
-                f.kind = "eye"
+        elif f.pc == self.trace:
+            f.kind = "eye"  # until its first segment: the eye ray's
+            f.note = "eye"
+        elif f.pc in self.segments and top.pc == self.trace:
+            f.kind = top.note or "unclassified"
+            top.note = None
+            top.kind = f.kind  # trace_ray's walk after it: this ray's
             self.rays[f.kind] += 1
+        else:
+            f.kind = top.kind
         return True
 
     def label(self):
@@ -264,7 +271,7 @@ def profile(args, parser, model, syms, rk, extra):
     for k in ("eye", "reflection", "refraction", "shadow"):
         key = KIND_COUNTER[k]
         got = rk.rays.get(k, 0)
-        what = "scene_occluded entries" if k == "shadow" else "trace_ray entries"
+        what = "scene_occluded entries" if k == "shadow" else "trace_segment entries"
         if key not in fw:
             check(False, k + " rays", "the firmware reported no %s" % key)
         elif k == "shadow" and patches != 0 and got <= fw[key]:
@@ -274,8 +281,8 @@ def profile(args, parser, model, syms, rk, extra):
         else:
             check(got == fw[key], k + " rays", "%s %s, firmware's %s %s" % (fmt(got), what, key, fmt(fw[key])))
     unc = rk.rays.get("unclassified", 0)
-    check(unc == 0, "classified", "%d trace_ray entries from trace_ray without a reflected/refracted call before"
-          % unc if unc else "every trace_ray entry has its kind")
+    check(unc == 0, "classified", "%d later trace_segment entries without a ray counter call before"
+          % unc if unc else "every trace_segment entry has its kind")
     failed = [c for c in checks if not c["ok"]]
 
     # -- text
@@ -398,14 +405,15 @@ def main():
     root = one(syms, "rt_render")
     trace = one(syms, "rt_trace_ray")
     occluded = one(syms, "rt_scene_occluded")
-    if root is None or trace is None:
-        sys.exit("profile: %s has no rt_render or rt_trace_ray" % args.elf)
+    segments = find(syms, lambda n: base_name(n) == "trace_segment")
+    if root is None or trace is None or not segments:
+        sys.exit("profile: %s has no rt_render, rt_trace_ray or trace_segment" % args.elf)
     marks = {}
-    for kind, fn in (("reflection", "reflected"), ("refraction", "refracted")):
+    for kind, fn in (("reflection", "count_reflect_ray"), ("refraction", "count_refract_ray")):
         for pc in find(syms, lambda n, fn=fn: base_name(n) == fn):
             marks[pc] = kind
     sinks = [a for a in (one(syms, s) for s in args.sink) if a is not None]
-    rk = RayKinds(root, trace, occluded, sinks, marks, names)
+    rk = RayKinds(root, trace, segments, occluded, sinks, marks, names)
     parser = cycles.Parser(model, extents=rk)
     extra = {"t0": t0}
     if cycles.run_firmware(args, parser, report_records, "profile", extra) != 0:

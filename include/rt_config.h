@@ -79,7 +79,7 @@
 #define FX_FAST_MATH 0
 #endif
 
-/* Ray-tree depth: eye ray = 1. RT_MAX_DEPTH bounds recursion (and stack);
+/* Ray-tree depth: eye ray = 1. RT_MAX_DEPTH bounds the tracer's levels (and stack);
  * the run-time depth option may only lower it. */
 #ifndef RT_MAX_DEPTH
 #define RT_MAX_DEPTH 5
@@ -311,8 +311,9 @@
 #define RT_UNREACHABLE() ((void)0)
 #endif
 
-/* Keeps a helper's locals out of the recursive trace_ray frame, which is
- * what bounds the stack (RT_MAX_DEPTH frames of it). */
+/* Keeps a helper's locals out of its caller's frame (a frame of a
+ * recursion, or a hot loop's registers), or its code out of several
+ * callers. */
 #if defined(__GNUC__)
 #define RT_NOINLINE __attribute__((noinline))
 #else

@@ -128,6 +128,7 @@
 #define sphere_init              rt_sphere_init
 #define sphere_normal            rt_sphere_normal
 #define texture_colour           rt_texture_colour
+#define texture_colour_at        rt_texture_colour_at
 #define trace_ray                rt_trace_ray
 #define xform_identity           rt_xform_identity
 #define xform_mat_vec            rt_xform_mat_vec

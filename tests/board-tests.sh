@@ -82,14 +82,15 @@ done
 # Textures, planes and the sky are pruned from firmware for a scene
 # without them (balls-2), and linked for one with them (textures).
 # The generic firmware (SPECIALISE=0): the whole-program build inlines
-# them where it links them.
+# them where it links them. (texture_colour is inline, a checker's point
+# sample in it; the rest is texture_colour_at.)
 syms() {
     make -s -j2 firmware SCENE="$(scene_file $1)" SIZE=64x64 DEPTH=5 AA=0 SPECIALISE=0 >"$OUT/$1-generic.build" 2>&1
     d=$(make -s print-fwdir SCENE="$(scene_file $1)" SIZE=64x64 DEPTH=5 AA=0 SPECIALISE=0)
-    arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^rt_(texture_colour|ray_hit_plane|sky_colour)$' | sort | tr '\n' ' '
+    arm-none-eabi-nm "$d/fixed.elf" | awk '{ print $NF }' | grep -E '^rt_(texture_colour_at|ray_hit_plane|sky_colour)$' | sort | tr '\n' ' '
 }
 none=$(syms balls-2) all=$(syms textures)
-if [ -z "$none" ] && [ "$all" = "rt_ray_hit_plane rt_sky_colour rt_texture_colour " ]; then
+if [ -z "$none" ] && [ "$all" = "rt_ray_hit_plane rt_sky_colour rt_texture_colour_at " ]; then
     ok "pruning: balls-2 links no plane, texture or sky code; textures links $all"
 else
     bad "pruning: balls-2 links '$none'; textures links '$all'"

@@ -2,7 +2,8 @@
 """Worst-case stack depth of the firmware from GCC's -fcallgraph-info=su.
 
 Reads the .ci files of a build, follows the call graph from a root, and
-prints the deepest path. Self-recursion (trace_ray) counts --depth frames;
+prints the deepest path. Self-recursion (CSG's solid_spans; the tracer walks
+its ray tree in a loop, trace.c) counts --depth frames;
 indirect calls go to the --indirect targets; functions without a known
 frame (libgcc helpers) count --unknown bytes and are listed.
 """

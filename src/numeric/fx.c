@@ -530,23 +530,10 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s)
         return 0;
     if (x >= FX_ONE || s == 0)
         return FX_ONE;
-    /* s an integer, 1 <= s <= 128: its binary powers in Q.31, each
-     * product rounded (within 2^-24 in all), one rounding to Q.F: a tenth
-     * of the general path's instructions, for the exponents scenes pick
-     * by hand */
-    if ((s & ((1u << FX_SHINE_FRAC_BITS) - 1)) == 0 && s <= (128u << FX_SHINE_FRAC_BITS)) {
-        uint32_t m = s >> FX_SHINE_FRAC_BITS;
-        uint32_t u = (uint32_t)x << (31 - FX_FRAC_BITS); /* x < 1: u < 2^31 */
-        for (; !(m & 1); m >>= 1)
-            u = (uint32_t)((fx_umul64(u, u) + (1u << 30)) >> 31);
-        uint32_t p = u; /* x^(lowest bit of s) */
-        for (m >>= 1; m; m >>= 1) {
-            u = (uint32_t)((fx_umul64(u, u) + (1u << 30)) >> 31);
-            if (m & 1)
-                p = (uint32_t)((fx_umul64(p, u) + (1u << 30)) >> 31);
-        }
-        return (fx_t)((p + (1u << (30 - FX_FRAC_BITS))) >> (31 - FX_FRAC_BITS));
-    }
+    /* s an integer, 1 <= s <= 128: a tenth of the general path's
+     * instructions, for the exponents scenes pick by hand (fx.h) */
+    if (fx_pow_unit_int_path(x, s))
+        return fx_pow_unit_int(x, s);
     /* y = s * log2(x) in Q.24; below -(F+2) the result rounds to 0. */
     int64_t y = smul64(s, log2_q24(x)) / ((int64_t)1 << FX_SHINE_FRAC_BITS);
     if (y <= -(int64_t)(FX_FRAC_BITS + 2) * (1 << 24))

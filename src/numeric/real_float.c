@@ -233,18 +233,9 @@ float r_pow_float(float x, float s)
         return x;
     /* s an integer, 2 <= s <= 64: its binary powers, each product
      * rounded once (relative error below s 2^-24), a tenth of the general
-     * path's work, for the exponents scenes pick by hand */
-    if (s >= 2 && s <= 64 && s == (float)(int32_t)s) {
-        uint32_t m = (uint32_t)s;
-        float u = x;
-        for (; !(m & 1); m >>= 1)
-            u *= u;
-        float p = u; /* x^(lowest bit of s) */
-        for (m >>= 1; m; m >>= 1) {
-            u *= u;
-            if (m & 1)
-                p *= u;
-        }
+     * path's work, for the exponents scenes pick by hand (real.h) */
+    if (r_pow_float_small_int(s)) {
+        float p = r_pow_float_int(x, s);
         if (p >= 0x1p-100f) /* no factor was subnormal (x <= 1: each is >= p); else the general path */
             return p;
     }

@@ -79,6 +79,8 @@ static colour_t checker(const texture_t *tx, vec3_t p, const footprint_t *fp)
     const real_t c[3] = { p.x, p.y, p.z };
     real_t h[3];
     cell_extents(fp, tx->inv_size, tx->axes, h);
+    if (h[0] == 0 && h[1] == 0 && h[2] == 0) /* a point: the mean of each axis is +-1, their product the parity */
+        return checker_at_point(tx, p);
     real_t mean = R_ONE;
     for (unsigned a = 0; a < 3; a++)
         if (tx->axes >> a & 1u)
@@ -203,7 +205,7 @@ static colour_t marble(const texture_t *tx, vec3_t p, const footprint_t *fp)
 }
 #endif
 
-colour_t texture_colour(const texture_t *tx, vec3_t p, const footprint_t *fp)
+colour_t texture_colour_at(const texture_t *tx, vec3_t p, const footprint_t *fp)
 {
     (void)p, (void)fp;
     switch (tx->kind) {

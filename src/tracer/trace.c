@@ -1,4 +1,4 @@
-/* trace.c - the recursive Whitted tracer; recursion depth <= RT_MAX_DEPTH. */
+/* trace.c - the Whitted tracer: a ray tree of depth <= RT_MAX_DEPTH, walked without recursion. */
 #include "trace.h"
 
 #include "geometry/prims.h"
@@ -23,7 +23,7 @@ typedef struct {
 #endif
 } surface_t;
 /* The geometric normal: n itself but on a patch (one vector less in the
- * recursive frame where the build has no patches). */
+ * surface record where the build has no patches). */
 #if RT_USE_PATCHES
 #define N_OUT(s) ((s)->n_out)
 #else
@@ -36,8 +36,7 @@ static inline real_t cone_mul(real_t a, real_t b) { return r_mul_bounded(a, b, C
 static inline real_t cone_add(real_t a, real_t b) { return r_add_bounded(a, b, CONE_LIMIT); }
 #endif
 
-/* Out of line: its temporaries are not on the stack under the search. */
-RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
+static inline void surface_at(const scene_t *sc, const hit_t *h, const ray_t *ray, surface_t *s)
 {
     prim_surface_t ps;
     s->point = v3_madd_in_range(ray->origin, h->t, ray->dir); /* a point of the scene */
@@ -65,8 +64,10 @@ RT_NOINLINE static void surface_at(const scene_t *sc, const hit_t *h, const ray_
  * from, or `through` it. Spheres and cones say whether it goes into them
  * (from_far) or away (skipped); polygons are skipped; solids, which may be
  * met again anywhere, offset the origin by their error bound instead
- * (s->offset; 0 for the others except polygons in the float build). */
-static void leave(const surface_t *s, bool through, ray_t *out)
+ * (s->offset; 0 for the others except polygons in the float build).
+ * Inline but where the code has no room for the copies (RT_HOT: with
+ * solids, whose firmware fills its 20 KiB budget, out of line). */
+RT_HOT static void leave(const surface_t *s, bool through, ray_t *out)
 {
     out->origin = s->point;
     if (s->offset != 0)
@@ -77,18 +78,19 @@ static void leave(const surface_t *s, bool through, ray_t *out)
 }
 #endif
 
-/* Colour arithmetic, out of line: a few calls per light and bounce, where
- * each inline copy of three rounded products costs ~100 bytes of flash. */
+/* Colour arithmetic: a few uses per light and bounce, each inline copy of
+ * three rounded products ~100 bytes of flash; inline but with solids
+ * (RT_HOT, as leave). */
 /* c k: a weight's product (r_mul_weight) for k in [0, 1], the most a
  * scene's reflectances and intensities are */
-RT_NOINLINE static colour_t colour_scale(colour_t c, real_t k)
+RT_HOT static colour_t colour_scale(colour_t c, real_t k)
 {
     return r_is_weight(k) ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
 #if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated (a weight's product inline, the rare
  * reflectance over 1 by colour_scale) */
-RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
+RT_HOT static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 {
     return c3_add(a, r_is_weight(k) ? c3_scale_weight(b, k) : colour_scale(b, k));
 }
@@ -96,29 +98,32 @@ RT_NOINLINE static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 
 #if RT_USE_SHADOWS
 /* c + I (Kd C (N.L) + Ks spec) Lc: the share of light l, whose shadow ray
- * along ldir is clear, from the terms' I Kd C and I Ks. Out of line: its
- * temporaries are not on the stack under scene_occluded. */
-RT_NOINLINE static void add_light(colour_t *c, const material_terms_t *t, const surface_t *s, const light_t *l,
-                                  const vec3_t *ldir, real_t ndl)
+ * along ldir is clear, from the terms' I Kd C and I Ks; `mirror` is the
+ * incoming ray mirrored about N. */
+static inline void add_light(colour_t *c, const material_terms_t *t, const surface_t *s, const light_t *l,
+                             const vec3_t *ldir, real_t ndl, const vec3_t *mirror)
 {
     colour_t lit = c3_scale_weight(t->ambient, ndl); /* 0 < N.L <= 1 */
-    (void)s, (void)ldir; /* only the specular term looks at them */
+    (void)s, (void)ldir, (void)mirror; /* only the specular term looks at them */
 #if RT_USE_SPECULAR
     if (t->iks > 0) {
         /* Phong's R.V, R = 2 (N.L) N - L and V = -D, is L.M for the
          * mirror direction M = D - 2 (N.D) N the surface already has */
-        real_t rv = v3_dot_in_range(*ldir, t->mirror);
+        real_t rv = v3_dot_in_range(*ldir, *mirror);
         real_t spec = r_mul_weight(t->iks, r_pow_unit(rv, s->m->shine)); /* the power is in [0, 1] */
         lit = c3_add(lit, v3(spec, spec, spec));
     }
 #endif
-    if (l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE) /* white: lit as it is */
+    /* white: lit as it is (a float product by 1 is exact and cheaper
+     * than the test; the fixed build's costs more) */
+    if (!RT_BACKEND_FIXED || l->colour.x != R_ONE || l->colour.y != R_ONE || l->colour.z != R_ONE)
         lit = v3_mul(lit, l->colour);
     *c = c3_add(*c, lit);
 }
 #endif
 
-RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray, int depth)
+static inline colour_t direct_light(const tracer_t *tr, const surface_t *s, const ray_t *ray, int depth,
+                                    const vec3_t *mirror)
 {
     const scene_t *sc = TRACER_SCENE(tr);
     const material_t *m = s->m;
@@ -180,7 +185,7 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
         tr->scratch->shadow_light = (uint8_t)(i + 1); /* it goes to light i (scene_eye_setup) */
 #endif
         if (!scene_occluded(sc, &shadow, RT_T_MIN, dist, &tr->last_blocker[i], tr->scratch))
-            add_light(&c, t, s, l, &shadow.dir, ndl);
+            add_light(&c, t, s, l, &shadow.dir, ndl, mirror);
     }
 #endif
     return c;
@@ -189,25 +194,31 @@ RT_NOINLINE static colour_t direct_light(const tracer_t *tr, const surface_t *s,
 #if RT_USE_SPECULAR || RT_USE_REFLECTION
 /* D mirrored about N, made once for the highlights and the reflection
  * ray. D and N are unit (a sphere's N within 2^-15: sphere_normal), so M
- * is within 2^-12 of unit before v3_renorm. Out of line: its temporaries
- * stay out of the recursive trace_ray frame. */
-RT_NOINLINE static vec3_t mirror_dir(vec3_t d, vec3_t n)
+ * is within 2^-12 of unit before v3_renorm. */
+static inline vec3_t mirror_dir(vec3_t d, vec3_t n)
 {
     return v3_renorm(v3_madd_in_range(d, -2 * v3_dot_in_range(d, n), n));
 }
 #endif
 
 #if RT_USE_REFLECTION || RT_USE_REFRACTION /* (the child rays) */
-/* Whether a child ray of this weight is worth tracing. */
-static inline bool worth_tracing(const tracer_t *tr, real_t weight)
+/* Whether the child ray of a ray of this weight, whose colour counts
+ * `factor` times, is worth tracing. */
+static inline bool worth_tracing(const tracer_t *tr, real_t weight, real_t factor)
 {
-    return tr->min_weight == 0 || weight >= tr->min_weight;
+    return tr->min_weight == 0 || r_mul(weight, factor) >= tr->min_weight;
+}
+
+/* That child's weight; in the fixed build only where worth_tracing reads
+ * it (a saturating product costs more than the test, a float one less). */
+static inline real_t child_weight(const tracer_t *tr, real_t weight, real_t factor)
+{
+    return RT_BACKEND_FIXED && tr->min_weight == 0 ? weight : r_mul(weight, factor);
 }
 #endif
 
-/* The nearest surface along the ray, if any. Not inlined, so the hit
- * record stays out of the recursive trace_ray frame. */
-RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
+/* The nearest surface along the ray, if any. */
+static inline bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
 {
     hit_t h; /* the rest is written with a hit: no memset of it per ray (the M0's GCC calls one) */
     h.t = RT_T_FAR;
@@ -222,7 +233,7 @@ RT_NOINLINE static bool find_surface(const tracer_t *tr, const ray_t *ray, surfa
 /* The mirror ray leaving s. On a patch, a mirror direction about the
  * shading normal that would go into the geometric surface is taken about
  * the geometric normal instead (the patch policy). */
-RT_NOINLINE static void reflected(const ray_t *ray, const surface_t *s, const vec3_t *mirror, ray_t *out)
+static inline void reflected(const ray_t *ray, const surface_t *s, const vec3_t *mirror, ray_t *out)
 {
     (void)ray; /* only the patch policy looks at it */
     leave(s, false, out);
@@ -250,7 +261,7 @@ static bool snell(vec3_t d, vec3_t n, real_t cos_i, real_t eta, vec3_t *out)
 /* The refracted ray leaving s; false on total internal reflection. On a
  * patch, a direction that would stay on the incoming side of the
  * geometric surface is refracted about the geometric normal instead. */
-RT_NOINLINE static bool refracted(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
+static inline bool refracted(const ray_t *ray, const surface_t *s, real_t cos_i, ray_t *out)
 {
     real_t eta = s->entering ? r_div(R_ONE, s->m->ior) : s->m->ior; /* n1 / n2 */
     if (!snell(ray->dir, s->n, cos_i, eta, &out->dir))
@@ -322,9 +333,53 @@ static colour_t background(const scene_t *sc, const ray_t *ray)
     return sc->background;
 }
 
-/* The ray helpers above are not inlined: their temporaries stay out of
- * this frame, which the recursion repeats RT_MAX_DEPTH times. */
-RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, real_t weight)
+/* One ray of a path, once traced: the light its hit point sends back
+ * (or what it sees beyond everything), and its children's factors. The
+ * path's rays form a tree of depth <= RT_MAX_DEPTH; trace_ray walks it
+ * with one of these a depth, so no C recursion bounds the stack. */
+typedef struct {
+    colour_t c;         /* direct light, then + Ks mirror, then + T refracted */
+    real_t weight;      /* the ray's share of the pixel (where worth_tracing reads it) */
+#if RT_USE_REFLECTION
+    real_t ks;          /* the mirror child's factor (0: traced, adds nothing: SPD rule 8) */
+#endif
+#if RT_USE_REFRACTION
+    real_t t;           /* the refracted child's factor, 0: none to trace */
+    bool refracting;    /* the child being traced is the refracted one */
+    ray_t refr;         /* that child, traced after the mirror one */
+#endif
+} path_level_t;
+
+/* The profile (bench/profile.py) tells a path's rays apart by the entries
+ * of trace_segment and of these counters, so they stay out of line in the
+ * generic firmware and where make profile keeps the frames (RT_KEEP_FRAMES).
+ * Hot: else GCC takes trace_ray's walk for a cold loop and optimises what
+ * the segment calls for size (with the scene a constant, the flat
+ * search's loops over the primitives stay rolled: the card +17%). With
+ * the scene a constant (LTO, not profiled) the float build inlines them
+ * into the walk (the card -3%); the fixed build's 64-bit products run
+ * short of core registers there (+0.5%). */
+#if defined(RT_KEEP_FRAMES) /* make profile of a whole-program build */
+#define PATH_STEP RT_FRAME __attribute__((hot)) static
+#elif defined(__GNUC__) && defined(RT_CONST_SCENE) && !RT_BACKEND_FIXED
+#define PATH_STEP __attribute__((hot)) static inline
+#elif defined(__GNUC__)
+#define PATH_STEP RT_NOINLINE __attribute__((hot)) static
+#else
+#define PATH_STEP RT_NOINLINE static
+#endif
+
+#if RT_USE_REFLECTION
+PATH_STEP void count_reflect_ray(const tracer_t *tr) { tr->scratch->stats.reflect_rays++; }
+#endif
+#if RT_USE_REFRACTION
+PATH_STEP void count_refract_ray(const tracer_t *tr) { tr->scratch->stats.refract_rays++; }
+#endif
+
+/* Traces `ray` at `depth` into lv: its colour without its children, and
+ * the children to trace: true when its mirror ray is in *mirror (the
+ * refracted one, if any, in lv->refr). */
+PATH_STEP bool trace_segment(const tracer_t *tr, const ray_t *ray, int depth, path_level_t *lv, ray_t *mirror)
 {
     surface_t s;
 #if RT_USE_FLAT
@@ -334,8 +389,15 @@ RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, rea
 #else
     bool found = find_surface(tr, ray, &s);
 #endif
-    if (!found)
-        return background(TRACER_SCENE(tr), ray);
+#if RT_USE_REFRACTION
+    lv->t = 0;
+    lv->refracting = false;
+#endif
+    (void)mirror;
+    if (!found) {
+        lv->c = background(TRACER_SCENE(tr), ray);
+        return false;
+    }
     if (depth == 1)
         tr->scratch->stats.eye_hits++;
 
@@ -343,37 +405,92 @@ RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *ray, int depth, rea
     /* SPD rule 8: a transmitting surface also spawns its reflection ray */
     bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
     (void)mirrors;
+    vec3_t mdir = { 0, 0, 0 };
 #if RT_USE_SPECULAR || RT_USE_REFLECTION
-    if (mirrors) /* kept per depth, off the recursive frame */
-        tr->terms[depth - 1].mirror = mirror_dir(ray->dir, s.n);
+    if (mirrors)
+        mdir = mirror_dir(ray->dir, s.n);
 #endif
-    colour_t c = direct_light(tr, &s, ray, depth);
+    lv->c = direct_light(tr, &s, ray, depth, &mdir);
     if (depth >= tr->max_depth)
-        return c;
-
-    ray_t next;
-    (void)weight, (void)next;
-#if RT_USE_REFLECTION
-    if (mirrors && worth_tracing(tr, r_mul(weight, m->ks))) {
-        reflected(ray, &s, &tr->terms[depth - 1].mirror, &next);
-#if RT_RAY_CONES
-        cone_reflected(tr, ray, &s, &next);
-#endif
-        tr->scratch->stats.reflect_rays++;
-        colour_t rc = trace_ray(tr, &next, depth + 1, r_mul(weight, m->ks));
-        if (m->ks > 0)
-            c = colour_add_scaled(c, rc, m->ks);
-    }
-#endif
+        return false;
+    real_t weight = lv->weight;
+    (void)weight;
 #if RT_USE_REFRACTION
     real_t cos_i = -v3_dot_in_range(ray->dir, s.n); /* > 0 */
-    if (m->t > 0 && worth_tracing(tr, r_mul(weight, m->t)) && refracted(ray, &s, cos_i, &next)) {
-        tr->scratch->stats.refract_rays++;
+    if (m->t > 0 && worth_tracing(tr, weight, m->t) && refracted(ray, &s, cos_i, &lv->refr)) {
 #if RT_RAY_CONES
-        cone_refracted(tr, ray, &s, cos_i, &next);
+        cone_refracted(tr, ray, &s, cos_i, &lv->refr);
 #endif
-        c = colour_add_scaled(c, trace_ray(tr, &next, depth + 1, r_mul(weight, m->t)), m->t);
+        lv->t = m->t;
     }
 #endif
-    return c;
+#if RT_USE_REFLECTION
+    if (mirrors && worth_tracing(tr, weight, m->ks)) {
+        reflected(ray, &s, &mdir, mirror);
+#if RT_RAY_CONES
+        cone_reflected(tr, ray, &s, mirror);
+#endif
+        lv->ks = m->ks;
+        return true;
+    }
+#endif
+    return false;
+}
+
+/* The ray tree walked depth first, the mirror child before the refracted
+ * one, each level's colour made as docs/shading-model.md adds it up:
+ * direct + Ks mirror + T refracted, in that order. */
+RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *eye, int depth, real_t weight)
+{
+    path_level_t lv[RT_MAX_DEPTH];
+    ray_t rays[2]; /* the ray being traced and its mirror child, in turn */
+    const ray_t *ray = eye;
+    unsigned next = 0;
+    int k = 0; /* lv[k]: the ray at depth depth + k */
+    lv[0].weight = weight;
+    for (;;) {
+        bool down = trace_segment(tr, ray, depth + k, &lv[k], &rays[next]);
+#if RT_USE_REFLECTION
+        if (down) { /* the mirror child next */
+            count_reflect_ray(tr);
+            ray = &rays[next];
+            next ^= 1u;
+            lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].ks);
+            k++;
+            continue;
+        }
+#else
+        (void)down;
+#endif
+        /* lv[k] is done but for its refracted child: up to the next level
+         * with a child left to trace */
+        for (;;) {
+#if RT_USE_REFRACTION
+            if (lv[k].t > 0 && !lv[k].refracting) {
+                lv[k].refracting = true;
+                count_refract_ray(tr);
+                ray = &lv[k].refr;
+                lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].t);
+                k++;
+                break;
+            }
+#endif
+            if (k == 0)
+                return lv[0].c;
+            colour_t child = lv[k].c;
+            k--;
+#if RT_USE_REFRACTION
+            if (lv[k].refracting) {
+                lv[k].c = colour_add_scaled(lv[k].c, child, lv[k].t);
+                continue;
+            }
+#endif
+#if RT_USE_REFLECTION
+            if (lv[k].ks > 0)
+                lv[k].c = colour_add_scaled(lv[k].c, child, lv[k].ks);
+#else
+            (void)child;
+#endif
+        }
+    }
 }

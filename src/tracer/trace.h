@@ -12,7 +12,6 @@ typedef struct {
     colour_t base;              /* and the colour C they were made of (a texture's at the point) */
     colour_t ambient;           /* I Kd C: the ambient term, and the diffuse one's but for N.L */
     real_t iks;                 /* I Ks: the highlight's weight */
-    vec3_t mirror;              /* the hit at this depth: the incoming ray mirrored about N (trace_ray) */
 } material_terms_t;
 
 typedef struct {
