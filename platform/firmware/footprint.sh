@@ -28,7 +28,7 @@ echo "ram:   stack region $((0x${top:-0} - 0x${lim:-0})) bytes (separate)"
 # band buffers: main.c's one, or bands.c's two per core on a multi-core board
 hex=$(${CROSS:-arm-none-eabi-}nm -S "$elf" | awk '$4 == "band" || $4 == "slot_px" { print $2 }')
 echo "ram:   of which band buffers $((0x${hex:-0})) bytes"
-python3 "$here/stack_usage.py" "$objdir" --root main --depth "${DEPTH:-5}" \
+python3 "$here/stack_usage.py" "$objdir" --root main --below reset_c --depth "${DEPTH:-5}" \
     --indirect "${SINK_CALLBACKS:-stream_begin,stream_flush,stream_end}"
 if [ -n "$report" ] && [ -f "$report" ]; then
     grep -E '^(core1_)?stack_(high_water|size|guard_intact)' "$report" | sed 's/^/measured: /'

@@ -48,6 +48,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("folder")
     ap.add_argument("--root", default="main")
+    ap.add_argument("--below", default="", help="comma-separated functions under the root (start-up code that calls it "
+                    "through a pointer): their frames are added")
     ap.add_argument("--depth", type=int, default=5, help="frames of a self-recursive function")
     ap.add_argument("--indirect", default="", help="comma-separated targets of indirect calls")
     ap.add_argument("--unknown", type=int, default=64, help="bytes assumed for functions without .su data")
@@ -96,7 +98,12 @@ def main():
         return result
 
     total, path = worst(resolve(args.root), frozenset())
+    # the start-up code under the root, which calls it through a pointer
+    below = [(resolve(b), frames[resolve(b)]) for b in args.below.split(",") if b and resolve(b) in frames]
+    total += sum(n for _, n in below)
     print("worst-case stack from %s: %d bytes" % (args.root, total))
+    for name, n in below:
+        print("    %s %d bytes (calls it)" % (name, n))
     for step in path:
         print("    " + step)
     if unknown:
