@@ -206,6 +206,15 @@ build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
 	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
 
+# A filtered checker lookup inside one cell takes the point sample: the
+# shortcut against the whole filter, random footprints.
+build/asan/test_footprint: tests/test_footprint.c src/tracer/texture.c src/tracer/texture.h src/numeric/fx.c \
+                           src/rt_error.c tests/testlib.h Makefile
+	@mkdir -p $(@D)
+	$(show) CC $@
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Isrc/tracer -Itests -o $@ tests/test_footprint.c \
+	    src/tracer/texture.c src/numeric/fx.c src/rt_error.c -lm
+
 # ---- make install --------------------------------------------------------
 #
 # What `cmake --install` installs from CMakeLists.txt, file for file:
@@ -343,7 +352,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_footprint build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
         build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 

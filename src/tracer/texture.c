@@ -6,12 +6,7 @@
 static colour_t blend(const texture_t *tx, real_t k) { return v3_madd(tx->a, k, v3_sub(tx->b, tx->a)); }
 
 #if RT_RAY_CONES
-/* The footprint's caps (docs/shading-model.md, "Filtered textures"): its
- * half-extents stop at 1024 cells, where a filtered texture is within
- * 2^-11 of its mean, and its elongation at 256 (a ray within 1/4 degree
- * of the surface). Both keep every step inside the fixed range. */
-#define FOOTPRINT_MAX_CELLS R_RATIO(1024, 1)
-#define FOOTPRINT_MIN_COS R_RATIO(1, 256)
+/* (the footprint's caps: texture.h) */
 _Static_assert(!RT_BACKEND_FIXED || FX_FRAC_BITS <= 20, "the cap, 1024 cells, and a stripe's slope (16) above it fit the range");
 
 /* The half-extents h[a], in cells (inv_size a cell), along the world axes

@@ -16,6 +16,13 @@ typedef struct {
     real_t width;
 } footprint_t;
 
+/* The footprint's caps (docs/shading-model.md, "Filtered textures"): its
+ * half-extents stop at 1024 cells, where a filtered texture is within
+ * 2^-11 of its mean, and its elongation at 256 (a ray within 1/4 degree
+ * of the surface). Both keep every step inside the fixed range. */
+#define FOOTPRINT_MAX_CELLS R_RATIO(1024, 1)
+#define FOOTPRINT_MIN_COS R_RATIO(1, 256)
+
 /* texture_colour's general case (texture.c): every kind, any footprint. */
 colour_t texture_colour_at(const texture_t *tx, vec3_t p, const footprint_t *fp);
 
@@ -34,6 +41,34 @@ static inline colour_t checker_at_point(const texture_t *tx, vec3_t p)
         n += r_wsplit(r_wmul(p.z, tx->inv_size), &f);
     return n & 1 ? tx->b : tx->a;
 }
+
+#if RT_RAY_CONES
+/* Whether fp's footprint lies inside p's cell along every named axis, so
+ * that its mean is the point sample. texture.c's half-extent along axis a,
+ * h_a = rho len_a / c, has len_a <= 1 (plus 2^-15 from the normals'
+ * rounding; 2^-12 and 8 units of margin cover it and every rounding), so
+ * rho < dist_a c, the distance to the cell's nearer edge, says the
+ * interval [x - h_a, x + h_a] stays in the cell: the same colour without
+ * the root and the division a filtered lookup takes. */
+static inline bool footprint_in_cell(const texture_t *tx, vec3_t p, const footprint_t *fp)
+{
+    real_t rho = r_mul(r_abs(fp->width) / 2, tx->inv_size);
+    real_t c = r_max(-v3_dot_in_range(fp->dir, fp->n), FOOTPRINT_MIN_COS);
+    const real_t x[3] = { p.x, p.y, p.z };
+    if (rho >= FOOTPRINT_MAX_CELLS)
+        return false;
+    rho += rho / 4096 + R_ULPS(8);
+    for (unsigned a = 0; a < 3; a++) {
+        if (!(tx->axes >> a & 1u))
+            continue;
+        real_t f;
+        r_wsplit(r_wmul(x[a], tx->inv_size), &f);
+        if (r_mul(r_min(f, R_ONE - f), c) <= rho)
+            return false;
+    }
+    return true;
+}
+#endif
 #endif
 
 /* The colour C of texture tx at point p (in the scene's scale): its mean
@@ -43,8 +78,13 @@ static inline colour_t checker_at_point(const texture_t *tx, vec3_t p)
 static inline colour_t texture_colour(const texture_t *tx, vec3_t p, const footprint_t *fp)
 {
 #if RT_USE_CHECKER
-    if (tx->kind == TEXTURE_CHECKER && (!fp || fp->width == 0))
+#if RT_RAY_CONES
+    if (tx->kind == TEXTURE_CHECKER && (!fp || fp->width == 0 || footprint_in_cell(tx, p, fp)))
         return checker_at_point(tx, p);
+#else
+    if (tx->kind == TEXTURE_CHECKER)
+        return checker_at_point(tx, p);
+#endif
 #endif
     return texture_colour_at(tx, p, fp);
 }
