@@ -193,8 +193,9 @@ TEXTURE_FILTER_FLAGS := $(if $(filter 0,$(TEXTURE_FILTER)),-DRT_TEXTURE_FILTER=0
 # compiler emits memset/memcpy calls after the IR is read; runners look
 # board symbols up by name). The link writes the one partition's call
 # graph (lto-ltrans0.ltrans.ci) for make size's stack bound; make profile
-# keeps rt_render, trace_ray and scene_occluded as calls (RT_KEEP_FRAMES:
-# its own build folder), the frames profile.py sorts ray kinds by.
+# keeps trace_ray, trace_segment, the ray counters and scene_occluded as
+# calls (RT_KEEP_FRAMES: its own build folder), the frames profile.py
+# sorts ray kinds by.
 SPECIALISE ?= 1
 ifeq ($(filter 0 1,$(SPECIALISE)),)
 $(error SPECIALISE=$(SPECIALISE): 0 (generic) or 1 (built for the scene))
