@@ -173,6 +173,12 @@ static RT_INLINE bool never_eye_miss(const void *p, uint32_t i, const ray_scratc
     (void)p, (void)i, (void)w, (void)row, (void)k;
     return false;
 }
+static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
+                                        const ray_scratch_t *w)
+{
+    (void)p, (void)r, (void)i, (void)l, (void)w;
+    return false;
+}
 
 #if RT_USE_FLAT
 /* A shadow ray from P along d (unit) to the light L that meets sphere
@@ -291,12 +297,6 @@ static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint
     return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;
 #endif
 }
-static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
-                                        const ray_scratch_t *w)
-{
-    (void)p, (void)r, (void)i, (void)l, (void)w;
-    return false;
-}
 #define FLAT_SHADOW_MISS(e) _Generic((e), const sphere_t *: sphere_shadow_miss, default: never_shadow_miss)
 #else
 void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
@@ -305,12 +305,6 @@ void scene_eye_setup(const scene_t *sc, const camera_t *cam, ray_scratch_t *w)
 }
 #define FLAT_EYE_MISS(e) never_eye_miss /* the flat search is the tests' brute force only */
 #define FLAT_SHADOW_MISS(e) never_shadow_miss
-static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t i, uint32_t l,
-                                        const ray_scratch_t *w)
-{
-    (void)p, (void)r, (void)i, (void)l, (void)w;
-    return false;
-}
 #endif
 /* the tests of a kind's loop, counted once (32-bit counters that
  * scene_fold_stats adds to the 64-bit ones) */
