@@ -17,7 +17,14 @@
  *      rings-1 and the showpiece at 64x64, against 0.5045 / 0.5109 /
  *      0.5093 interleaved (docs/boards.md, "Two cores").
  *
- * Counting. Under QEMU's -icount the cores run one at a time on one host
+ * Counting: in instructions where the board counts them
+ * (port_icount_read), else in each core's own cycles
+ * (port_core_cycles_read: the pico's SysTick, one per core); the report
+ * names the unit (BANDS_UNIT). With per-core counters each core's count
+ * is its own whatever the other does, and the cores run in parallel (the
+ * chip, or rp2040js stepping both): cores_one_at_a_time() is false.
+ *
+ * Under QEMU's -icount the cores run one at a time on one host
  * thread, and the instruction counter is one clock for all of them. Each
  * core therefore counts its own instructions per segment of work (a band,
  * a hand-over) as the clock's advance minus the instructions the others
@@ -97,12 +104,20 @@ typedef struct {
     uint64_t t0, other0;
 } segment_t;
 
-static segment_t segment_start(unsigned c) { return (segment_t){ port_icount_read(), others_busy(c) }; }
+/* The count this file keeps (bands.h's units) */
+#if BOARD_INSTR_COUNTER
+static inline uint64_t count_read(void) { return port_icount_read(); }
+#else
+_Static_assert(BOARD_CYCLES, "bands.c counts instructions or, without an instruction counter, each core's cycles");
+static inline uint64_t count_read(void) { return port_core_cycles_read(); }
+#endif
 
-/* This core's instructions in the segment, now counted as its own. */
+static segment_t segment_start(unsigned c) { return (segment_t){ count_read(), others_busy(c) }; }
+
+/* This core's count in the segment, now counted as its own. */
 static uint64_t segment_end(unsigned c, segment_t s)
 {
-    uint64_t elapsed = port_icount_read() - s.t0, others = others_busy(c) - s.other0;
+    uint64_t elapsed = count_read() - s.t0, others = others_busy(c) - s.other0;
     uint64_t own = fr.rep->one_at_a_time && others < elapsed ? elapsed - others : elapsed;
     fr.busy[c] += own;
     return own;
@@ -258,8 +273,7 @@ static void core1_entry(void)
         port_wait_event();
     }
     render_bands(1);
-    for (;;)
-        port_wait_event();
+    /* returns: the port parks core 1 (port.h) */
 }
 
 /* Whether the cores run one at a time: core 1 counts while it waits to
@@ -270,6 +284,8 @@ static void core1_entry(void)
  * change ends it. */
 static bool cores_one_at_a_time(void)
 {
+    if (!BOARD_INSTR_COUNTER) /* each core counts its own cycles: see Counting */
+        return false;
     uint32_t before = fr.spin;
     for (uint32_t n = 0; n < 1000000; n++)
         /* cppcheck-suppress knownConditionTrueFalse ; volatile: core 1 counts it */

@@ -8,7 +8,13 @@
 
 #include "rt_render.h"
 
-/* What one core did, in instructions (each core's own: see bands.c). */
+/* What one core did, in instructions, or in its own cycles on a board
+ * without an instruction counter (BANDS_UNIT; bands.c's Counting). */
+#if BOARD_INSTR_COUNTER
+#define BANDS_UNIT "instructions"
+#else
+#define BANDS_UNIT "cycles"
+#endif
 typedef struct {
     uint64_t render; /* inside its band renders */
     uint64_t wait;   /* on the parallel timeline: for a free band buffer */

@@ -105,8 +105,16 @@ int main(void)
     sink.dither = true;
 #endif
     static bands_report_t rep;
+#if BOARD_CYCLES
+    uint64_t c0 = port_cycles_read(); /* core 0's marks, as with one core: start, output pairs, end */
+#endif
     int rc = bands_render(sc, &opts, &sink, &rep, &err);
-    uint64_t instr = 0; /* every core's render: the work, as one core counts it */
+#if BOARD_CYCLES
+    /* the frame's time on the board: core 0's, from the start to the end
+     * of both cores' work, its own output left out */
+    uint64_t cycles = port_cycles_read() - c0 - sink_io_cycles();
+#endif
+    uint64_t instr = 0; /* every core's render: the work, as one core counts it (BANDS_UNIT) */
     for (unsigned c = 0; c < BOARD_CORES; c++) {
         instr += rep.core[c].render;
         rt_stats_add(&st, &rep.core[c].stats);
@@ -122,15 +130,16 @@ int main(void)
         report_value("render_instructions", instr);
         report_value("instructions_per_pixel", (instr + pixels / 2) / pixels);
     }
-#if BOARD_CYCLES && BOARD_CORES == 1
+#if BOARD_CYCLES
     if (port_counts_cycles()) {
         report_value("render_cycles", cycles);
         report_value("cycles_per_pixel", (cycles + pixels / 2) / pixels);
     }
 #endif
 #if BOARD_CORES > 1
-    static const char *const keys[][3] = { { "core0_render_instructions", "core0_wait_instructions", "core0_bands" },
-                                           { "core1_render_instructions", "core1_wait_instructions", "core1_bands" } };
+    /* in the unit bands.c counts in: instructions, or each core's cycles */
+    static const char *const keys[][3] = { { "core0_render_" BANDS_UNIT, "core0_wait_" BANDS_UNIT, "core0_bands" },
+                                           { "core1_render_" BANDS_UNIT, "core1_wait_" BANDS_UNIT, "core1_bands" } };
     _Static_assert(BOARD_CORES <= sizeof keys / sizeof keys[0], "a report key per core");
     report_value("cores", BOARD_CORES);
     report_value("cores_one_at_a_time", rep.one_at_a_time); /* 1: the counts below are exact */
@@ -139,8 +148,8 @@ int main(void)
         report_value(keys[c][1], rep.core[c].wait);
         report_value(keys[c][2], rep.core[c].bands);
     }
-    report_value("critical_path_instructions", rep.critical_path);
-    report_value("critical_path_instructions_per_pixel", (rep.critical_path + pixels / 2) / pixels);
+    report_value("critical_path_" BANDS_UNIT, rep.critical_path);
+    report_value("critical_path_" BANDS_UNIT "_per_pixel", (rep.critical_path + pixels / 2) / pixels);
 #endif
     rt_stats_each(&st, report_counter, 0);
     report_value("stack_high_water", stack_high_water());

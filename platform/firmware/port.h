@@ -14,8 +14,9 @@
  *     in platform/arch/<arch>/ as well; a board meant for silicon
  *     without a debugger brings its own and leaves the arch's out with
  *     BOARD_ARCH_SKIP in its board.mk);
- *   - a linker script that defines MEMORY, says where code and the
- *     scene's tables run (the region aliases CODE and SCENE) and includes
+ *   - a linker script that defines MEMORY, says where code, the scene's
+ *     tables and the stack go (the region aliases CODE, SCENE and STACK)
+ *     and includes
  *     platform/firmware/sections.ld (which defines the symbols below);
  *   - board.mk: CPU flags, QEMU command, clock, backends (docs/boards.md,
  *     "Adding a board").
@@ -104,13 +105,15 @@ void report_text(const char *text);
 /* ---- a port with more than one core ------------------------------------- */
 /*
  * Only a board with a second core provides these (mps2-an521: two
- * Cortex-M33); its board.mk sets BOARD_CORES := 2 (platform/firmware/
- * bands.c then splits the frame between the cores), and a
- * single-core port neither defines nor links any of them. Both cores run
- * the same image, so the console and port_exit() stay core 0's: core 1
- * reports through shared memory. port_icount_read() may be called from
- * either core (under QEMU the counter is one virtual clock, so it counts
- * both cores' instructions, not the caller's).
+ * Cortex-M33; pico: the RP2040's two Cortex-M0+); its board.mk sets
+ * BOARD_CORES := 2 (platform/firmware/bands.c then splits the frame
+ * between the cores), and a single-core port neither defines nor links
+ * any of them. Both cores run the same image, so port_exit() stays core
+ * 0's, and core 1 reports through shared memory; the console may be
+ * written by either core, one at a time (bands.c's hand-over holds a
+ * lock). port_icount_read() may be called from either core (under QEMU
+ * the counter is one virtual clock, so it counts both cores' instructions,
+ * not the caller's).
  */
 
 /* Which core runs the caller: 0 (the one reset starts in main) or 1. */
@@ -134,6 +137,14 @@ void port_signal_event(void);
  * barrier either side, so plain stores before it are seen by whoever
  * reads the new value (hand-out of work, done counts). */
 uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v);
+
+/* A board that counts cycles but not instructions (BOARD_CYCLES 1,
+ * BOARD_INSTR_COUNTER 0: the pico, whose SysTick is each core's own):
+ * the calling core's own cycles, which bands.c counts each core's work
+ * with. Not port_cycles_read(): a runner may watch that one's calls on
+ * core 0 as the render's marks (platform/pico/run.mjs), which must stay
+ * the render's start, the output pairs and its end. */
+uint64_t port_core_cycles_read(void);
 
 /* Provided by platform/firmware/stack.c when BOARD_CORES > 1: the stack
  * functions above measure core 0's stack (sections.ld's .stack); these

@@ -25,7 +25,7 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
 /* A sink brackets its work (output, checksums, waiting for a transfer)
  * in these, not nested (sink_io.c); the totals are what main.c takes
  * from the render's instructions and, on a port that counts them
- * (BOARD_CYCLES), its cycles. */
+ * (BOARD_CYCLES), its cycles (sink_io_cycles: the calling core's). */
 void sink_io_begin(void);
 void sink_io_end(void);
 uint64_t sink_io_instructions(void);

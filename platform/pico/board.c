@@ -14,9 +14,20 @@
  *    rate is only close), leaves the LED off and stops with status 5.
  *  - Console: UART0 on GP0 (TX) and GP1 (RX), 115200 8N1.
  *  - Cycles: SysTick counts clk_sys cycles down from 2^24 - 1; its
- *    interrupt counts the wraps (every 0.134 s at 125 MHz). The M0+ has
- *    no instruction counter (BOARD_INSTR_COUNTER := 0): run.mjs counts
- *    instructions from outside, between the calls of port_cycles_read.
+ *    interrupt counts the wraps (every 0.134 s at 125 MHz). Each core has
+ *    its own SysTick (in its own PPB) and its own count of wraps. The M0+
+ *    has no instruction counter (BOARD_INSTR_COUNTER := 0): run.mjs
+ *    counts instructions from outside, between the calls of
+ *    port_cycles_read on core 0.
+ *  - Both cores (BOARD_CORES 2, port.h's multi-core part): core 1 waits
+ *    in the boot ROM from reset until core 0 sends it the launch sequence
+ *    over the inter-core FIFO (port_start_core1); it gets the vector table
+ *    core 0 runs with (VTOR, 0x10000100) and its stack in SRAM4 (link.ld;
+ *    core 0's is in SRAM5), starts its own SysTick and runs the entry.
+ *    The atomic add takes SIO spinlock 31 (the M0+ has no LDREX/STREX);
+ *    waiting and signalling are WFE and DSB + SEV
+ *    (platform/arch/cortex-m/multicore.c). Each core divides on its own
+ *    SIO divider (sio_div.h); no interrupt handler divides.
  *  - The on-board LED (GP25) blinks as bands are drawn, and stays on
  *    when the run ended well, off when it did not.
  *  - The end: the exit status as the last report line, the UART drained,
@@ -114,7 +125,15 @@ _Static_assert(XOSC_HZ / 1000u * PLL_FBDIV / (PLL_POSTDIV1 * PLL_POSTDIV2) * 100
  * crystal's start-up, 1 ms, is about 2,000 polls at 6.5 MHz). */
 #define WAIT_POLLS 1000000u
 
-static volatile uint32_t systick_wraps;
+#ifndef BOARD_CORES
+#define BOARD_CORES 1
+#endif
+#define SIO_CPUID REG(0xd0000000u) /* 0 on core 0, 1 on core 1 */
+/* The atomic add's lock (port_atomic_add): any of the 32 would do, as
+ * the firmware takes no other. */
+#define SIO_SPINLOCK_ATOMIC REG(0xd0000100u + 4u * 31u)
+
+static volatile uint32_t systick_wraps[BOARD_CORES]; /* each core's own SysTick */
 static const char *bringup_failed; /* the wait that expired, or 0 */
 
 /* Waits until (*reg & mask) == want, at most WAIT_POLLS reads; on
@@ -183,7 +202,13 @@ static void uart_init(uint32_t clk_peri_hz)
 }
 _Static_assert(UART_DIV64(125000000u) == 67u * 64u + 52u, "115200 baud from 125 MHz: IBRD 67, FBRD 52");
 
-void SysTick_Handler(void) { systick_wraps++; }
+#if BOARD_CORES > 1
+static inline unsigned this_core(void) { return SIO_CPUID; }
+#else
+static inline unsigned this_core(void) { return 0; }
+#endif
+
+void SysTick_Handler(void) { systick_wraps[this_core()]++; }
 
 void port_init(void)
 {
@@ -203,6 +228,9 @@ void port_init(void)
         report_text(bringup_failed);
         port_exit(5);
     }
+#if BOARD_CORES > 1
+    SIO_SPINLOCK_ATOMIC = 1; /* free, even if held across a reset that left SIO alone (a debugger's) */
+#endif
     systick_start_wrapping();
 }
 
@@ -224,21 +252,135 @@ void port_write(const void *data, size_t len)
     }
 }
 
-/* Cycles since SysTick started: its wraps, then its count down. A wrap
- * between the two reads shows as a changed wrap count: read again. */
+/* Cycles since the calling core's SysTick started: its wraps, then its
+ * count down. A wrap between the two reads shows as a changed wrap
+ * count: read again. */
 uint64_t board_cycles(void)
 {
+    volatile uint32_t *w = &systick_wraps[this_core()];
     uint32_t wraps, count;
     do {
-        wraps = systick_wraps;
+        wraps = *w;
         count = SYST_CVR;
-    } while (wraps != systick_wraps);
+    } while (wraps != *w);
     return ((uint64_t)wraps << 24) + (SYST_TOP - count);
 }
 
 /* The firmware's marks (render start and end, display output): run.mjs
- * counts instructions between the calls of this very function. */
-uint64_t port_cycles_read(void) { return board_cycles(); }
+ * counts instructions between the calls of this very function on core 0.
+ * no_icf: no other function (port_core_cycles_read) may be folded into
+ * it, or its calls would be marks too. */
+__attribute__((noinline, no_icf)) uint64_t port_cycles_read(void) { return board_cycles(); }
+
+#if BOARD_CORES > 1
+/* ---- two cores -------------------------------------------------------------- */
+
+#define SIO_FIFO_ST REG(0xd0000050u)
+#define SIO_FIFO_WR REG(0xd0000054u)
+#define SIO_FIFO_RD REG(0xd0000058u)
+#define FIFO_VLD (1u << 0) /* this core's receive FIFO has a word */
+#define FIFO_RDY (1u << 1) /* this core's send FIFO has room */
+#define SCB_VTOR REG(0xe000ed08u)
+
+/* The launch: the ROM on core 1 echoes each word; a wrong echo starts the
+ * sequence again. Each echo comes in microseconds; the wait for one is
+ * bounded in cycles, and WFE wakes at least at each SysTick wrap. */
+#define LAUNCH_ECHO_CYCLES (CLK_SYS_HZ / 2u) /* 0.5 s */
+#define LAUNCH_TRIES 8u
+
+extern uint32_t __stack1_top[];
+static void (*volatile core1_entry)(void);
+
+unsigned port_core_id(void) { return this_core(); }
+
+uint64_t port_core_cycles_read(void) { return board_cycles(); }
+
+/* Core 1 comes here from the ROM (blx), on __stack1_top, with VTOR set to
+ * core 0's vector table; .data and .bss were set up by core 0. */
+static void core1_start(void)
+{
+    SIO_FIFO_ST = 0; /* clears the ROM's sticky read-on-empty (ROE) */
+    systick_start_wrapping(); /* core 1's own SysTick */
+    __asm__ volatile("cpsie i" : : : "memory");
+    core1_entry();
+    /* done: nothing left that could wake it */
+    systick_stop();
+    __asm__ volatile("cpsid i" : : : "memory");
+    for (;;)
+        __asm__ volatile("wfi");
+}
+
+/* Sends one word of the launch sequence and returns core 1's echo, or
+ * stops the run (status 5) when core 1 does not answer. */
+static uint32_t launch_word(uint32_t word)
+{
+    uint64_t deadline = board_cycles() + LAUNCH_ECHO_CYCLES;
+    if (word == 0) { /* (the ROM reads a 0 as: start again) */
+        while (SIO_FIFO_ST & FIFO_VLD) { /* what core 1 pushed before, such as the 0 it sends after its reset */
+            (void)SIO_FIFO_RD;
+            if (board_cycles() > deadline) {
+                report_text("core 1 launch: the inter-core FIFO from core 1 never empties");
+                port_exit(5);
+            }
+        }
+        __asm__ volatile("sev" : : : "memory");
+    }
+    while (!(SIO_FIFO_ST & FIFO_RDY))
+        if (board_cycles() > deadline) {
+            report_text("core 1 launch: the inter-core FIFO to core 1 stayed full");
+            port_exit(5);
+        }
+    SIO_FIFO_WR = word;
+    __asm__ volatile("sev" : : : "memory");
+    while (!(SIO_FIFO_ST & FIFO_VLD)) {
+        if (board_cycles() > deadline) {
+            report_text("core 1 launch: no echo from core 1's boot ROM");
+            port_exit(5);
+        }
+        port_wait_event();
+    }
+    return SIO_FIFO_RD;
+}
+
+/* The boot ROM's launch sequence (RP2040 datasheet 2.8.2): 0, 0, 1, the
+ * vector table (256-byte aligned: core 0's, VTOR), the stack pointer and
+ * the entry with its Thumb bit, each echoed by core 1. */
+void port_start_core1(void (*entry)(void))
+{
+    core1_entry = entry;
+    const uint32_t seq[] = { 0, 0, 1, SCB_VTOR, (uint32_t)(uintptr_t)__stack1_top, (uint32_t)(uintptr_t)core1_start | 1u };
+    /* the entry in memory before core 1 can run */
+    __asm__ volatile("dsb" : : : "memory");
+    unsigned i = 0, tries = 0;
+    while (i < sizeof seq / sizeof seq[0]) {
+        if (launch_word(seq[i]) == seq[i]) {
+            i++;
+        } else if (++tries < LAUNCH_TRIES) {
+            i = 0;
+        } else {
+            report_text("core 1 launch: core 1 echoed a wrong word on every try");
+            port_exit(5);
+        }
+    }
+}
+
+/* *p += v under the spinlock: a read claims it (non-zero once claimed),
+ * a write frees it. The DMBs keep the update inside the lock, and plain
+ * accesses on either side out of it. */
+uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v)
+{
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    while (SIO_SPINLOCK_ATOMIC == 0)
+        ;
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    uint32_t old = *p;
+    *p = old + v;
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    SIO_SPINLOCK_ATOMIC = 1;
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    return old;
+}
+#endif
 
 void port_heartbeat(void) { SIO_GPIO_OUT_XOR = 1u << PIN_LED; }
 

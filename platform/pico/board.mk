@@ -1,5 +1,6 @@
-# board.mk - Raspberry Pi Pico (RP2040): one Cortex-M0+ at 125 MHz from
-# the 12 MHz crystal (the second core is not used), 2 MiB of flash,
+# board.mk - Raspberry Pi Pico (RP2040): two Cortex-M0+ at 125 MHz from
+# the 12 MHz crystal, both rendering (make CORES=1: core 0 alone; core 1
+# launched through the boot ROM, board.c), 2 MiB of flash,
 # 264 KiB of SRAM, no FPU, no divide instruction (the SIO divider
 # instead: PICO_DIVIDER), and an ST7789 panel on SPI0 where the frame
 # goes (st7789.c, by DMA). Report lines go over UART0 (GP0, 115200 8N1).
@@ -10,7 +11,7 @@
 # does (rp2040js pinned in package.json, installed into node_modules/ by
 # npm ci, by platform/ensure-deps.sh). Variables: platform/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
-BOARD_TITLE    := Raspberry Pi Pico (RP2040) with one of its two Cortex-M0+ cores and no FPU
+BOARD_TITLE    := Raspberry Pi Pico (RP2040) with both Cortex-M0+ cores and no FPU
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m0plus -mthumb
@@ -34,6 +35,9 @@ BOARD_RUN       = node platform/pico/run.mjs --module $(PANEL)$(if $(filter 1,$(
 BOARD_CYCLES   := 1
 BOARD_INSTR_COUNTER := 0
 BOARD_ARCH_SKIP := semihost
+# both cores render (platform/firmware/bands.c, with port.h's multi-core
+# part: board.c); make CORES=1 renders on core 0 alone
+BOARD_CORES    := 2
 # the LED on GP25 blinks as bands are drawn (port_heartbeat, board.c)
 BOARD_CFLAGS   += -DBOARD_LED=1
 # boot2 with its CRC, and the UF2 to copy onto the RPI-RP2 drive
@@ -69,7 +73,9 @@ BOARD_CFLAGS   += -DPANEL_WIDTH=$(word 1,$(subst x, ,$(PANEL))) -DPANEL_HEIGHT=$
 BOARD_PANEL    := $(PANEL)
 BOARD_PANEL_NAME := $(PANEL) panel (PANEL=$(PANEL))
 FW_FORMAT      := rgb565be
-# two band buffers of 4 lines (st7789.c splits the one main.c gives it)
+# bands of 8 lines: on two cores (bands.c) each core has two band
+# buffers of its own; on one (CORES=1) st7789.c splits the one main.c
+# gives it into two of 4 lines
 BOARD_BAND_LINES := 8
 else ifneq ($(PICO_DISPLAY),uart)
 $(error PICO_DISPLAY=$(PICO_DISPLAY): st7789 or uart)

@@ -1,13 +1,12 @@
 /*
  * multicore.c - the architecture's half of port.h's "more than one core"
- * contract, for any Cortex-M with exclusives (v7-M, v8-M): waiting on and
- * signalling events, and an atomic add. Only a multi-core port's firmware
- * references them; a single-core one links none (--gc-sections), and on
- * v6-M (no LDREX/STREX) the file is empty.
+ * contract, for any Cortex-M: waiting on and signalling events, and, on a
+ * core with exclusives (v7-M, v8-M), an atomic add. Only a multi-core
+ * port's firmware references them; a single-core one links none
+ * (--gc-sections). ARMv6-M (the RP2040's M0+) has no LDREX/STREX: its
+ * port brings its own port_atomic_add (the pico's, on an SIO spinlock).
  */
 #include "port.h"
-
-#if defined(__ARM_FEATURE_LDREX) && (__ARM_FEATURE_LDREX & 4)
 
 /* WFE returns at once if an event came since the last one (the event
  * register), so a signal between the caller's test and this call is not
@@ -18,12 +17,13 @@ void port_wait_event(void)
 }
 
 /* DSB, not DMB: the stores must have completed, not only be ordered,
- * before the other core can wake and look. */
+ * before the other core can wake and look (v6-M has DSB too). */
 void port_signal_event(void)
 {
     __asm__ volatile("dsb\n\tsev" : : : "memory");
 }
 
+#if defined(__ARM_FEATURE_LDREX) && (__ARM_FEATURE_LDREX & 4)
 /* An LDREX/STREX loop between two DMBs. The seq_cst add alone compiles
  * to LDAEX/STLEX, which would still let a plain store before it pass a
  * plain load after it. 32 bits only: a 64-bit atomic would call
@@ -35,7 +35,4 @@ uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v)
     __atomic_thread_fence(__ATOMIC_SEQ_CST);
     return old;
 }
-
-#else
-typedef int multicore_needs_ldrex; /* ISO C: no empty translation unit */
 #endif
