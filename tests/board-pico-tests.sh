@@ -19,6 +19,11 @@
 #    clk_peri are 125 MHz, the exit status 0, and the firmware printed its
 #    progress;
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
+#  - both cores (the default; platform/firmware/bands.c) give the panel
+#    bytes core 0 alone gives (CORES=1), the report has each core's
+#    cycles and bands, the two-core frame's critical path and its time on
+#    core 0 are at most 0.55 of one core's cycles, and each core's stack
+#    sits in its own 4 KiB SRAM bank;
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
 #    (0) give the same image and counters, the divider in fewer cycles on
 #    a scene that divides (rings-1: cylinders);
@@ -110,6 +115,49 @@ pico_case showpiece-uart scenes/showpiece.nff 32x24 5 rgb888 PICO_DISPLAY=uart
 # within 0.1% of each other: code placement moves as much)
 pico_case rings-div scenes/spd/rings-1.nff 24x24 5 rgb565be SPECIALISE=0
 pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be "PICO_DIVIDER=0 SPECIALISE=0"
+
+# Both cores (the default build) against core 0 alone (make CORES=1), on
+# a frame of CORES_BANDS bands of 8 lines: the same panel bytes (the whole
+# panel as the glass shows it), each core's cycles and bands in the
+# report, and the two-core frame within CORES_SHARE of one core's cycles,
+# both its critical path (the later core's render plus its waits, output
+# left out) and its time on core 0 (render_cycles). rp2040js steps the two
+# cores by their cycles, so the figures repeat exactly.
+CORES_SIZE=40x96 CORES_BANDS=12 CORES_SHARE=0.55
+pico_case card-cores2 scenes/bench/card.nff $CORES_SIZE 3 rgb565be
+pico_case card-cores1 scenes/bench/card.nff $CORES_SIZE 3 rgb565be CORES=1
+r2=$OUT/card-cores2.report r1=$OUT/card-cores1.report
+p2=$(elf_of SCENE=scenes/bench/card.nff SIZE=$CORES_SIZE DEPTH=3).panel.stream
+p1=$(elf_of SCENE=scenes/bench/card.nff SIZE=$CORES_SIZE DEPTH=3 CORES=1).panel.stream
+if [ -s "$p2" ] && cmp -s "$p1" "$p2"; then
+    ok "two cores: the whole panel byte-identical to one core's ($(wc -c <"$p2") bytes of $(basename "$p2"))"
+else
+    bad "two cores: the panel differs from one core's ($p2, $p1)"
+fi
+c0=$(val core0_render_cycles "$r2") c1=$(val core1_render_cycles "$r2") b0=$(val core0_bands "$r2") b1=$(val core1_bands "$r2")
+if [ "$(val cores "$r2")" = 2 ] && [ "$(val cores_one_at_a_time "$r2")" = 0 ] && [ "${c0:-0}" -gt 0 ] && [ "${c1:-0}" -gt 0 ] &&
+   [ "${b0:-0}" -gt 0 ] && [ "${b1:-0}" -gt 0 ] && [ $((b0 + b1)) = $CORES_BANDS ] && [ -z "$(val cores "$r1")" ]; then
+    ok "two cores: core 0 rendered $b0 bands in $c0 cycles, core 1 $b1 in $c1 (SysTick, each core's own)"
+else
+    bad "two cores: report cores $(val cores "$r2"), cycles ${c0:-?} and ${c1:-?}, bands ${b0:-?} + ${b1:-?} of $CORES_BANDS"
+fi
+one=$(val render_cycles "$r1") cp=$(val critical_path_cycles "$r2") frame=$(val render_cycles "$r2")
+if share=$(awk -v one="$one" -v cp="$cp" -v f="$frame" -v max=$CORES_SHARE 'BEGIN {
+        if (!(one > 0 && cp > 0 && f >= cp)) exit 1
+        printf "critical path %d, %.4f of one core'"'"'s %d cycles (%.2fx), frame on core 0 %d, %.4f", cp, cp / one, one, one / cp, f, f / one
+        exit !(cp / one <= max && f / one <= max) }'); then
+    ok "two cores: $share, <= $CORES_SHARE"
+else
+    bad "two cores: critical path ${cp:-?}, frame ${frame:-?} against one core's ${one:-?} cycles (at most $CORES_SHARE): $share"
+fi
+hw=$(val core1_stack_high_water "$r2")
+tops=$(arm-none-eabi-nm "$(elf_of SCENE=scenes/bench/card.nff SIZE=$CORES_SIZE DEPTH=3).elf" | awk '$3 == "__stack_top" || $3 == "__stack1_top" { printf "%s=%s ", $3, $1 }')
+if [ "${hw:-0}" -gt 0 ] && [ "$(val stack_guard_intact "$r2")" = 1 ] &&
+   [ "$tops" = "__stack1_top=20041000 __stack_top=20042000 " ]; then
+    ok "two cores: each stack at the top of its own 4 KiB bank ($tops), core 1's high water $hw bytes, both guards intact"
+else
+    bad "two cores: stacks $tops, core 1's high water ${hw:-?}, guards $(val stack_guard_intact "$r2")"
+fi
 
 # Progress over the UART while the panel fills
 rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-320.report")

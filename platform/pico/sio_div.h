@@ -5,8 +5,9 @@
  *
  * Write the dividend and the divisor, and the quotient is valid 8 cycles
  * later (the CSR's READY bit says when). SIO accesses take one cycle.
- * Nothing else in this firmware divides on the SIO (no interrupts, one
- * core), so no state is saved around it. rp2040js computes the result at
+ * Each core has its own divider at the same address, and no interrupt
+ * handler of this firmware divides (SysTick's only counts), so nothing
+ * can come between the writes and the read: no state is saved around it. rp2040js computes the result at
  * each operand write and charges 8 cycles for each (16 a division; the
  * silicon needs 8 from the last write).
  */

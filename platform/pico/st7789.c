@@ -41,7 +41,12 @@
  * Per band: wait for the last transfer, then CASET and RASET (the band's
  * window, with the panel's offset), RAMWR and the band's bytes by DMA
  * channel 0 paced by SPI0's transmit request; chip select rises when the
- * transfer is done. Before the first band the whole panel is cleared to
+ * transfer is done. With two cores (platform/firmware/bands.c) either core
+ * sends a band, one at a time under the hand-over's lock, and waits for
+ * its transfer (transfer_wait) before letting go of the lock: the other
+ * core always finds the DMA channel idle and the panel released. What
+ * this file keeps (the frame's place, the progress count) is written by
+ * core 0 before core 1 starts, or under that lock. Before the first band the whole panel is cleared to
  * black (one window, the same zero byte sent by DMA for every pixel), and
  * a frame smaller than the panel is centred on it (board.mk refuses a
  * larger one at build time); the sink then reports frame_width,
