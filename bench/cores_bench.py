@@ -9,7 +9,11 @@ its own SysTick cycles), and records one core's count per pixel
 (instructions, or cycles where the board counts those: the report's
 unit), each core's render and waits on the parallel timeline, the
 critical path and the speed-up, and whether the image is byte-identical
-to the one-core run. It writes bench/cores.md and bench/cores.csv.
+to the one-core run. A board that counts cycles (the pico) also renders
+the benchmark scenes of bench/scenes.md (card, depth 3; picolib, depth
+6) at 320x240 on one core and on all: each frame's cycles and time at the
+board's clock. It writes bench/cores.md and bench/cores.csv (and
+bench/cores-frames.csv).
 
   bench/cores_bench.py [--boards a,b] [--scenes a,b]
 """
@@ -24,13 +28,17 @@ from boards_bench import ROOT, SCENES, board_info, boards, run, scene_path  # no
 
 OUT = os.path.join(ROOT, "build", "bench-cores")
 SIZE = "64x64"
+# whole frames on a board that counts cycles: bench/scenes.md's scenes
+FRAME_SIZE = "320x240"
+FRAME_SCENES = {"card": 3, "picolib": 6}  # scene: its ray-tree depth
 
 
-def report(board, scene, cores):
-    args = ["BOARD=" + board, "SCENE=" + scene_path(scene), "SIZE=" + SIZE, "DEPTH=5", "CORES=%d" % cores, "AA=0"]
+def report(board, scene, cores, size=SIZE, depth=5, path=None):
+    args = ["BOARD=" + board, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size, "DEPTH=%d" % depth, "CORES=%d" % cores,
+            "AA=0"]
     if run(["make", "-s", "-j2", "firmware"] + args, check=False).returncode:
         return None, None
-    png = os.path.join(OUT, "%s-%s-%d.png" % (board, scene, cores))
+    png = os.path.join(OUT, "%s-%s-%s-%d.png" % (board, scene, size, cores))
     r = run(["make", "-s", "board-run", "RUN_OUT=" + png] + args, check=False)
     if r.returncode:
         return None, None
@@ -46,7 +54,7 @@ def main():
     run(["make", "-s", "build/host/rt"])
     sel = a.boards.split(",") if a.boards else [b for b in boards() if int(board_info(["BOARD=" + b])["cores"]) > 1]
     scenes = a.scenes.split(",") if a.scenes else SCENES
-    rows = []
+    rows, frames = [], []
     for b in sel:
         cores = int(board_info(["BOARD=" + b])["cores"])
         for s in scenes:
@@ -74,6 +82,31 @@ def main():
             print("%-12s %-10s one core %6d  critical path %6d  (%s, %sx)  image %s" % (
                 b, s, row["one_core_per_px"], row["critical_path_per_px"], row["ratio"], row["speedup"],
                 "same" if same else "DIFFERENT"), flush=True)
+        if not rows or rows[-1]["board"] != b or rows[-1]["unit"] != "cycles" or a.scenes:
+            continue
+        hz = float(board_info(["BOARD=" + b])["clock_hz"])
+        for s, depth in FRAME_SCENES.items():
+            path = os.path.join("scenes", "bench", s + ".nff")
+            one, png1 = report(b, s, 1, FRAME_SIZE, depth, path)
+            par, pngn = report(b, s, cores, FRAME_SIZE, depth, path)
+            if not one or not par:
+                print("%-12s %-10s %s failed" % (b, s, FRAME_SIZE), flush=True)
+                continue
+            px = par["pixels"]
+            same = run(["build/host/rt", "compare", png1, pngn, "--max-error", "0"], check=False).returncode == 0
+            frame = {"board": b, "scene": s, "depth": depth, "size": FRAME_SIZE,
+                     "one_core_cycles": one["render_cycles"], "cycles": par["render_cycles"],
+                     "critical_path_cycles": par["critical_path_cycles"],
+                     "share": "%.4f" % (par["render_cycles"] / one["render_cycles"]),
+                     "critical_path_share": "%.4f" % (par["critical_path_cycles"] / one["render_cycles"]),
+                     "one_core_s": "%.2f" % (one["render_cycles"] / hz), "s": "%.2f" % (par["render_cycles"] / hz),
+                     "one_core_frame_ms": one["frame_ms"], "frame_ms": par["frame_ms"],
+                     "per_px": round(par["render_cycles"] / px), "one_core_per_px": round(one["render_cycles"] / px),
+                     "identical": "yes" if same else "NO"}
+            frames.append(frame)
+            print("%-12s %-10s %s one core %.2f s, %d cores %.2f s (%s; critical path %s)  image %s" % (
+                b, s, FRAME_SIZE, one["render_cycles"] / hz, cores, par["render_cycles"] / hz, frame["share"],
+                frame["critical_path_share"], "same" if same else "DIFFERENT"), flush=True)
     if not rows:
         print("no board with more than one core")
         return 0
@@ -100,8 +133,26 @@ def main():
                 r["core1_per_px"], r["core1_bands"], r["core0_wait_per_px"], r["core1_wait_per_px"],
                 r["critical_path_per_px"], r["ratio"], r["speedup"], r["work"],
                 "identical" if r["identical"] == "yes" else "DIFFERENT"))
+        if frames:
+            f.write("\nWhole frames on a board that counts cycles, the benchmark scenes of `bench/scenes.md` at %s,\n"
+                    "one sample a pixel: the render's cycles (`render_cycles`: on two cores the frame on core 0 from\n"
+                    "the render's start to its end, its own display output left out) a pixel and in seconds at the\n"
+                    "board's clock, on one core and on both, the share of one core's (and the critical path's\n"
+                    "share), and `frame_ms`, the board's own frame time with the panel's output.\n\n" % FRAME_SIZE)
+            f.write("| board | scene | depth | one core: cycles/px | s | frame_ms | two cores: cycles/px | s | frame_ms | "
+                    "share | critical path share | speed-up | image |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+            for r in frames:
+                f.write("| %s | %s | %d | %d | %s | %d | %d | %s | %d | %s | %s | %.2fx | %s |\n" % (
+                    r["board"], r["scene"], r["depth"], r["one_core_per_px"], r["one_core_s"], r["one_core_frame_ms"],
+                    r["per_px"], r["s"], r["frame_ms"], r["share"], r["critical_path_share"],
+                    r["one_core_cycles"] / r["cycles"], "identical" if r["identical"] == "yes" else "DIFFERENT"))
+    if frames:
+        with open(os.path.join(ROOT, "bench", "cores-frames.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(frames[0].keys()))
+            w.writeheader()
+            w.writerows(frames)
     print("wrote bench/cores.md and bench/cores.csv")
-    return 0 if all(r["identical"] == "yes" for r in rows) else 1
+    return 0 if all(r["identical"] == "yes" for r in rows + frames) else 1
 
 
 if __name__ == "__main__":
