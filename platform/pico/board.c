@@ -257,7 +257,7 @@ void port_write(const void *data, size_t len)
  * count: read again. */
 uint64_t board_cycles(void)
 {
-    volatile uint32_t *w = &systick_wraps[this_core()];
+    const volatile uint32_t *w = &systick_wraps[this_core()];
     uint32_t wraps, count;
     do {
         wraps = *w;
