@@ -78,6 +78,7 @@
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { RP2040 } from 'rp2040js';
+import { ROM_END, attachCore1 } from './core1.mjs';
 import { PANELS, checkBorder, decodePanel, panelStream } from './st7789.mjs';
 import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
@@ -299,8 +300,8 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
 
   const mcu = new RP2040();
   const core = mcu.core, clock = mcu.clock;
-  let at = BOOT2_SRAM; // the PC of the instruction being executed
-  const where = () => `at PC ${hex(at)}`;
+  let at = BOOT2_SRAM, atCore = 0; // the PC and core of the instruction being executed
+  const where = () => `at PC ${hex(at)} on core ${atCore}`;
   const stop = (msg) => {
     throw new RunFailure(`${where()}: ${msg}`);
   };
@@ -463,53 +464,97 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
     if (why) stop(`chip select (GP${PIN_CS}) went low while ${why}: on the chip the panel could read a phantom bit`);
   });
 
-  const ppb = mcu.ppb;
-  const canWake = () => (ppb.systickIntEnable && ppb.systickTimer.enable) || core.enabledInterrupts !== 0;
-  let instructions = 0, ending = null;
-  const marks = [];
+  // the two cores (core1.mjs): step the one that has used fewer cycles,
+  // core 0 on ties; a sleeping core does not step. The clock runs to the
+  // slower running core's cycles; a core woken from sleep takes up the
+  // clock's count (its sleeping cycles count, as on SysTick)
+  const c1 = attachCore1(mcu, stop), core1 = c1.core1;
+  const ppbs = [mcu.ppb, c1.bus.ppb], cores = [core, core1];
+  const canWake = (c) => (ppbs[c].systickIntEnable && ppbs[c].systickTimer.enable) || cores[c].enabledInterrupts !== 0;
+  const instructions = [0, 0], slept = [0, 0];
+  let ending = null, now = 0, doneAt = -1;
+  const marks = [[], []];
   const t0 = process.hrtime.bigint();
   try {
     while (ending === null) {
       for (let i = 0; i < 1000000; i++) {
+        // an alarm's interrupt (SysTick's) pends without waking the core
+        if (core.waiting && core.interruptsUpdated && core.checkForInterrupts()) core.waiting = false;
+        if (core1.waiting && core1.interruptsUpdated && core1.checkForInterrupts()) core1.waiting = false;
+        const asleep1 = core1.waiting || c1.off;
+        let c, id;
         if (core.waiting) {
-          if (!canWake()) {
-            ending = 'sleeps with nothing to wake it';
-            break;
+          if (asleep1) {
+            if (!canWake(0) && (c1.off || !canWake(1))) {
+              ending = 'both cores sleep with nothing to wake them';
+              break;
+            }
+            if (!clock.nextAlarm) {
+              ending = 'both cores sleep, interrupts enabled but nothing pending or scheduled';
+              break;
+            }
+            // sleep to the next alarm; clk_sys (and SysTick) keep running
+            const cycles = Math.max(1, Math.ceil(clock.nanosToNextAlarm / nsPerCycle - 1e-9));
+            now += cycles;
+            clock.tick(cycles * nsPerCycle);
+            continue;
           }
-          if (!clock.nextAlarm) {
-            ending = 'sleeps with interrupts enabled but nothing pending or scheduled';
-            break;
+          // core 0 asleep for good (WFI, nothing to wake it) while core 1 runs
+          if (doneAt !== core.cycles) {
+            doneAt = core.cycles;
+            if (!canWake(0) && !c1.inWfe(0))
+              throw new RunFailure(`core 1 is still busy (${c1.state()}) when core 0 sleeps for good (WFI with nothing to wake it, at PC ${hex(core.PC)}, after its last output): core 1 must have finished before the frame is reported`);
           }
-          // sleep to the next alarm; clk_sys (and SysTick) keep running
-          const cycles = Math.max(1, Math.ceil(clock.nanosToNextAlarm / nsPerCycle - 1e-9));
-          core.cycles += cycles;
-          clock.tick(cycles * nsPerCycle);
-          if (core.interruptsUpdated && core.checkForInterrupts()) core.waiting = false;
-          continue;
+          c = core1; id = 1;
+        } else if (asleep1) {
+          c = core; id = 0;
+        } else {
+          // (a core just woken counts from now)
+          const n0 = core.cycles < now ? now : core.cycles, n1 = core1.cycles < now ? now : core1.cycles;
+          if (n0 <= n1) { c = core; id = 0; } else { c = core1; id = 1; }
         }
-        const pc = core.PC;
-        if (pc === markPC) {
-          // an interrupt taken before it would run the handler first
-          if (core.interruptsUpdated && core.checkForInterrupts()) continue;
-          marks.push([instructions, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+        if (c.cycles < now) { // woken: it slept until now
+          slept[id] += now - c.cycles;
+          c.cycles = now;
         }
+        const pc = c.PC;
         at = pc;
-        // (core.cycles, not the instruction's return: the SIO divider adds
-        // its 8 cycles an operand write to core.cycles directly)
-        const before = core.cycles;
-        core.executeInstruction();
-        instructions++;
-        clock.tick((core.cycles - before) * nsPerCycle);
+        atCore = id;
+        if (id && pc < ROM_END) {
+          c1.romStep();
+        } else {
+          if (pc === markPC) {
+            // an interrupt taken before it would run the handler first
+            if (c.interruptsUpdated && c.checkForInterrupts()) continue;
+            marks[id].push([instructions[id], c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+          }
+          c.executeInstruction();
+          instructions[id]++;
+        }
+        // the clock to the slower running core
+        const o = cores[1 - id];
+        const t = o.waiting || (id === 0 && c1.off) || o.cycles > c.cycles ? c.cycles : o.cycles;
+        if (t > now) {
+          clock.tick((t - now) * nsPerCycle);
+          now = t;
+        }
       }
-      if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (${hex(core.PC)})`);
+      if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (core 0 at ${hex(core.PC)}, core 1 ${c1.state()})`);
     }
   } catch (e) {
     if (!(e instanceof RunFailure)) throw e;
     return { failure: e.message, serial: Buffer.from(serial), spi: Buffer.from(spi) };
   }
+  const perCore = [0, 1].map((id) => ({
+    instructions: instructions[id], cycles: cores[id].cycles - slept[id], slept: slept[id],
+  }));
+  perCore[1].state = c1.state();
+  perCore[1].launches = c1.launches;
+  perCore[1].romCycles = c1.romCycles;
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
-    instructions, cycles: core.cycles, marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+    instructions: instructions[0] + instructions[1], cycles: Math.max(now, core.cycles, core1.cycles), perCore,
+    marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
     led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,
   };
@@ -580,7 +625,7 @@ process.stderr.write(rep.stderr);
 console.log(`LED (GP25) at the end: ${r.led ? 'on' : 'off'}`);
 const lines = rep.stdout.trimEnd().split('\n');
 const statusLine = /^exit_status (-?\d+)$/;
-if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (the core ${r.ending}, after ${r.instructions} instructions)`);
+if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (${r.ending}, after ${r.instructions} instructions)`);
 if (!statusLine.test(lines[lines.length - 1])) fail('exit_status is not the firmware\'s last report line');
 const status = Number(lines[lines.length - 1].match(statusLine)[1]);
 if (status !== 0) {
@@ -595,7 +640,7 @@ let systickOff = null;
 if (r.markSym === undefined) {
   console.log(`note: ${elf} has no ${MARK_SYMBOL}: no counts of the render from the emulator`);
 } else {
-  const c = renderCounts(r.marks);
+  const c = renderCounts(r.marks[0]);
   if (c.note) {
     console.log(`note: ${c.note}: no counts of the render from the emulator`);
   } else {
@@ -637,6 +682,24 @@ if (!streamed) {
   const img = receive(rt, [`${base}.frame.stream`, '-o', out]);
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);
+}
+// each core's counts: instructions, and cycles spent running (not asleep;
+// core 1's include the boot ROM's wait); core 1's render counts when it
+// calls port_cycles_read too
+for (const [id, p] of r.perCore.entries()) {
+  console.log(`core${id}_instructions ${p.instructions}`);
+  console.log(`core${id}_cycles ${p.cycles}`);
+}
+console.log(`core1_launches ${r.perCore[1].launches}`);
+console.log(`core 1 at the end: ${r.perCore[1].state}`);
+if (r.marks[1].length) {
+  const c = renderCounts(r.marks[1]);
+  if (c.note) {
+    console.log(`note: core 1: ${c.note}: no counts of its render`);
+  } else {
+    console.log(`core1_render_instructions ${c.instructions}`);
+    console.log(`core1_render_cycles ${c.cycles}`);
+  }
 }
 const mhz = (f) => (f ? `${(f / 1e6).toFixed(3)} MHz` : 'stopped');
 console.log(`clocks at the end: clk_sys ${mhz(r.clkSys)}, clk_peri ${mhz(r.clkPeri)}`);
