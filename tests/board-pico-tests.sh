@@ -34,6 +34,11 @@
 #    transfers of before (data short of its window, a window off the
 #    panel, pixels before sleep out, a frame band lost, the clear lost);
 #    a frame larger than the panel does not build;
+#  - the runner's second core (core1.mjs) on small images
+#    (tests/pico_core1.c): each FIFO, event, spinlock, divider, launch
+#    and reset behaviour against the datasheet's value, and a broken
+#    launch, entry, vector table, divider read or end failing with its
+#    reason;
 #  - the scene's resolution is the frame when SIZE is not given: a
 #    `resolution 320 240` scene fills the 320x240 panel (make run), the
 #    UF2 says so in its check line, make image with the same variables

@@ -11,10 +11,11 @@
 //       252..255 (else the chip drops into USB boot and nothing runs), the
 //       256 bytes go to SRAM 0x20041f00, SP = 0x20042000, and boot2 runs
 //       from there: it sets the SSI up for execute-in-place and starts the
-//       vector table at 0x10000100. One core. UART0 goes to
-//       FIRMWARE.serial, what SPI0 sends (each byte with the data/command
-//       line, GP16) to FIRMWARE.spi. The run ends when the core sleeps
-//       (WFI) with nothing left that could wake it. Prints the report (RT
+//       vector table at 0x10000100. Both cores (core 1 in the boot ROM's
+//       wait for its launch: core1.mjs). UART0 goes to FIRMWARE.serial,
+//       what SPI0 sends (each byte with the data/command line, GP16) to
+//       FIRMWARE.spi. The run ends when both cores sleep (WFI, WFE) with
+//       nothing left that could wake them. Prints the report (RT
 //       receive) and writes OUT.png: from the UART stream when the console
 //       opens with a frame (the stream sink), else from the panel (the
 //       ST7789 sink, whose report gives frame_width and frame_height): the
@@ -48,6 +49,23 @@
 // Sleeping (WFI) advances it to the next alarm, and the sleeping cycles
 // count as cycles, as they do on SysTick.
 //
+// Two cores (core1.mjs has the model and what it leaves out): the core
+// that has used fewer cycles steps next, core 0 on ties; a core asleep
+// in WFI or WFE does not step, and one woken takes up the clock's count
+// (the clock runs to the slower running core's). Core 1 starts in the
+// boot ROM's wait for the launch sequence (modelled, as boot2's step
+// is: no ROM is loaded). What the emulator cannot show: it is
+// sequentially consistent (every store is seen by the other core at
+// once, so a missing barrier cannot be caught), and the cores never
+// contend for an SRAM bank (on silicon they stall each other when both
+// hit one bank in one cycle: a two-core speed-up here is close to 2.0x,
+// where silicon is expected near 1.85-1.95x). Failing on top of the
+// single-core checks: a launch out of the datasheet's sequence, an entry
+// without its Thumb bit, a vector table not aligned to 256 bytes, a
+// divider result read before it is valid, and core 1 still running when
+// core 0 sleeps for good after its last report line. Not checked: shared
+// data written outside a spinlock.
+//
 // Strict: what silicon would not run fails the run, naming the PC and
 // what the chip would do: a peripheral of RESETS touched while in reset;
 // an access where nothing is mapped; the UARTs' or SPIs' data or control
@@ -63,12 +81,18 @@
 // Counting: the firmware reads its SysTick in port_cycles_read at the
 // render's start, in pairs around each piece of display output, and at
 // the render's end. The runner watches that symbol's address (from the
-// ELF): each time the core is about to execute it, it records its own
+// ELF): each time a core is about to execute it, it records that core's
 // instruction count and cycles. Render = (end - start) - the output pairs.
 // It prints render_instructions, instructions_per_pixel,
-// emulator_render_cycles and how the firmware's SysTick render_cycles
-// compares (over 0.1% apart fails). Cycles are rp2040js's Cortex-M0+
-// model: no flash wait states, no XIP cache.
+// emulator_render_cycles (core 0's) and how the firmware's SysTick
+// render_cycles compares (over 0.1% apart fails); core1_render_instructions
+// and core1_render_cycles when core 1 calls it too; then for each core N
+// coreN_instructions and coreN_cycles (cycles running, its sleep left out;
+// core 1's include the ROM's wait), core1_launches, and where core 1 is
+// at the end. Cycles are rp2040js's Cortex-M0+ model: no flash wait
+// states, no XIP cache; the SIO divider is timed as on silicon (its
+// result valid 8 cycles after the last operand write, core1.mjs), not
+// charged at the write as rp2040js does.
 //
 // The panel decoder (st7789.mjs) is strict, so a damaged transfer gives no
 // image: each fault fails with the byte offset in the SPI log.
@@ -471,7 +495,8 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   const c1 = attachCore1(mcu, stop), core1 = c1.core1;
   const ppbs = [mcu.ppb, c1.bus.ppb], cores = [core, core1];
   const canWake = (c) => (ppbs[c].systickIntEnable && ppbs[c].systickTimer.enable) || cores[c].enabledInterrupts !== 0;
-  const instructions = [0, 0], slept = [0, 0];
+  const slept = [0, 0];
+  let n0 = 0, n1 = 0; // instructions
   let ending = null, now = 0, doneAt = -1;
   const marks = [[], []];
   const t0 = process.hrtime.bigint();
@@ -507,7 +532,28 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           }
           c = core1; id = 1;
         } else if (asleep1) {
-          c = core; id = 0;
+          // core 0 alone, as with one core, until it sleeps or core 1 wakes
+          if (core.cycles < now) {
+            slept[0] += now - core.cycles;
+            core.cycles = now;
+          }
+          atCore = 0;
+          for (let k = 0; k < 10000; k++) {
+            const pc = core.PC;
+            if (pc === markPC) {
+              // an interrupt taken before it would run the handler first
+              if (core.interruptsUpdated && core.checkForInterrupts()) continue;
+              marks[0].push([n0, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+            }
+            at = pc;
+            core.executeInstruction();
+            n0++;
+            const t = core.cycles;
+            clock.tick((t - now) * nsPerCycle);
+            now = t;
+            if (core.waiting || core1.interruptsUpdated || !(core1.waiting || c1.off)) break;
+          }
+          continue;
         } else {
           // (a core just woken counts from now)
           const n0 = core.cycles < now ? now : core.cycles, n1 = core1.cycles < now ? now : core1.cycles;
@@ -526,10 +572,11 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           if (pc === markPC) {
             // an interrupt taken before it would run the handler first
             if (c.interruptsUpdated && c.checkForInterrupts()) continue;
-            marks[id].push([instructions[id], c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+            marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
           }
           c.executeInstruction();
-          instructions[id]++;
+          if (id) n1++;
+          else n0++;
         }
         // the clock to the slower running core
         const o = cores[1 - id];
@@ -545,15 +592,13 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
     if (!(e instanceof RunFailure)) throw e;
     return { failure: e.message, serial: Buffer.from(serial), spi: Buffer.from(spi) };
   }
-  const perCore = [0, 1].map((id) => ({
-    instructions: instructions[id], cycles: cores[id].cycles - slept[id], slept: slept[id],
-  }));
+  const perCore = [n0, n1].map((n, id) => ({ instructions: n, cycles: cores[id].cycles - slept[id], slept: slept[id] }));
   perCore[1].state = c1.state();
   perCore[1].launches = c1.launches;
   perCore[1].romCycles = c1.romCycles;
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
-    instructions: instructions[0] + instructions[1], cycles: Math.max(now, core.cycles, core1.cycles), perCore,
+    instructions: n0 + n1, cycles: Math.max(now, core.cycles, core1.cycles), perCore,
     marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
     led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,

@@ -6,9 +6,9 @@
  * Write the dividend and the divisor, and the quotient is valid 8 cycles
  * later (the CSR's READY bit says when). SIO accesses take one cycle.
  * Nothing else in this firmware divides on the SIO (no interrupts, one
- * core), so no state is saved around it. rp2040js computes the result at
- * each operand write and charges 8 cycles for each (16 a division; the
- * silicon needs 8 from the last write).
+ * core), so no state is saved around it. run.mjs times the divider as
+ * the silicon does (READY 8 cycles after the last operand write; a
+ * quotient read before then fails the run).
  */
 #ifndef SIO_DIV_H
 #define SIO_DIV_H
