@@ -555,35 +555,45 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           }
           continue;
         } else {
-          // (a core just woken counts from now)
-          const n0 = core.cycles < now ? now : core.cycles, n1 = core1.cycles < now ? now : core1.cycles;
-          if (n0 <= n1) { c = core; id = 0; } else { c = core1; id = 1; }
+          // both run: a core just woken counts from now
+          for (const x of cores) {
+            if (x.cycles < now) {
+              slept[x === core ? 0 : 1] += now - x.cycles;
+              x.cycles = now;
+            }
+          }
+          if (core.cycles <= core1.cycles) { c = core; id = 0; } else { c = core1; id = 1; }
         }
         if (c.cycles < now) { // woken: it slept until now
           slept[id] += now - c.cycles;
           c.cycles = now;
         }
-        const pc = c.PC;
-        at = pc;
+        // c runs until it passes the other running core (core 0 on ties),
+        // sleeps, or the other's state changes
+        const o = cores[1 - id], oWaiting = o.waiting, oUpdated = o.interruptsUpdated;
+        const lim = oWaiting ? Infinity : o.cycles; // core 1 steps while below it, core 0 up to a tie
         atCore = id;
-        if (id && pc < ROM_END) {
-          c1.romStep();
-        } else {
-          if (pc === markPC) {
-            // an interrupt taken before it would run the handler first
-            if (c.interruptsUpdated && c.checkForInterrupts()) continue;
-            marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+        for (let k = 0; k < 10000; k++) {
+          const pc = c.PC;
+          at = pc;
+          if (id && pc < ROM_END) {
+            c1.romStep();
+          } else {
+            if (pc === markPC) {
+              if (c.interruptsUpdated && c.checkForInterrupts()) continue;
+              marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+            }
+            c.executeInstruction();
+            if (id) n1++;
+            else n0++;
           }
-          c.executeInstruction();
-          if (id) n1++;
-          else n0++;
-        }
-        // the clock to the slower running core
-        const o = cores[1 - id];
-        const t = o.waiting || (id === 0 && c1.off) || o.cycles > c.cycles ? c.cycles : o.cycles;
-        if (t > now) {
-          clock.tick((t - now) * nsPerCycle);
-          now = t;
+          // the clock to the slower running core
+          const t = c.cycles < lim ? c.cycles : lim;
+          if (t > now) {
+            clock.tick((t - now) * nsPerCycle);
+            now = t;
+          }
+          if ((id ? c.cycles >= lim : c.cycles > lim) || c.waiting || c1.off || o.waiting !== oWaiting || o.interruptsUpdated !== oUpdated) break;
         }
       }
       if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (core 0 at ${hex(core.PC)}, core 1 ${c1.state()})`);
