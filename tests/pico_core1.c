@@ -15,6 +15,8 @@
  *   cpuid0, cpuid1          SIO CPUID on each core
  *   div0, div1              each core's own quotient, core 1 dividing
  *                           between core 0's write and read
+ *   locked_count            both cores' 100 additions each to a counter
+ *                           under spinlock 3, at once: 200
  *   sev_woke                core 1 left `while (!flag) wfe` after SEV
  *   own_event               core 0's `sev; wfe` did not sleep
  *   lock_first, lock_again, lock_st, lock_core1_held, lock_core1_freed
@@ -39,6 +41,7 @@
  *   CASE_VTOR       a vector table not aligned to 256 bytes
  *   CASE_DIV_EARLY  core 1 reads DIV_QUOTIENT right after the divisor
  *   CASE_BUSY       core 1 still computing when core 0's report ends
+ *   CASE_UNGUARDED  core 1 adds to the guarded counter without its lock
  */
 #include <stdint.h>
 
@@ -97,6 +100,11 @@ struct shared {
     volatile uint32_t tie[2];
 };
 #define SH ((struct shared *)0x20000000u)
+/* a counter both cores add to under spinlock 3: the data the image
+ * guards (__spinlocked_start.. in pico_core1.ld, for run.mjs) */
+#define COUNT REG(0x20000100u)
+#define COUNT_LOCK 3u
+#define COUNT_ADDS 100u
 
 static inline void sev(void) { __asm__ volatile("sev" ::: "memory"); }
 static inline void wfe(void) { __asm__ volatile("wfe" ::: "memory"); }
@@ -212,6 +220,21 @@ static void __attribute__((unused)) core1_reset(void)
 }
 
 /* ---- core 1 ------------------------------------------------------------- */
+static void add_counts(void)
+{
+    for (uint32_t i = 0; i < COUNT_ADDS; i++) {
+        while (!SPINLOCK(COUNT_LOCK))
+            ;
+        COUNT = COUNT + 1u;
+        SPINLOCK(COUNT_LOCK) = 0;
+    }
+}
+
+static void __attribute__((unused)) core1_unguarded(void)
+{
+    COUNT = COUNT + 1u;
+}
+
 static void core1_main(void)
 {
     SH->roe1 = FIFO_ST;
@@ -225,6 +248,7 @@ static void core1_main(void)
     while (!(DIV_CSR & 1u))
         ;
     SH->div1 = DIV_QUOTIENT;
+    add_counts();
     push(1);
     /* woken by core 0's SEV */
     while (SH->flag != 2)
@@ -297,6 +321,10 @@ void reset(void)
     for (int n = 0; n < 1000; n++)
         __asm__ volatile("nop");
     finish(0);
+#elif defined(CASE_UNGUARDED)
+    const uint32_t seq[] = {0, 0, 1, vt, STACK1, (uint32_t)core1_unguarded};
+    launch(seq, 6, 1);
+    finish(0);
 #elif defined(CASE_BUSY)
     const uint32_t seq[] = {0, 0, 1, vt, STACK1, (uint32_t)core1_busy};
     launch(seq, 6, 1);
@@ -306,6 +334,7 @@ void reset(void)
     report("stale_vld", FIFO_ST & FIFO_VLD);
     report("stale_word", FIFO_RD);
     SH->flag = 0;
+    COUNT = 0; /* (core 1 not launched yet: no lock needed) */
     const uint32_t seq[] = {0, 0, 1, vt, STACK1, (uint32_t)core1_main};
     report("launched", (uint32_t)launch(seq, 6, 1));
     report("cpuid0", CPUID);
@@ -314,7 +343,9 @@ void reset(void)
     DIV_UDIVISOR = 3u;
     SH->flag = 1;
     sev();
+    add_counts(); /* while core 1 adds too */
     uint32_t a = pop();
+    report("locked_count", COUNT);
     while (!(DIV_CSR & 1u))
         ;
     report("div0", DIV_QUOTIENT);

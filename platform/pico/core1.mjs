@@ -45,7 +45,9 @@
 // launch sequence broken (the datasheet's 0, 0, 1, vector table, stack
 // pointer, entry: a word out of it, naming the word expected and the one
 // received), an entry without its Thumb bit (a HardFault on silicon), a
-// vector table not aligned to 256 bytes, an early divider read.
+// vector table not aligned to 256 bytes, an early divider read, and (best
+// effort, when the runner is given the image's guarded data: guard()) a
+// core's write to that data holding no spinlock while core 1 runs.
 // Not modelled: memory ordering (the emulator is sequentially consistent:
 // a missing barrier cannot show), SRAM bank contention (silicon's two
 // cores stall each other on one bank; here they never do), SEVONPEND,
@@ -63,6 +65,7 @@ const FIFO_DEPTH = 8;
 const SIO_CPUID = 0x000, FIFO_ST = 0x050, FIFO_WR = 0x054, FIFO_RD = 0x058;
 const DIV_FIRST = 0x060, DIV_LAST_OPERAND = 0x06c, DIV_QUOTIENT = 0x070, DIV_REMAINDER = 0x074, DIV_CSR = 0x078;
 const PER_CORE_END = 0x100; // divider 0x060..0x07c, interpolators 0x080..0x0fc
+const SPINLOCK0 = 0x100, SPINLOCK31 = 0x17c;
 const DIV_CYCLES = 8;
 const SIO_STORE_CYCLES = 1; // a store to the SIO (the M0+ I/O port)
 const SIO_IRQ_PROC0 = 15;
@@ -148,6 +151,8 @@ export function attachCore1(mcu, stop) {
 
   // ---- SIO: per-core registers here, the rest (GPIO, spinlocks) shared ----
   const divReady = [0, 0];
+  // which core claimed each spinlock (-1: free), and how many each holds
+  const lockOwner = new Int8Array(32).fill(-1), held = [0, 0];
   const sioReadFor = (c) => (offset) => {
     const core = cores[c];
     switch (offset) {
@@ -164,6 +169,12 @@ export function attachCore1(mcu, stop) {
         const v = sioRead.call(sios[c], offset);
         return core.cycles < divReady[c] ? v & ~1 : v;
       }
+    }
+    if (offset >= SPINLOCK0 && offset <= SPINLOCK31) {
+      const v = sioRead.call(sio0, offset);
+      if (v) held[c]++; // claimed
+      lockOwner[(offset - SPINLOCK0) >> 2] = v ? c : lockOwner[(offset - SPINLOCK0) >> 2];
+      return v;
     }
     return sioRead.call(offset >= DIV_FIRST && offset < PER_CORE_END ? sios[c] : sio0, offset);
   };
@@ -183,6 +194,11 @@ export function attachCore1(mcu, stop) {
         divReady[c] = 0; // a restored result is valid at once
       }
       return;
+    }
+    if (offset >= SPINLOCK0 && offset <= SPINLOCK31) { // released, whoever held it
+      const n = (offset - SPINLOCK0) >> 2;
+      if (lockOwner[n] >= 0) held[lockOwner[n]]--;
+      lockOwner[n] = -1;
     }
     sioWrite.call(sio0, offset, value);
   };
@@ -380,6 +396,29 @@ export function attachCore1(mcu, stop) {
         return;
     }
     stop(`core 1 executes the boot ROM at ${hex(c.PC)}, which is not modelled (only its wait for the launch sequence is)`);
+  };
+  // The image's spinlock-guarded data, [lo, hi) (best effort): while core
+  // 1 runs launched code, a core's write there holding no spinlock fails.
+  // Core 0 then gets a bus of its own too, so that a write's bus names
+  // its core (and a DMA transfer's, the RP2040's, none).
+  m.guard = (lo, hi) => {
+    const bus0 = Object.create(mcu);
+    core0.rp2040 = bus0;
+    const proto = Object.getPrototypeOf(mcu);
+    const check = (self, a) => {
+      a >>>= 0;
+      if (a < lo || a >= hi || self === mcu || m.off || core1.PC < ROM_END) return;
+      const c = self === bus ? 1 : 0;
+      if (!held[c])
+        stop(`core ${c} writes ${hex(a)}, in the data the image guards by spinlock (${hex(lo)}..${hex(hi)}), holding no spinlock while core 1 runs`);
+    };
+    for (const w of ['writeUint32', 'writeUint16', 'writeUint8']) {
+      const f = proto[w];
+      mcu[w] = function (a, v) {
+        check(this, a);
+        return f.call(this, a, v);
+      };
+    }
   };
   // where core 1 is, in words, for the report
   m.state = () => {

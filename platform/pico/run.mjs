@@ -63,8 +63,10 @@
 // single-core checks: a launch out of the datasheet's sequence, an entry
 // without its Thumb bit, a vector table not aligned to 256 bytes, a
 // divider result read before it is valid, and core 1 still running when
-// core 0 sleeps for good after its last report line. Not checked: shared
-// data written outside a spinlock.
+// core 0 sleeps for good after its last report line; and, when the ELF
+// names its spinlock-guarded data (__spinlocked_start, __spinlocked_end),
+// a core's write there holding no spinlock while core 1 runs (best effort:
+// a lock is held from the read that claimed it to any write to it).
 //
 // Strict: what silicon would not run fails the run, naming the PC and
 // what the chip would do: a peripheral of RESETS touched while in reset;
@@ -110,6 +112,7 @@ const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20, PIN_LED = 25;
 const SPI_MAX_HZ = 62.5e6; // the ST7789's 16 ns write cycle
 const WALL_LIMIT_S = 900;
 const MARK_SYMBOL = 'port_cycles_read';
+const GUARD_SYMBOLS = ['__spinlocked_start', '__spinlocked_end']; // the image's spinlock-guarded data
 const SYSTICK_TOLERANCE = 0.1; // percent
 const hex = (v) => `0x${(v >>> 0).toString(16).padStart(8, '0')}`;
 
@@ -493,6 +496,8 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   // slower running core's cycles; a core woken from sleep takes up the
   // clock's count (its sleeping cycles count, as on SysTick)
   const c1 = attachCore1(mcu, stop), core1 = c1.core1;
+  const guardLo = elf.symbols.get(GUARD_SYMBOLS[0]), guardHi = elf.symbols.get(GUARD_SYMBOLS[1]);
+  if (guardLo !== undefined && guardHi !== undefined) c1.guard(guardLo, guardHi);
   const ppbs = [mcu.ppb, c1.bus.ppb], cores = [core, core1];
   const canWake = (c) => (ppbs[c].systickIntEnable && ppbs[c].systickTimer.enable) || cores[c].enabledInterrupts !== 0;
   const slept = [0, 0];
