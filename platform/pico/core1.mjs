@@ -92,7 +92,7 @@ export function attachCore1(mcu, stop) {
   const m = {
     core1, bus,
     off: false, // PSM FRCE_OFF.PROC1
-    launches: 0, resets: 0, romCycles: 0,
+    launches: 0, romCycles: 0,
     entry: null, // the last entry core 1 was launched at
     scr: [0, 0],
   };
@@ -172,8 +172,10 @@ export function attachCore1(mcu, stop) {
     }
     if (offset >= SPINLOCK0 && offset <= SPINLOCK31) {
       const v = sioRead.call(sio0, offset);
-      if (v) held[c]++; // claimed
-      lockOwner[(offset - SPINLOCK0) >> 2] = v ? c : lockOwner[(offset - SPINLOCK0) >> 2];
+      if (v) { // claimed
+        held[c]++;
+        lockOwner[(offset - SPINLOCK0) >> 2] = c;
+      }
       return v;
     }
     return sioRead.call(offset >= DIV_FIRST && offset < PER_CORE_END ? sios[c] : sio0, offset);
@@ -268,10 +270,7 @@ export function attachCore1(mcu, stop) {
     const off = !!(psm.frceOff & PSM_PROC1);
     if (off === m.off) return;
     m.off = off;
-    if (!off) {
-      m.resets++;
-      resetCore1();
-    }
+    if (!off) resetCore1();
   };
 
   // ---- the ROM's wait, one step at a time ------------------------------------

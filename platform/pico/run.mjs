@@ -516,7 +516,7 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
         if (core.waiting) {
           if (asleep1) {
             if (!canWake(0) && (c1.off || !canWake(1))) {
-              ending = 'both cores sleep with nothing to wake them';
+              ending = `both cores sleep with nothing to wake them (core 0 at ${hex(core.PC)}, core 1 ${c1.state()})`;
               break;
             }
             if (!clock.nextAlarm) {
@@ -556,7 +556,7 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
             const t = core.cycles;
             clock.tick((t - now) * nsPerCycle);
             now = t;
-            if (core.waiting || core1.interruptsUpdated || !(core1.waiting || c1.off)) break;
+            if (core.waiting || !(core1.waiting || c1.off) || (core1.waiting && core1.interruptsUpdated)) break;
           }
           continue;
         } else {
