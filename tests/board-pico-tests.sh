@@ -40,6 +40,11 @@
 #    transfers of before (data short of its window, a window off the
 #    panel, pixels before sleep out, a frame band lost, the clear lost);
 #    a frame larger than the panel does not build;
+#  - the runner's second core (core1.mjs) on small images
+#    (tests/pico_core1.c): each FIFO, event, spinlock, divider, launch
+#    and reset behaviour against the datasheet's value, and a broken
+#    launch, entry, vector table, divider read or end failing with its
+#    reason;
 #  - the scene's resolution is the frame when SIZE is not given: a
 #    `resolution 320 240` scene fills the 320x240 panel (make run), the
 #    UF2 says so in its check line, make image with the same variables
@@ -270,6 +275,54 @@ for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothin
         fi
     else
         bad "$name: the fault image did not build: $(tail -2 "$OUT/fault/$name.build")"
+    fi
+done
+
+# The second core as run.mjs models it (platform/pico/core1.mjs), on
+# small images (tests/pico_core1.c): the launch through the boot ROM's
+# wait, FIFOs, events, spinlocks, per-core SIO, a core-1 reset; and each
+# broken use fails with its reason
+core1_image() { # NAME [CASE]
+    arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os -ffreestanding -nostdlib -Wall -Wextra -Werror ${2:+-DCASE_$2} \
+        -T tests/pico_core1.ld -o "$OUT/core1/$1.elf" tests/pico_core1.c "$boot2" -lgcc &&
+        arm-none-eabi-objcopy -O binary "$OUT/core1/$1.elf" "$OUT/core1/$1.bin" &&
+        node platform/pico/uf2.mjs pack "$OUT/core1/$1.bin" "$OUT/core1/$1.uf2" >/dev/null
+}
+mkdir -p "$OUT/core1"
+if core1_image pass >"$OUT/core1/pass.build" 2>&1 &&
+   node platform/pico/run.mjs "$OUT/core1/pass.elf" "$OUT/core1/pass.png" "$RT" >"$OUT/core1/pass.report" 2>&1; then
+    # each value as the datasheet gives it (the list in tests/pico_core1.c)
+    for kv in stale_vld=1 stale_word=0 launched=1 cpuid0=0 cpuid1=1 roe_at_entry=10 div0=333 div1=142857 locked_count=200 \
+              sev_woke=1 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
+              fifo_full_st=4 fifo_cleared_st=0 fifo_empty_read=0 fifo_roe_st=8 irq15_roe=1 irq15_clear=0 \
+              reset_stale=0 reset_more=0 relaunched=1 tie_core0=128 tie_core1=0 core1_launches=2 exit_status=0; do
+        got=$(val "${kv%=*}" "$OUT/core1/pass.report")
+        [ "$got" = "${kv#*=}" ] || bad "core 1 model: ${kv%=*} is ${got:-missing}, expected ${kv#*=}"
+    done
+    c1=$(val core1_instructions "$OUT/core1/pass.report")
+    [ "${c1:-0}" -gt 50 ] && grep -q '^core 1 at the end: sleeping (WFI)' "$OUT/core1/pass.report" &&
+        ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
+        bad "core 1 model: core 1 ran ${c1:-no} instructions: $(grep '^core 1 at the end' "$OUT/core1/pass.report")"
+else
+    bad "core 1 model: the image did not build or run: $(tail -3 "$OUT/core1/pass.build" "$OUT/core1/pass.report")"
+fi
+for f in "ONE_ZERO expected 0 (the second of 0, 0, 1).*received 0x00000001" \
+         "NO_DRAIN expected the vector table.*received 0x00000000 (the sequence restarted" \
+         "NO_THUMB entry 0x[0-9a-f]* has no Thumb bit" \
+         "VTOR sets VTOR to 0x[0-9a-f]*04, not aligned to 256 bytes" \
+         "DIV_EARLY core 1 reads the divider's DIV_QUOTIENT 2 cycles after" \
+         "BUSY core 1 is still busy (running at" \
+         "UNGUARDED core 1 writes 0x20000100, in the data the image guards by spinlock"; do
+    name=${f%% *} want=${f#* }
+    if core1_image "$name" "$name" >"$OUT/core1/$name.build" 2>&1; then
+        msg=$(node platform/pico/run.mjs "$OUT/core1/$name.elf" "$OUT/core1/$name.png" "$RT" 2>&1); status=$?
+        if [ $status -ne 0 ] && echo "$msg" | grep -q "on core [01]: .*$want\|^pico run: $want"; then
+            ok "core 1 $(echo "$name" | tr A-Z_ a-z\ ): $(echo "$msg" | grep 'pico run' | cut -c1-160)"
+        else
+            bad "core 1 $name: status $status, '$msg'"
+        fi
+    else
+        bad "core 1 $name: the image did not build: $(tail -2 "$OUT/core1/$name.build")"
     fi
 done
 

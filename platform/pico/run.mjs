@@ -11,10 +11,11 @@
 //       252..255 (else the chip drops into USB boot and nothing runs), the
 //       256 bytes go to SRAM 0x20041f00, SP = 0x20042000, and boot2 runs
 //       from there: it sets the SSI up for execute-in-place and starts the
-//       vector table at 0x10000100. One core. UART0 goes to
-//       FIRMWARE.serial, what SPI0 sends (each byte with the data/command
-//       line, GP16) to FIRMWARE.spi. The run ends when the core sleeps
-//       (WFI) with nothing left that could wake it. Prints the report (RT
+//       vector table at 0x10000100. Both cores (core 1 in the boot ROM's
+//       wait for its launch: core1.mjs). UART0 goes to FIRMWARE.serial,
+//       what SPI0 sends (each byte with the data/command line, GP16) to
+//       FIRMWARE.spi. The run ends when both cores sleep (WFI, WFE) with
+//       nothing left that could wake them. Prints the report (RT
 //       receive) and writes OUT.png: from the UART stream when the console
 //       opens with a frame (the stream sink), else from the panel (the
 //       ST7789 sink, whose report gives frame_width and frame_height): the
@@ -48,6 +49,25 @@
 // Sleeping (WFI) advances it to the next alarm, and the sleeping cycles
 // count as cycles, as they do on SysTick.
 //
+// Two cores (core1.mjs has the model and what it leaves out): the core
+// that has used fewer cycles steps next, core 0 on ties; a core asleep
+// in WFI or WFE does not step, and one woken takes up the clock's count
+// (the clock runs to the slower running core's). Core 1 starts in the
+// boot ROM's wait for the launch sequence (modelled, as boot2's step
+// is: no ROM is loaded). What the emulator cannot show: it is
+// sequentially consistent (every store is seen by the other core at
+// once, so a missing barrier cannot be caught), and the cores never
+// contend for an SRAM bank (on silicon they stall each other when both
+// hit one bank in one cycle: a two-core speed-up here is close to 2.0x,
+// where silicon is expected near 1.85-1.95x). Failing on top of the
+// single-core checks: a launch out of the datasheet's sequence, an entry
+// without its Thumb bit, a vector table not aligned to 256 bytes, a
+// divider result read before it is valid, and core 1 still running when
+// core 0 sleeps for good after its last report line; and, when the ELF
+// names its spinlock-guarded data (__spinlocked_start, __spinlocked_end),
+// a core's write there holding no spinlock while core 1 runs (best effort:
+// a lock is held from the read that claimed it to any write to it).
+//
 // Strict: what silicon would not run fails the run, naming the PC and
 // what the chip would do: a peripheral of RESETS touched while in reset;
 // an access where nothing is mapped; the UARTs' or SPIs' data or control
@@ -63,12 +83,18 @@
 // Counting: the firmware reads its SysTick in port_cycles_read at the
 // render's start, in pairs around each piece of display output, and at
 // the render's end. The runner watches that symbol's address (from the
-// ELF): each time the core is about to execute it, it records its own
+// ELF): each time a core is about to execute it, it records that core's
 // instruction count and cycles. Render = (end - start) - the output pairs.
 // It prints render_instructions, instructions_per_pixel,
-// emulator_render_cycles and how the firmware's SysTick render_cycles
-// compares (over 0.1% apart fails). Cycles are rp2040js's Cortex-M0+
-// model: no flash wait states, no XIP cache.
+// emulator_render_cycles (core 0's) and how the firmware's SysTick
+// render_cycles compares (over 0.1% apart fails); core1_render_instructions
+// and core1_render_cycles when core 1 calls it too; then for each core N
+// coreN_instructions and coreN_cycles (cycles running, its sleep left out;
+// core 1's include the ROM's wait), core1_launches, and where core 1 is
+// at the end. Cycles are rp2040js's Cortex-M0+ model: no flash wait
+// states, no XIP cache; the SIO divider is timed as on silicon (its
+// result valid 8 cycles after the last operand write, core1.mjs), not
+// charged at the write as rp2040js does.
 //
 // The panel decoder (st7789.mjs) is strict, so a damaged transfer gives no
 // image: each fault fails with the byte offset in the SPI log.
@@ -78,6 +104,7 @@
 import { spawnSync } from 'node:child_process';
 import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { RP2040 } from 'rp2040js';
+import { ROM_END, attachCore1 } from './core1.mjs';
 import { PANELS, checkBorder, decodePanel, panelStream } from './st7789.mjs';
 import { BOOT2_SIZE, BOOT2_SRAM, FLASH_BASE, SRAM_BASE, SRAM_END, boot2Crc, readUf2 } from './uf2.mjs';
 
@@ -85,6 +112,7 @@ const PIN_DC = 16, PIN_CS = 17, PIN_SCK = 18, PIN_BACKLIGHT = 20, PIN_LED = 25;
 const SPI_MAX_HZ = 62.5e6; // the ST7789's 16 ns write cycle
 const WALL_LIMIT_S = 900;
 const MARK_SYMBOL = 'port_cycles_read';
+const GUARD_SYMBOLS = ['__spinlocked_start', '__spinlocked_end']; // the image's spinlock-guarded data
 const SYSTICK_TOLERANCE = 0.1; // percent
 const hex = (v) => `0x${(v >>> 0).toString(16).padStart(8, '0')}`;
 
@@ -299,8 +327,8 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
 
   const mcu = new RP2040();
   const core = mcu.core, clock = mcu.clock;
-  let at = BOOT2_SRAM; // the PC of the instruction being executed
-  const where = () => `at PC ${hex(at)}`;
+  let at = BOOT2_SRAM, atCore = 0; // the PC and core of the instruction being executed
+  const where = () => `at PC ${hex(at)} on core ${atCore}`;
   const stop = (msg) => {
     throw new RunFailure(`${where()}: ${msg}`);
   };
@@ -463,53 +491,130 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
     if (why) stop(`chip select (GP${PIN_CS}) went low while ${why}: on the chip the panel could read a phantom bit`);
   });
 
-  const ppb = mcu.ppb;
-  const canWake = () => (ppb.systickIntEnable && ppb.systickTimer.enable) || core.enabledInterrupts !== 0;
-  let instructions = 0, ending = null;
-  const marks = [];
+  // the two cores (core1.mjs): step the one that has used fewer cycles,
+  // core 0 on ties; a sleeping core does not step. The clock runs to the
+  // slower running core's cycles; a core woken from sleep takes up the
+  // clock's count (its sleeping cycles count, as on SysTick)
+  const c1 = attachCore1(mcu, stop), core1 = c1.core1;
+  const guardLo = elf.symbols.get(GUARD_SYMBOLS[0]), guardHi = elf.symbols.get(GUARD_SYMBOLS[1]);
+  if (guardLo !== undefined && guardHi !== undefined) c1.guard(guardLo, guardHi);
+  const ppbs = [mcu.ppb, c1.bus.ppb], cores = [core, core1];
+  const canWake = (c) => (ppbs[c].systickIntEnable && ppbs[c].systickTimer.enable) || cores[c].enabledInterrupts !== 0;
+  const slept = [0, 0];
+  let n0 = 0, n1 = 0; // instructions
+  let ending = null, now = 0, doneAt = -1;
+  const marks = [[], []];
   const t0 = process.hrtime.bigint();
   try {
     while (ending === null) {
       for (let i = 0; i < 1000000; i++) {
+        // an alarm's interrupt (SysTick's) pends without waking the core
+        if (core.waiting && core.interruptsUpdated && core.checkForInterrupts()) core.waiting = false;
+        if (core1.waiting && core1.interruptsUpdated && core1.checkForInterrupts()) core1.waiting = false;
+        const asleep1 = core1.waiting || c1.off;
+        let c, id;
         if (core.waiting) {
-          if (!canWake()) {
-            ending = 'sleeps with nothing to wake it';
-            break;
+          if (asleep1) {
+            if (!canWake(0) && (c1.off || !canWake(1))) {
+              ending = `both cores sleep with nothing to wake them (core 0 at ${hex(core.PC)}, core 1 ${c1.state()})`;
+              break;
+            }
+            if (!clock.nextAlarm) {
+              ending = 'both cores sleep, interrupts enabled but nothing pending or scheduled';
+              break;
+            }
+            // sleep to the next alarm; clk_sys (and SysTick) keep running
+            const cycles = Math.max(1, Math.ceil(clock.nanosToNextAlarm / nsPerCycle - 1e-9));
+            now += cycles;
+            clock.tick(cycles * nsPerCycle);
+            continue;
           }
-          if (!clock.nextAlarm) {
-            ending = 'sleeps with interrupts enabled but nothing pending or scheduled';
-            break;
+          // core 0 asleep for good (WFI, nothing to wake it) while core 1 runs
+          if (doneAt !== core.cycles) {
+            doneAt = core.cycles;
+            if (!canWake(0) && !c1.inWfe(0))
+              throw new RunFailure(`core 1 is still busy (${c1.state()}) when core 0 sleeps for good (WFI with nothing to wake it, at PC ${hex(core.PC)}, after its last output): core 1 must have finished before the frame is reported`);
           }
-          // sleep to the next alarm; clk_sys (and SysTick) keep running
-          const cycles = Math.max(1, Math.ceil(clock.nanosToNextAlarm / nsPerCycle - 1e-9));
-          core.cycles += cycles;
-          clock.tick(cycles * nsPerCycle);
-          if (core.interruptsUpdated && core.checkForInterrupts()) core.waiting = false;
+          c = core1; id = 1;
+        } else if (asleep1) {
+          // core 0 alone, as with one core, until it sleeps or core 1 wakes
+          if (core.cycles < now) {
+            slept[0] += now - core.cycles;
+            core.cycles = now;
+          }
+          atCore = 0;
+          for (let k = 0; k < 10000; k++) {
+            const pc = core.PC;
+            if (pc === markPC) {
+              // an interrupt taken before it would run the handler first
+              if (core.interruptsUpdated && core.checkForInterrupts()) continue;
+              marks[0].push([n0, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+            }
+            at = pc;
+            core.executeInstruction();
+            n0++;
+            const t = core.cycles;
+            clock.tick((t - now) * nsPerCycle);
+            now = t;
+            if (core.waiting || !(core1.waiting || c1.off) || (core1.waiting && core1.interruptsUpdated)) break;
+          }
           continue;
+        } else {
+          // both run: a core just woken counts from now
+          for (const x of cores) {
+            if (x.cycles < now) {
+              slept[x === core ? 0 : 1] += now - x.cycles;
+              x.cycles = now;
+            }
+          }
+          if (core.cycles <= core1.cycles) { c = core; id = 0; } else { c = core1; id = 1; }
         }
-        const pc = core.PC;
-        if (pc === markPC) {
-          // an interrupt taken before it would run the handler first
-          if (core.interruptsUpdated && core.checkForInterrupts()) continue;
-          marks.push([instructions, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+        if (c.cycles < now) { // woken: it slept until now
+          slept[id] += now - c.cycles;
+          c.cycles = now;
         }
-        at = pc;
-        // (core.cycles, not the instruction's return: the SIO divider adds
-        // its 8 cycles an operand write to core.cycles directly)
-        const before = core.cycles;
-        core.executeInstruction();
-        instructions++;
-        clock.tick((core.cycles - before) * nsPerCycle);
+        // c runs until it passes the other running core (core 0 on ties),
+        // sleeps, or the other's state changes
+        const o = cores[1 - id], oWaiting = o.waiting, oUpdated = o.interruptsUpdated;
+        const lim = oWaiting ? Infinity : o.cycles; // core 1 steps while below it, core 0 up to a tie
+        atCore = id;
+        for (let k = 0; k < 10000; k++) {
+          const pc = c.PC;
+          at = pc;
+          if (id && pc < ROM_END) {
+            c1.romStep();
+          } else {
+            if (pc === markPC) {
+              if (c.interruptsUpdated && c.checkForInterrupts()) continue;
+              marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+            }
+            c.executeInstruction();
+            if (id) n1++;
+            else n0++;
+          }
+          // the clock to the slower running core
+          const t = c.cycles < lim ? c.cycles : lim;
+          if (t > now) {
+            clock.tick((t - now) * nsPerCycle);
+            now = t;
+          }
+          if ((id ? c.cycles >= lim : c.cycles > lim) || c.waiting || c1.off || o.waiting !== oWaiting || o.interruptsUpdated !== oUpdated) break;
+        }
       }
-      if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (${hex(core.PC)})`);
+      if (Number(process.hrtime.bigint() - t0) / 1e9 > WALL_LIMIT_S) throw new RunFailure(`no end after ${WALL_LIMIT_S} s of wall time (core 0 at ${hex(core.PC)}, core 1 ${c1.state()})`);
     }
   } catch (e) {
     if (!(e instanceof RunFailure)) throw e;
     return { failure: e.message, serial: Buffer.from(serial), spi: Buffer.from(spi) };
   }
+  const perCore = [n0, n1].map((n, id) => ({ instructions: n, cycles: cores[id].cycles - slept[id], slept: slept[id] }));
+  perCore[1].state = c1.state();
+  perCore[1].launches = c1.launches;
+  perCore[1].romCycles = c1.romCycles;
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
-    instructions, cycles: core.cycles, marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+    instructions: n0 + n1, cycles: Math.max(now, core.cycles, core1.cycles), perCore,
+    marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
     led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,
   };
@@ -580,7 +685,7 @@ process.stderr.write(rep.stderr);
 console.log(`LED (GP25) at the end: ${r.led ? 'on' : 'off'}`);
 const lines = rep.stdout.trimEnd().split('\n');
 const statusLine = /^exit_status (-?\d+)$/;
-if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (the core ${r.ending}, after ${r.instructions} instructions)`);
+if (!lines.some((l) => statusLine.test(l))) fail(`the firmware went to sleep without an exit_status line (${r.ending}, after ${r.instructions} instructions)`);
 if (!statusLine.test(lines[lines.length - 1])) fail('exit_status is not the firmware\'s last report line');
 const status = Number(lines[lines.length - 1].match(statusLine)[1]);
 if (status !== 0) {
@@ -595,7 +700,7 @@ let systickOff = null;
 if (r.markSym === undefined) {
   console.log(`note: ${elf} has no ${MARK_SYMBOL}: no counts of the render from the emulator`);
 } else {
-  const c = renderCounts(r.marks);
+  const c = renderCounts(r.marks[0]);
   if (c.note) {
     console.log(`note: ${c.note}: no counts of the render from the emulator`);
   } else {
@@ -637,6 +742,24 @@ if (!streamed) {
   const img = receive(rt, [`${base}.frame.stream`, '-o', out]);
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);
+}
+// each core's counts: instructions, and cycles spent running (not asleep;
+// core 1's include the boot ROM's wait); core 1's render counts when it
+// calls port_cycles_read too
+for (const [id, p] of r.perCore.entries()) {
+  console.log(`core${id}_instructions ${p.instructions}`);
+  console.log(`core${id}_cycles ${p.cycles}`);
+}
+console.log(`core1_launches ${r.perCore[1].launches}`);
+console.log(`core 1 at the end: ${r.perCore[1].state}`);
+if (r.marks[1].length) {
+  const c = renderCounts(r.marks[1]);
+  if (c.note) {
+    console.log(`note: core 1: ${c.note}: no counts of its render`);
+  } else {
+    console.log(`core1_render_instructions ${c.instructions}`);
+    console.log(`core1_render_cycles ${c.cycles}`);
+  }
 }
 const mhz = (f) => (f ? `${(f / 1e6).toFixed(3)} MHz` : 'stopped');
 console.log(`clocks at the end: clk_sys ${mhz(r.clkSys)}, clk_peri ${mhz(r.clkPeri)}`);

@@ -7,9 +7,9 @@
  * later (the CSR's READY bit says when). SIO accesses take one cycle.
  * Each core has its own divider at the same address, and no interrupt
  * handler of this firmware divides (SysTick's only counts), so nothing
- * can come between the writes and the read: no state is saved around it. rp2040js computes the result at
- * each operand write and charges 8 cycles for each (16 a division; the
- * silicon needs 8 from the last write).
+ * can come between the writes and the read: no state is saved around it.
+ * run.mjs times the divider as the silicon does (READY 8 cycles after the
+ * last operand write; a quotient read before then fails the run).
  */
 #ifndef SIO_DIV_H
 #define SIO_DIV_H
