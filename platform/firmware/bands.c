@@ -77,9 +77,8 @@ static struct {
     rt_fb_sink_t *out;
     bands_report_t *rep;
     uint32_t n_bands;
-    volatile uint32_t next_band;          /* BOARD_BAND_SPLIT 1 */
     volatile uint32_t next_emit;          /* the band the sink wants next */
-    volatile uint32_t ticket, serving;    /* the hand-over's lock */
+    volatile uint32_t serving;            /* the hand-over's lock: the ticket served */
     volatile uint64_t last_emitted_at;
     volatile uint64_t clock[BOARD_CORES]; /* parallel clocks, published */
     volatile uint64_t busy[BOARD_CORES];  /* instructions counted so far */
@@ -88,6 +87,15 @@ static struct {
     volatile uint32_t alive, go, spin;    /* start-up hand-shake */
     volatile int status;                  /* first failure, any core */
 } fr;
+
+/* What the cores change only through port_atomic_add (a spinlock's on
+ * the pico), in a section of its own: sections.ld names its bounds
+ * (__spinlocked_start, __spinlocked_end), and the pico's runner fails a
+ * write there by a core that holds no spinlock. */
+__attribute__((section(".bss.spinlocked"))) static struct {
+    volatile uint32_t next_band; /* BOARD_BAND_SPLIT 1 */
+    volatile uint32_t ticket;    /* the hand-over's lock: tickets taken */
+} taken;
 
 static uint64_t others_busy(unsigned c)
 {
@@ -167,7 +175,7 @@ static slot_t *ready_slot(uint32_t band, unsigned *core, unsigned *k)
 static void hand_over(unsigned c)
 {
     segment_t seg = segment_start(c);
-    uint32_t me = port_atomic_add(&fr.ticket, 1);
+    uint32_t me = port_atomic_add(&taken.ticket, 1);
     while (fr.serving != me)
         port_wait_event();
     __atomic_thread_fence(__ATOMIC_SEQ_CST); /* what the last holder wrote, seen */
@@ -224,7 +232,7 @@ static void render_bands(unsigned c)
         }
         if (fr.rep->one_at_a_time)
             take_turn(c, clock);
-        uint32_t band = BOARD_BAND_SPLIT ? port_atomic_add(&fr.next_band, 1) : c + nth * BOARD_CORES;
+        uint32_t band = BOARD_BAND_SPLIT ? port_atomic_add(&taken.next_band, 1) : c + nth * BOARD_CORES;
         if (band >= fr.n_bands || fr.status != 0)
             break;
         nth++;
