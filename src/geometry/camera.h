@@ -68,6 +68,18 @@ void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row);
 /* The eye ray through the row's next sample; steps to the one after. */
 ray_t camera_next(const camera_t *c, camera_row_t *row);
 
+/* Past the row's next n samples without their rays: exactly where n
+ * calls of camera_next would leave it (the fixed build's walk adds n
+ * steps at once, the same integer sum). */
+static inline void camera_skip(camera_row_t *row, int32_t n)
+{
+#if RT_BACKEND_FIXED
+    for (int i = 0; i < 3; i++)
+        row->t[i] += row->dt[i] * n;
+#endif
+    row->k += 2 * n;
+}
+
 /* The eye ray through sample (i, j), column i from the left, row j from the top. */
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j);
 

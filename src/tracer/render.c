@@ -203,18 +203,23 @@ static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j, unsigned s
     return v3(clamp_unit(c.x), clamp_unit(c.y), clamp_unit(c.z));
 }
 
-/* Line y, uniform: the mean of spp x spp cell centres a pixel. */
-static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+/* Frame pixel (x, y), uniform: the mean of its spp x spp cell centres. */
+static colour_t uniform_pixel(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
     struct rt_worker *wk = ctx->worker;
     int32_t n = ctx->spp, sub = 2 * n;
-    for (uint16_t x = 0; x < ctx->w; x++) {
-        colour_t sum = v3(0, 0, 0);
-        for (int32_t b = 0; b < n; b++)
-            for (int32_t a = 0; a < n; a++)
-                sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1, 1));
-        put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale), dither_at(ctx, ctx->x0 + x, y));
-    }
+    colour_t sum = v3(0, 0, 0);
+    for (int32_t b = 0; b < n; b++)
+        for (int32_t a = 0; a < n; a++)
+            sum = v3_add(sum, aa_sample(wk, sub * (int32_t)x + 2 * a + 1, sub * (int32_t)y + 2 * b + 1, 1));
+    return v3_scale(sum, wk->aa_scale);
+}
+
+/* Line y, uniform. */
+static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+{
+    for (uint16_t x = 0; x < ctx->w; x++)
+        put_pixel(line, x, ctx->sink->format, uniform_pixel(ctx, ctx->x0 + x, y), dither_at(ctx, ctx->x0 + x, y));
 }
 
 /* A cell corner not traced yet (traced ones are clamped to [0, 1]). */
@@ -421,6 +426,140 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
     }
 }
 
+#if RT_USE_PROGRESSIVE
+/* The progressive passes (rt_render.h), in order: the first sample's
+ * offset in each 8x8 tile, the spacing of the samples, the block each
+ * one paints. One list: the passes' lattices nest, and together they
+ * hold each pixel of a tile once (tests/progressive-tests.sh checks the
+ * pictures against the rule, render.c's counts against a frame's). */
+typedef struct {
+    uint8_t ox, oy, sx, sy, bw, bh;
+} pass_t;
+static const pass_t passes[] = {
+    { 0, 0, 8, 8, 8, 8 }, { 4, 0, 8, 8, 4, 8 }, { 0, 4, 4, 8, 4, 4 }, { 2, 0, 4, 4, 2, 4 },
+    { 0, 2, 2, 4, 2, 2 }, { 1, 0, 2, 2, 1, 2 }, { 0, 1, 1, 2, 1, 1 },
+};
+_Static_assert(sizeof passes / sizeof passes[0] == RT_PROGRESSIVE_PASSES, "a row for each pass");
+#define TILE 8 /* the lattice's period: a viewport's edges lie on it */
+
+/* Flushes bytes `px` as `area` (the other buffer's flush done first):
+ * 0, or the sink's failure (then nothing is in flight). */
+static int flush_area(rt_fb_sink_t *sink, const rt_fb_area_t *area, const uint8_t *px)
+{
+    wait_flushed(sink);
+    sink->flushing = true;
+    int status = sink->flush(sink, area, px);
+    if (status != 0)
+        sink->flushing = false;
+    else if (!sink->band[1])
+        wait_flushed(sink);
+    return status;
+}
+
+/* The colour of frame pixel (x, y) as scanline order gives it, for a row
+ * walk at (x, y) (plain frames: the next sample of wk->row). */
+static RT_INLINE colour_t sample_colour(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
+{
+#if RT_USE_AA
+    if (ctx->spp)
+        return uniform_pixel(ctx, x, y);
+#endif
+    (void)x, (void)y;
+    struct rt_worker *wk = ctx->worker;
+    eye_sample(wk, wk->row.k, wk->row.m);
+    ray_t ray = camera_next(&wk->cam, &wk->row);
+    wk->scratch.stats.eye_rays++;
+    return trace_ray(&wk->tr, &ray, 1, R_ONE);
+}
+
+/* Copies pixel `from` of a line to pixels `from` + 1 .. `to` - 1 (whole bytes a pixel). */
+static void repeat_pixel(uint8_t *line, unsigned bytes, uint32_t from, uint32_t to)
+{
+    for (uint32_t x = from + 1; x < to; x++)
+        for (unsigned b = 0; b < bytes; b++)
+            line[x * bytes + b] = line[from * bytes + b];
+}
+
+/* One row of a pass's samples, line ctx->y: each traced, painted over
+ * its block (clipped to the viewport) and flushed. Where the blocks of
+ * the row touch (passes 1, 3, 5, 7) the row of blocks is one area of
+ * band lines, the same line repeated; elsewhere each block is its own
+ * small area, packed tightly. 0 or the sink's failure. */
+static int progressive_row(rt_render_ctx_t *ctx)
+{
+    rt_fb_sink_t *sink = ctx->sink;
+    const pass_t *ps = &passes[ctx->pass - 1];
+    struct rt_worker *wk = ctx->worker;
+    uint32_t y = ctx->y, x_end = (uint32_t)ctx->x0 + ctx->w;
+    uint32_t lines = ps->bh < ctx->y_end - y ? ps->bh : ctx->y_end - y;
+    unsigned bytes = rt_fb_bytes_per_pixel(PIXEL_FORMAT(sink->format));
+    uint32_t x = (uint32_t)ctx->x0 + ps->ox;
+    int status = 0;
+    if (!ctx->spp)
+        camera_row(&wk->cam, (int32_t)x, (int32_t)y, &wk->row);
+    if (ps->bw == ps->sx) {
+        uint8_t *buf = sink->band[ctx->cur];
+        for (; x < x_end; x += ps->sx) {
+            put_pixel(buf, (uint16_t)(x - ctx->x0), sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+            uint32_t to = x + ps->bw < x_end ? x + ps->bw : x_end;
+            repeat_pixel(buf, bytes, x - ctx->x0, to - ctx->x0);
+            if (!ctx->spp)
+                camera_skip(&wk->row, ps->sx - 1);
+        }
+        uint32_t n = lines < ctx->band_lines ? lines : (uint32_t)ctx->band_lines;
+        for (uint32_t k = 1; k < n; k++)
+            for (size_t b = 0; b < (size_t)ctx->w * bytes; b++)
+                buf[k * ctx->pitch + b] = buf[b];
+        for (uint32_t k = 0; k < lines && status == 0; k += n) { /* the same lines again, lower down */
+            uint32_t last = y + k + n < y + lines ? y + k + n - 1 : y + lines - 1;
+            rt_fb_area_t area = { ctx->x0, (uint16_t)(y + k), (uint16_t)(x_end - 1), (uint16_t)last };
+            status = flush_area(sink, &area, buf);
+        }
+        if (sink->band[1])
+            ctx->cur ^= 1u;
+    } else {
+        for (; x < x_end && status == 0; x += ps->sx) {
+            uint8_t *buf = sink->band[ctx->cur];
+            uint32_t w = x + ps->bw < x_end ? ps->bw : x_end - x;
+            uint32_t fit = (uint32_t)(sink->band_bytes / (w * bytes)); /* >= 1: bw <= the viewport's width */
+            uint32_t n = lines < fit ? lines : fit;
+            put_pixel(buf, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+            repeat_pixel(buf, bytes, 0, w * n);
+            if (!ctx->spp)
+                camera_skip(&wk->row, ps->sx - 1);
+            for (uint32_t k = 0; k < lines && status == 0; k += n) {
+                uint32_t last = y + k + n < y + lines ? y + k + n - 1 : y + lines - 1;
+                rt_fb_area_t area = { (uint16_t)x, (uint16_t)(y + k), (uint16_t)(x + w - 1), (uint16_t)last };
+                status = flush_area(sink, &area, buf);
+            }
+            if (sink->band[1])
+                ctx->cur ^= 1u;
+        }
+    }
+    return status;
+}
+
+/* From row y of the pass under way to the next row to render, passing
+ * on to the next pass (and telling the sink the last is done) where this
+ * one's rows end; y_end once the last pass is done. */
+static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
+{
+    while (y >= ctx->y_end && ctx->pass < ctx->last_pass) {
+        if (ctx->sink->pass_end) {
+            wait_flushed(ctx->sink);
+            ctx->sink->pass_end(ctx->sink, ctx->pass);
+        }
+        ctx->pass++;
+        y = (uint32_t)ctx->y0 + passes[ctx->pass - 1].oy;
+    }
+    if (y >= ctx->y_end && ctx->sink->pass_end) {
+        wait_flushed(ctx->sink);
+        ctx->sink->pass_end(ctx->sink, ctx->pass);
+    }
+    ctx->y = (uint16_t)(y < ctx->y_end ? y : ctx->y_end);
+}
+#endif
+
 /* Whether the options record or replay split decisions (RT_AA_REPLAY). */
 #if RT_AA_REPLAY
 #define SPLITS_ASKED(opts) ((opts)->aa_splits_mode != RT_AA_SPLITS_OFF)
@@ -493,6 +632,33 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA)");
         return -1;
     }
+    ctx->pass = ctx->last_pass = 0;
+    if (opts->progressive) {
+#if RT_USE_PROGRESSIVE
+        const char *why = 0;
+        bool all = opts->progressive == RT_PROGRESSIVE_ALL;
+        if (!all && opts->progressive > RT_PROGRESSIVE_PASSES)
+            why = "progressive: a pass from 1 to 7, or RT_PROGRESSIVE_ALL";
+        else if (opts->spd || opts->aa_levels)
+            why = "progressive display needs one sample a pixel or uniform anti-aliasing (spp), not SPD mode or "
+                  "adaptive anti-aliasing (aa_levels 0)";
+        else if (rt_fb_bits(PIXEL_FORMAT(sink->format)) % 8u)
+            why = "progressive display needs whole bytes a pixel (not l4)";
+        else if (vp.x % TILE || vp.y % TILE || ((vp.x + vp.w) % TILE && vp.x + vp.w != w) ||
+                 ((vp.y + vp.h) % TILE && vp.y + vp.h != h))
+            why = "progressive display needs a viewport on the 8-pixel grid (each edge a multiple of 8 or the frame's)";
+        if (why) {
+            rt_error_set(err, 0, why);
+            return -1;
+        }
+        ctx->pass = all ? 1 : opts->progressive;
+        ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
+#else
+        rt_error_set(err, 0, "progressive display not compiled in (RT_USE_PROGRESSIVE)");
+        return -1;
+#endif
+    }
+    ctx->aa_levels = ctx->spp = 0;
 #if RT_USE_AA
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
@@ -602,7 +768,14 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->w = vp.w;
     ctx->y = ctx->band_y = vp.y;
     ctx->y_end = (uint16_t)(vp.y + vp.h);
+    ctx->y0 = vp.y;
     ctx->cur = 0;
+#if RT_USE_PROGRESSIVE
+    if (ctx->pass) {
+        progressive_next(ctx, (uint32_t)vp.y + passes[ctx->pass - 1].oy);
+        return 0;
+    }
+#endif
 #if RT_USE_SPD
     if (opts->spd)
         corner_row(wk, vp.y, vp.x, vp.w, ctx->rows[0]);
@@ -631,6 +804,16 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 {
     rt_fb_sink_t *sink = ctx->sink;
     int status = 0;
+#if RT_USE_PROGRESSIVE
+    for (; ctx->pass && lines > 0 && ctx->y < ctx->y_end; lines--) {
+        status = progressive_row(ctx);
+        if (status != 0) {
+            ctx->y = ctx->y_end; /* done: nothing more to render */
+            break;
+        }
+        progressive_next(ctx, (uint32_t)ctx->y + passes[ctx->pass - 1].sy);
+    }
+#endif
     for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
         uint16_t y = ctx->y++;
         uint8_t *line = sink->band[ctx->cur] + (size_t)(y - ctx->band_y) * ctx->pitch;
