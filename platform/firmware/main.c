@@ -78,6 +78,9 @@ int main(void)
     rt_render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
                            .adaptive_milli = BOARD_ADAPTIVE_MILLI, .aa_levels = BOARD_AA_LEVELS,
                            .aa_threshold = BOARD_AA_THRESHOLD, .spp = BOARD_SPP };
+#if BOARD_PROGRESSIVE /* a panel that keeps its frame (firmware.mk's PROGRESSIVE) */
+    opts.progressive = RT_PROGRESSIVE_ALL;
+#endif
 #if BOARD_AA_LEVELS
     opts.scratch = aa_scratch;
     opts.scratch_bytes = sizeof aa_scratch[0];
