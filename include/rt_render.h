@@ -185,6 +185,7 @@ typedef struct {
     uint16_t x0, w;            /* the viewport's columns */
     uint16_t y, y_end, band_y; /* next line, end, first line of the band */
     uint16_t y0;               /* the viewport's first line */
+    uint16_t x;                /* progressive: the next column of blocks (passes 2, 4, 6) */
     uint8_t pass, last_pass;   /* progressive: the pass under way, the last (0: scanline order) */
     unsigned cur;              /* the band buffer being filled */
     bool spd;

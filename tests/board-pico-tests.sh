@@ -18,6 +18,11 @@
 #    0.1% (run.mjs fails the run otherwise; checked here too), clk_sys and
 #    clk_peri are 125 MHz, the exit status 0, and the firmware printed its
 #    progress;
+#  - progressive display (PROGRESSIVE=1, the default): the panel after
+#    each pass, taken by run.mjs at board_pass_shown, equals the host's
+#    rt --progressive-pass N (two sizes, both panels), pass 1 is on the
+#    panel within 5% of the frame's time, and PROGRESSIVE=0 draws in
+#    scanline order (its progress in rows);
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
 #    (0) give the same image and counters, the divider in fewer cycles on
@@ -102,7 +107,7 @@ pico_case card-320 scenes/bench/card.nff 40x30 3 rgb565be
 pico_case picolib-320 scenes/bench/picolib.nff 40x30 6 rgb565be
 pico_case whitted-240 scenes/bench/whitted.nff 40x30 5 rgb565be PANEL=240x240
 pico_case showpiece-odd-320 scenes/showpiece.nff 47x31 5 rgb565be
-pico_case showpiece-odd-240-flip scenes/showpiece.nff 47x31 5 rgb565be "PANEL=240x240 PANEL_FLIP=1"
+pico_case showpiece-odd-240-flip scenes/showpiece.nff 47x31 5 rgb565be "PANEL=240x240 PANEL_FLIP=1 PROGRESSIVE=0"
 pico_case card-320-flip scenes/bench/card.nff 40x30 3 rgb565be PANEL_FLIP=1
 pico_case showpiece-uart scenes/showpiece.nff 32x24 5 rgb888 PICO_DISPLAY=uart
 # the divider against libgcc's division in the generic firmware, where
@@ -111,10 +116,47 @@ pico_case showpiece-uart scenes/showpiece.nff 32x24 5 rgb888 PICO_DISPLAY=uart
 pico_case rings-div scenes/spd/rings-1.nff 24x24 5 rgb565be SPECIALISE=0
 pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be "PICO_DIVIDER=0 SPECIALISE=0"
 
-# Progress over the UART while the panel fills
-rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-320.report")
-[ "${rows#* }" = 31 ] && [ "${rows% *}" -ge 5 ] && ok "progress: ${rows% *} progress_rows lines, the last at row ${rows#* } of 31" ||
+# Progress over the UART while the panel fills: rows in scanline order,
+# passes in progressive display
+rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-240-flip.report")
+[ "${rows#* }" = 31 ] && [ "${rows% *}" -ge 5 ] && ok "progress (PROGRESSIVE=0): ${rows% *} progress_rows lines, the last at row ${rows#* } of 31" ||
     bad "progress lines: $rows"
+passes=$(awk '$1 == "progress_pass" { printf "%s", $2 }' "$OUT/showpiece-odd-320.report")
+[ "$passes" = 1234567 ] && ok "progress (progressive): progress_pass 1 to 7" || bad "progress_pass lines: '$passes'"
+
+# Progressive display (PROGRESSIVE=1, the panel's default; the finished
+# panels above are the host's scanline images): the panel after each
+# pass, as run.mjs took it at board_pass_shown, equals the host's
+# rt --progressive-pass N, byte for byte; pass 1 (1/64 of the rays)
+# reaches the panel within 5% of the frame's time
+progressive_passes() { # NAME SCENE SIZE DEPTH [MAKE-VARS]
+    n=$1 scene=$2 size=$3 depth=$4
+    base=$(elf_of SCENE="$scene" SIZE="$size" DEPTH="$depth" $5)
+    good=0
+    for p in 1 2 3 4 5 6 7; do
+        "$RT" receive "$base.pass$p.stream" -o "$OUT/$n-pass$p.png" >/dev/null 2>&1 &&
+            "$RT" "$scene" -o "$OUT/$n-host-pass$p.png" --size "$size" --depth "$depth" --format rgb565be \
+                --progressive-pass $p --quiet &&
+            "$RT" compare "$OUT/$n-pass$p.png" "$OUT/$n-host-pass$p.png" --max-error 0 >/dev/null &&
+            good=$((good + 1))
+    done
+    fp=$(val first_picture_cycles "$OUT/$n.report") fc=$(val frame_cycles "$OUT/$n.report")
+    if [ $good -eq 7 ]; then
+        ok "$n progressive: the panel after each of passes 1..7 == rt --progressive-pass N rgb565be"
+    else
+        bad "$n progressive: $good of 7 passes' panels equal the host's"
+    fi
+    if [ -n "$fp" ] && [ -n "$fc" ] && [ $((fp * 20)) -lt "$fc" ]; then
+        ok "$n progressive: the first picture on the panel after $fp cycles, the frame after $fc"
+    else
+        bad "$n progressive: first_picture_cycles '${fp:-?}', frame_cycles '${fc:-?}'"
+    fi
+}
+progressive_passes card-320 scenes/bench/card.nff 40x30 3
+progressive_passes showpiece-odd-320 scenes/showpiece.nff 47x31 5
+progressive_passes whitted-240 scenes/bench/whitted.nff 40x30 5 PANEL=240x240
+grep -q '^progress_pass' "$OUT/showpiece-odd-240-flip.report" && bad "PROGRESSIVE=0 reports passes" ||
+    ok "PROGRESSIVE=0: scanline order, no passes"
 
 # The image is the chip's
 elf=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).elf
@@ -251,7 +293,7 @@ open(sys.argv[2], 'wb').write(d)" "$2" "$OUT/bad.spi"
     fi
 }
 log320=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).spi
-log240=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 PANEL=240x240 PANEL_FLIP=1).spi
+log240=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 PANEL=240x240 PANEL_FLIP=1 PROGRESSIVE=0).spi
 host=$OUT/showpiece-odd-320-host.png
 if [ -f "$log320" ] && [ -f "$log240" ]; then
     madctl="i = [c for c in cmds if d[c + 1] == 0x36][0]; d[i + 3] = "

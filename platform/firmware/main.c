@@ -54,7 +54,8 @@ _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT
 _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out of 1..RT_MAX_DEPTH");
 
 #if BOARD_CORES == 1 /* (with more, each core has band buffers of its own: bands.c) */
-static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)];
+/* (word-aligned: progressive display copies its lines a word at a time) */
+static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)] __attribute__((aligned(4)));
 #endif
 
 /* The core's counters, keyed as on the host (stats.h). */

@@ -472,89 +472,135 @@ static RT_INLINE colour_t sample_colour(const rt_render_ctx_t *ctx, uint32_t x, 
     return trace_ray(&wk->tr, &ray, 1, R_ONE);
 }
 
-/* Copies pixel `from` of a line to pixels `from` + 1 .. `to` - 1 (whole bytes a pixel). */
-static void repeat_pixel(uint8_t *line, unsigned bytes, uint32_t from, uint32_t to)
+/* Pixel bytes px (`bytes` of them) to pixels from .. to - 1 of a line:
+ * a 16-bit store a pixel where the pixel is two bytes and the line even
+ * (the panels' 565), else byte by byte. */
+static RT_INLINE void paint(uint8_t *line, const uint8_t *px, unsigned bytes, uint32_t from, uint32_t to)
 {
-    for (uint32_t x = from + 1; x < to; x++)
+    uint8_t *p = line + from * bytes, *end = line + to * bytes;
+    if (bytes == 2 && ((uintptr_t)line & 1u) == 0) {
+        uint16_t v;
+        __builtin_memcpy(&v, px, 2);
+        for (; p < end; p += 2)
+            __builtin_memcpy(__builtin_assume_aligned(p, 2), &v, 2);
+        return;
+    }
+    for (; p < end; p += bytes)
         for (unsigned b = 0; b < bytes; b++)
-            line[x * bytes + b] = line[from * bytes + b];
+            p[b] = px[b];
 }
 
-/* One row of a pass's samples, line ctx->y: each traced, painted over
- * its block (clipped to the viewport) and flushed. Where the blocks of
- * the row touch (passes 1, 3, 5, 7) the row of blocks is one area of
- * band lines, the same line repeated; elsewhere each block is its own
- * small area, packed tightly. 0 or the sink's failure. */
-static int progressive_row(rt_render_ctx_t *ctx)
+/* n bytes from src to dst: a word at a time where both and n allow. */
+static RT_INLINE void copy_bytes(uint8_t *dst, const uint8_t *src, size_t n)
+{
+    if ((((uintptr_t)dst | (uintptr_t)src | n) & 3u) == 0) {
+        for (size_t i = 0; i < n; i += 4) {
+            uint32_t v;
+            __builtin_memcpy(&v, __builtin_assume_aligned(src + i, 4), 4);
+            __builtin_memcpy(__builtin_assume_aligned(dst + i, 4), &v, 4);
+        }
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        dst[i] = src[i];
+}
+
+/* A pass whose blocks touch along a row (passes 1, 3, 5, 7): one row of
+ * its samples, line ctx->y, each painted over its block (clipped to the
+ * viewport), the row of blocks one area of band lines, the same line
+ * repeated (flushed again for the lines below when the band holds fewer
+ * than the blocks' height). 0 or the sink's failure. */
+static int progressive_row(rt_render_ctx_t *ctx, const pass_t *ps)
 {
     rt_fb_sink_t *sink = ctx->sink;
-    const pass_t *ps = &passes[ctx->pass - 1];
     struct rt_worker *wk = ctx->worker;
-    uint32_t y = ctx->y, x_end = (uint32_t)ctx->x0 + ctx->w;
+    uint32_t y = ctx->y, x_end = (uint32_t)ctx->x0 + ctx->w, x = (uint32_t)ctx->x0 + ps->ox;
     uint32_t lines = ps->bh < ctx->y_end - y ? ps->bh : ctx->y_end - y;
     unsigned bytes = rt_fb_bytes_per_pixel(PIXEL_FORMAT(sink->format));
-    uint32_t x = (uint32_t)ctx->x0 + ps->ox;
-    int status = 0;
-    if (!ctx->spp)
+    uint8_t *buf = sink->band[ctx->cur], px[4];
+    if (!ctx->spp) {
         camera_row(&wk->cam, (int32_t)x, (int32_t)y, &wk->row);
-    if (ps->bw == ps->sx) {
+        camera_stride(&wk->row, ps->sx);
+    }
+    for (; x < x_end; x += ps->sx) {
+        put_pixel(px, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+        paint(buf, px, bytes, x - ctx->x0, (x + ps->bw < x_end ? x + ps->bw : x_end) - ctx->x0);
+    }
+    uint32_t n = lines < ctx->band_lines ? lines : (uint32_t)ctx->band_lines;
+    for (uint32_t k = 1; k < n; k++)
+        copy_bytes(buf + k * ctx->pitch, buf, (size_t)ctx->w * bytes);
+    int status = 0;
+    for (uint32_t k = 0; k < lines && status == 0; k += n) {
+        uint32_t last = k + n < lines ? y + k + n - 1 : y + lines - 1;
+        rt_fb_area_t area = { ctx->x0, (uint16_t)(y + k), (uint16_t)(x_end - 1), (uint16_t)last };
+        status = flush_area(sink, &area, buf);
+    }
+    if (sink->band[1])
+        ctx->cur ^= 1u;
+    return status;
+}
+
+/* A pass whose blocks touch down a column (passes 2, 4, 6: blocks as
+ * tall as the rows are apart): the column of blocks at ctx->x, traced top
+ * down, each painted over its block (clipped), flushed as areas the
+ * column's width and as many lines as a band buffer holds, packed
+ * tightly (one area for the column on the Pico's panel: 280 a frame for
+ * these passes' 25,200 blocks at 320x240). 0 or the sink's failure. */
+static int progressive_column(rt_render_ctx_t *ctx, const pass_t *ps)
+{
+    rt_fb_sink_t *sink = ctx->sink;
+    struct rt_worker *wk = ctx->worker;
+    uint32_t x = ctx->x, x_end = (uint32_t)ctx->x0 + ctx->w;
+    uint32_t w = x + ps->bw < x_end ? ps->bw : x_end - x;
+    unsigned bytes = rt_fb_bytes_per_pixel(PIXEL_FORMAT(sink->format));
+    size_t line = (size_t)w * bytes;
+    uint32_t fit = (uint32_t)(sink->band_bytes / line); /* >= 1: w is at most the viewport's width */
+    uint8_t px[4];
+    camera_column_t col;
+    if (!ctx->spp)
+        camera_column(&wk->cam, (int32_t)x, &col);
+    int status = 0;
+    for (uint32_t y = ctx->y; y < ctx->y_end && status == 0;) {
         uint8_t *buf = sink->band[ctx->cur];
-        for (; x < x_end; x += ps->sx) {
-            put_pixel(buf, (uint16_t)(x - ctx->x0), sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
-            uint32_t to = x + ps->bw < x_end ? x + ps->bw : x_end;
-            repeat_pixel(buf, bytes, x - ctx->x0, to - ctx->x0);
-            if (!ctx->spp)
-                camera_skip(&wk->row, ps->sx - 1);
+        uint32_t first = y, n = ctx->y_end - y < fit ? ctx->y_end - y : fit;
+        for (uint32_t k = 0; k < n; k++, y++) {
+            if (((y - ctx->y) & (ps->sy - 1u)) == 0) { /* a sample's line: the block's first */
+                if (!ctx->spp)
+                    camera_column_row(&wk->cam, &col, (int32_t)y, &wk->row);
+                put_pixel(px, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+            }
+            paint(buf + k * line, px, bytes, 0, w);
         }
-        uint32_t n = lines < ctx->band_lines ? lines : (uint32_t)ctx->band_lines;
-        for (uint32_t k = 1; k < n; k++)
-            for (size_t b = 0; b < (size_t)ctx->w * bytes; b++)
-                buf[k * ctx->pitch + b] = buf[b];
-        for (uint32_t k = 0; k < lines && status == 0; k += n) { /* the same lines again, lower down */
-            uint32_t last = y + k + n < y + lines ? y + k + n - 1 : y + lines - 1;
-            rt_fb_area_t area = { ctx->x0, (uint16_t)(y + k), (uint16_t)(x_end - 1), (uint16_t)last };
-            status = flush_area(sink, &area, buf);
-        }
+        rt_fb_area_t area = { (uint16_t)x, (uint16_t)first, (uint16_t)(x + w - 1), (uint16_t)(y - 1) };
+        status = flush_area(sink, &area, buf);
         if (sink->band[1])
             ctx->cur ^= 1u;
-    } else {
-        for (; x < x_end && status == 0; x += ps->sx) {
-            uint8_t *buf = sink->band[ctx->cur];
-            uint32_t w = x + ps->bw < x_end ? ps->bw : x_end - x;
-            uint32_t fit = (uint32_t)(sink->band_bytes / (w * bytes)); /* >= 1: bw <= the viewport's width */
-            uint32_t n = lines < fit ? lines : fit;
-            put_pixel(buf, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
-            repeat_pixel(buf, bytes, 0, w * n);
-            if (!ctx->spp)
-                camera_skip(&wk->row, ps->sx - 1);
-            for (uint32_t k = 0; k < lines && status == 0; k += n) {
-                uint32_t last = y + k + n < y + lines ? y + k + n - 1 : y + lines - 1;
-                rt_fb_area_t area = { (uint16_t)x, (uint16_t)(y + k), (uint16_t)(x + w - 1), (uint16_t)last };
-                status = flush_area(sink, &area, buf);
-            }
-            if (sink->band[1])
-                ctx->cur ^= 1u;
-        }
     }
     return status;
 }
 
-/* From row y of the pass under way to the next row to render, passing
- * on to the next pass (and telling the sink the last is done) where this
- * one's rows end; y_end once the last pass is done. */
+/* The next step of a progressive render: row y of the pass under way
+ * (passes whose blocks touch along a row, from row to row) or its next
+ * column (the others: y stays at the pass's first row while columns are
+ * left); once the pass is done, the next pass (the sink told that the
+ * last is on the display); y_end once the last pass is done. */
 static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 {
-    while (y >= ctx->y_end && ctx->pass < ctx->last_pass) {
+    const pass_t *ps = &passes[ctx->pass - 1];
+    if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+        y = ctx->y_end; /* the last column is done */
+    while (y >= ctx->y_end) {
         if (ctx->sink->pass_end) {
             wait_flushed(ctx->sink);
             ctx->sink->pass_end(ctx->sink, ctx->pass);
         }
-        ctx->pass++;
-        y = (uint32_t)ctx->y0 + passes[ctx->pass - 1].oy;
-    }
-    if (y >= ctx->y_end && ctx->sink->pass_end) {
-        wait_flushed(ctx->sink);
-        ctx->sink->pass_end(ctx->sink, ctx->pass);
+        if (ctx->pass == ctx->last_pass)
+            break;
+        ps = &passes[ctx->pass++];
+        y = (uint32_t)ctx->y0 + ps->oy;
+        ctx->x = (uint16_t)(ctx->x0 + ps->ox);
+        if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+            y = ctx->y_end; /* no column in the viewport */
     }
     ctx->y = (uint16_t)(y < ctx->y_end ? y : ctx->y_end);
 }
@@ -772,6 +818,7 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->cur = 0;
 #if RT_USE_PROGRESSIVE
     if (ctx->pass) {
+        ctx->x = (uint16_t)(vp.x + passes[ctx->pass - 1].ox);
         progressive_next(ctx, (uint32_t)vp.y + passes[ctx->pass - 1].oy);
         return 0;
     }
@@ -806,12 +853,16 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
     int status = 0;
 #if RT_USE_PROGRESSIVE
     for (; ctx->pass && lines > 0 && ctx->y < ctx->y_end; lines--) {
-        status = progressive_row(ctx);
+        const pass_t *ps = &passes[ctx->pass - 1];
+        bool rows = ps->bw == ps->sx;
+        status = rows ? progressive_row(ctx, ps) : progressive_column(ctx, ps);
         if (status != 0) {
             ctx->y = ctx->y_end; /* done: nothing more to render */
             break;
         }
-        progressive_next(ctx, (uint32_t)ctx->y + passes[ctx->pass - 1].sy);
+        if (!rows)
+            ctx->x = (uint16_t)(ctx->x + ps->sx);
+        progressive_next(ctx, rows ? (uint32_t)ctx->y + ps->sy : ctx->y);
     }
 #endif
     for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
