@@ -75,7 +75,8 @@ enum { RT_FB_FORMATS(RT_FB_BITS_ENUM_) };
 /* Inclusive pixel rectangle, as LVGL's lv_area_t: x1..x2 and y1..y2 are
  * all in it, x2 - x1 + 1 pixels by y2 - y1 + 1 lines, in frame
  * coordinates. Bands span whole lines (of the viewport, when one is set),
- * but for progressive display's narrow blocks (rt_render.h). */
+ * but for progressive display's columns of blocks (rt_render.h), whose
+ * lines are packed tightly. */
 typedef struct {
     uint16_t x1, y1, x2, y2;
 } rt_fb_area_t;

@@ -94,9 +94,10 @@ typedef struct {
      * default); RT_PROGRESSIVE_ALL: every pass; 1..7: pass p alone (two
      * cores can share a pass as bands). A viewport must lie on the 8x8
      * grid (each edge a multiple of 8 or the frame's), so that no block
-     * crosses it. Areas wider than a block span the viewport (lines
-     * `pitch` apart); a block narrower than that (passes 2, 4, 6) is one
-     * area whose lines are packed tightly. Needs whole-byte pixels (not
+     * crosses it. Passes 1, 3, 5, 7 flush rows of blocks, areas that span
+     * the viewport (lines `pitch` apart); passes 2, 4, 6, whose blocks
+     * stack down columns, flush columns of blocks, areas always narrower
+     * than the viewport, their lines packed tightly. Needs whole-byte pixels (not
      * l4) and one sample a pixel or uniform anti-aliasing (spp): SPD mode
      * and adaptive anti-aliasing share corners between neighbours. */
     uint8_t progressive;

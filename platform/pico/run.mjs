@@ -22,8 +22,13 @@
 //       must be black (the firmware clears the panel first); the whole
 //       picture goes to FIRMWARE.panel.stream (rt's stream format), the
 //       frame to OUT.png.
-//       Then the runner's own counts of the render (below), the clocks at
-//       the end, the render's time at CLOCK_HZ from the firmware's
+//       Then the runner's own counts of the render (below), for a panel
+//       frame_cycles (the render's start to the panel's last byte, SPI
+//       bytes timed at SPI0's clock: makePanelClock) and, with progressive
+//       display, first_picture_cycles (to pass 1's last byte) and the
+//       panel's frame after each pass in FIRMWARE.passN.stream (taken
+//       where the firmware calls board_pass_shown), the clocks at the
+//       end, the render's time at CLOCK_HZ from the firmware's
 //       render_cycles, and the host's wall time.
 //       --module: the panel module on the pins (st7789.mjs's PANELS,
 //       320x240 by default; ",flip": turned by 180 degrees), which the
