@@ -472,6 +472,13 @@ static RT_INLINE colour_t sample_colour(const rt_render_ctx_t *ctx, uint32_t x, 
     return trace_ray(&wk->tr, &ray, 1, R_ONE);
 }
 
+/* Frame pixel (x, y) traced (a row walk at it, for one sample a pixel)
+ * and packed into px: one copy for the rows and the columns. */
+static RT_NOINLINE void progressive_sample(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y, uint8_t px[4])
+{
+    put_pixel(px, 0, ctx->sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+}
+
 /* Pixel bytes px (`bytes` of them) to pixels from .. to - 1 of a line:
  * a 16-bit store a pixel where the pixel is two bytes and the line even
  * (the panels' 565), else byte by byte. */
@@ -523,7 +530,7 @@ static int progressive_row(rt_render_ctx_t *ctx, const pass_t *ps)
         camera_stride(&wk->row, ps->sx);
     }
     for (; x < x_end; x += ps->sx) {
-        put_pixel(px, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+        progressive_sample(ctx, x, y, px);
         paint(buf, px, bytes, x - ctx->x0, (x + ps->bw < x_end ? x + ps->bw : x_end) - ctx->x0);
     }
     uint32_t n = lines < ctx->band_lines ? lines : (uint32_t)ctx->band_lines;
@@ -567,7 +574,7 @@ static int progressive_column(rt_render_ctx_t *ctx, const pass_t *ps)
             if (((y - ctx->y) & (ps->sy - 1u)) == 0) { /* a sample's line: the block's first */
                 if (!ctx->spp)
                     camera_column_row(&wk->cam, &col, (int32_t)y, &wk->row);
-                put_pixel(px, 0, sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+                progressive_sample(ctx, x, y, px);
             }
             paint(buf + k * line, px, bytes, 0, w);
         }
@@ -704,8 +711,9 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         return -1;
 #endif
     }
-    ctx->aa_levels = ctx->spp = 0;
-#if RT_USE_AA
+#if !RT_USE_AA
+    ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
+#else
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
     if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
