@@ -163,6 +163,16 @@ progressive_passes showpiece-odd-320 scenes/showpiece.nff 47x31 5
 progressive_passes whitted-240 scenes/bench/whitted.nff 40x30 5 PANEL=240x240
 grep -q '^progress_pass' "$OUT/showpiece-odd-240-flip.report" && bad "PROGRESSIVE=0 reports passes" ||
     ok "PROGRESSIVE=0: scanline order, no passes"
+# what progressive display cannot draw does not build
+for v in "BOARD=mps2-an385 PROGRESSIVE=1:not a panel" "BOARD=pico AA=2 PROGRESSIVE=1:adaptive anti-aliasing" \
+         "BOARD=pico PICO_DISPLAY=uart PROGRESSIVE=1:not a panel" "BOARD=pico PROGRESSIVE=yes:0 (scanline order) or 1"; do
+    if msg=$(make -s board-info ${v%%:*} 2>&1); then
+        bad "${v%%:*}: accepted"
+    else
+        echo "$msg" | grep -q "${v#*:}" && ok "${v%%:*}: $(echo "$msg" | sed 's/.*\*\*\* //' | head -1)" ||
+            bad "${v%%:*}: '$msg'"
+    fi
+done
 
 # The image is the chip's
 elf=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).elf
