@@ -245,6 +245,12 @@
 #define RT_USE_SPD 1
 #endif
 
+/* Progressive display (rt_render_opts_t.progressive); firmware that
+ * streams its frame leaves it out. */
+#ifndef RT_USE_PROGRESSIVE
+#define RT_USE_PROGRESSIVE 1
+#endif
+
 /* Anti-aliasing (rt_render_opts_t.aa_levels, .spp); firmware that never
  * asks for it leaves it out. Adaptive subdivision splits a pixel at most
  * RT_AA_MAX_LEVELS times (2^levels cells a side), where its corners differ

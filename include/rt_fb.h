@@ -74,7 +74,9 @@ enum { RT_FB_FORMATS(RT_FB_BITS_ENUM_) };
 
 /* Inclusive pixel rectangle, as LVGL's lv_area_t: x1..x2 and y1..y2 are
  * all in it, x2 - x1 + 1 pixels by y2 - y1 + 1 lines, in frame
- * coordinates. Bands span whole lines (of the viewport, when one is set). */
+ * coordinates. Bands span whole lines (of the viewport, when one is set),
+ * but for progressive display's columns of blocks (rt_render.h), whose
+ * lines are packed tightly. */
 typedef struct {
     uint16_t x1, y1, x2, y2;
 } rt_fb_area_t;
@@ -107,6 +109,10 @@ struct rt_fb_sink {
     /* Optional: idle (e.g. WFI) until rt_fb_flush_ready(); NULL busy-waits. */
     void (*wait)(rt_fb_sink_t *s);
     int (*end)(rt_fb_sink_t *s);
+    /* Optional, progressive display (rt_render_opts_t.progressive): pass
+     * `pass` (1..RT_PROGRESSIVE_PASSES) of the render is on the display,
+     * its last flush done. NULL: nothing to do. */
+    void (*pass_end)(rt_fb_sink_t *s, unsigned pass);
 
     void *user;
     volatile bool flushing; /* owned by the core and rt_fb_flush_ready() */

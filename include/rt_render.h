@@ -76,6 +76,31 @@ typedef struct {
      * where the build has RT_TEXTURE_FILTER; docs/shading-model.md,
      * "Filtered textures"). */
     bool point_textures;
+    /* Progressive display, for a panel that keeps its own frame memory:
+     * the frame in RT_PROGRESSIVE_PASSES passes over an interlaced
+     * lattice (Adam7's), each traced pixel painted over its block:
+     *   pass  samples of each 8x8 tile     block     tile after the pass
+     *   1     (0, 0)                       8 x 8     1 sample
+     *   2     (4, 0)                       4 x 8     2
+     *   3     (0, 4) (4, 4)                4 x 4     4
+     *   4     x = 2, 6; y = 0, 4           2 x 4     8
+     *   5     x = 0, 2, 4, 6; y = 2, 6     2 x 2     16
+     *   6     odd x, even y                1 x 2     32
+     *   7     odd y                        1 x 1     64
+     * so after pass p pixel (x, y) shows the pixel traced at the corner
+     * of its cell of the lattice so far (8x8, 4x8, 4x4, 2x4, 2x2, 1x2,
+     * 1x1), and after pass 7 each pixel is the one scanline order gives:
+     * every pixel traced once, the same rays. 0: scanline order (the
+     * default); RT_PROGRESSIVE_ALL: every pass; 1..7: pass p alone (two
+     * cores can share a pass as bands). A viewport must lie on the 8x8
+     * grid (each edge a multiple of 8 or the frame's), so that no block
+     * crosses it. Passes 1, 3, 5, 7 flush rows of blocks, areas that span
+     * the viewport (lines `pitch` apart); passes 2, 4, 6, whose blocks
+     * stack down columns, flush columns of blocks, areas always narrower
+     * than the viewport, their lines packed tightly. Needs whole-byte pixels (not
+     * l4) and one sample a pixel or uniform anti-aliasing (spp): SPD mode
+     * and adaptive anti-aliasing share corners between neighbours. */
+    uint8_t progressive;
 #if RT_AA_REPLAY
     /* Adaptive anti-aliasing's split decisions (builds with RT_AA_REPLAY):
      * aa_splits_mode RT_AA_SPLITS_RECORD writes each rendered pixel's
@@ -92,6 +117,9 @@ typedef struct {
     size_t aa_splits_words;
 #endif
 } rt_render_opts_t;
+
+#define RT_PROGRESSIVE_PASSES 7
+#define RT_PROGRESSIVE_ALL 0xFF
 
 /* A pixel's split decisions (opts.aa_splits): two bits for each square
  * that may split, at level l < levels (the pixel is level 0, 2^l squares
@@ -157,6 +185,9 @@ typedef struct {
     size_t pitch, band_lines;
     uint16_t x0, w;            /* the viewport's columns */
     uint16_t y, y_end, band_y; /* next line, end, first line of the band */
+    uint16_t y0;               /* the viewport's first line */
+    uint16_t x;                /* progressive: the next column of blocks (passes 2, 4, 6) */
+    uint8_t pass, last_pass;   /* progressive: the pass under way, the last (0: scanline order) */
     unsigned cur;              /* the band buffer being filled */
     bool spd;
     uint8_t aa_levels, spp;    /* anti-aliasing: as the options say */

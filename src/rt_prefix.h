@@ -13,6 +13,8 @@
 
 #define bvh_build                rt_bvh_build
 #define bvh_tree_stats           rt_bvh_tree_stats
+#define camera_column            rt_camera_column
+#define camera_column_row        rt_camera_column_row
 #define camera_next              rt_camera_next
 #define camera_ray               rt_camera_ray
 #define camera_row               rt_camera_row

@@ -19,6 +19,11 @@
 #    0.1% (run.mjs fails the run otherwise; checked here too), clk_sys and
 #    clk_peri are 125 MHz, the exit status 0, and the firmware printed its
 #    progress;
+#  - progressive display (PROGRESSIVE=1, the default): the panel after
+#    each pass, taken by run.mjs at board_pass_shown, equals the host's
+#    rt --progressive-pass N (two sizes, both panels), pass 1 is on the
+#    panel within 5% of the frame's time, and PROGRESSIVE=0 draws in
+#    scanline order (its progress in rows);
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - both cores (the default; platform/firmware/bands.c) give the panel
 #    bytes core 0 alone gives (CORES=1), the report has each core's
@@ -79,7 +84,11 @@ pico_case() { # NAME SCENE SIZE DEPTH FORMAT [MAKE-VARS]
         bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
         return 1
     fi
-    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth "$depth" --format "$format" --threads 1 --quiet --stats \
+    # progressive passes (the panel's default): the host in the same order,
+    # for the same counts of the core's caches; the image is the scanline
+    # order's either way (tests/progressive-tests.sh; and pass 7 below)
+    prog=$(awk '$1 == "progress_pass" { print "--progressive"; exit }' "$OUT/$n.report")
+    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth "$depth" --format "$format" --threads 1 $prog --quiet --stats \
         2>"$OUT/$n-host.stats"
     ipp=$(val instructions_per_pixel "$OUT/$n.report") cpp=$(val cycles_per_pixel "$OUT/$n.report")
     if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
@@ -115,7 +124,7 @@ pico_case card-320 scenes/bench/card.nff 40x30 3 rgb565be
 pico_case picolib-320 scenes/bench/picolib.nff 40x30 6 rgb565be
 pico_case whitted-240 scenes/bench/whitted.nff 40x30 5 rgb565be PANEL=240x240
 pico_case showpiece-odd-320 scenes/showpiece.nff 47x31 5 rgb565be
-pico_case showpiece-odd-240-flip scenes/showpiece.nff 47x31 5 rgb565be "PANEL=240x240 PANEL_FLIP=1"
+pico_case showpiece-odd-240-flip scenes/showpiece.nff 47x31 5 rgb565be "PANEL=240x240 PANEL_FLIP=1 PROGRESSIVE=0"
 pico_case card-320-flip scenes/bench/card.nff 40x30 3 rgb565be PANEL_FLIP=1
 pico_case showpiece-uart scenes/showpiece.nff 32x24 5 rgb888 PICO_DISPLAY=uart
 # the divider against libgcc's division in the generic firmware, where
@@ -167,10 +176,59 @@ else
     bad "two cores: stacks $tops, core 1's high water ${hw:-?}, guards $(val stack_guard_intact "$r2")"
 fi
 
-# Progress over the UART while the panel fills
-rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-320.report")
-[ "${rows#* }" = 31 ] && [ "${rows% *}" -ge 5 ] && ok "progress: ${rows% *} progress_rows lines, the last at row ${rows#* } of 31" ||
+# Progress over the UART while the panel fills: rows in scanline order,
+# passes in progressive display
+rows=$(awk '$1 == "progress_rows" { n++; last = $2 } END { print n + 0, last }' "$OUT/showpiece-odd-240-flip.report")
+[ "${rows#* }" = 31 ] && [ "${rows% *}" -ge 5 ] && ok "progress (PROGRESSIVE=0): ${rows% *} progress_rows lines, the last at row ${rows#* } of 31" ||
     bad "progress lines: $rows"
+passes=$(awk '$1 == "progress_pass" { printf "%s", $2 }' "$OUT/showpiece-odd-320.report")
+[ "$passes" = 1234567 ] && ok "progress (progressive): progress_pass 1 to 7" || bad "progress_pass lines: '$passes'"
+
+# Progressive display (PROGRESSIVE=1, the panel's default; the finished
+# panels above are the host's scanline images): the panel after each
+# pass, as run.mjs took it at board_pass_shown, equals the host's
+# rt --progressive-pass N, byte for byte; pass 1 (1/64 of the rays)
+# reaches the panel within 5% of the frame's time
+progressive_passes() { # NAME SCENE SIZE DEPTH [MAKE-VARS]
+    n=$1 scene=$2 size=$3 depth=$4
+    base=$(elf_of SCENE="$scene" SIZE="$size" DEPTH="$depth" $5)
+    good=0
+    for p in 1 2 3 4 5 6 7; do
+        "$RT" receive "$base.pass$p.stream" -o "$OUT/$n-pass$p.png" >/dev/null 2>&1 &&
+            "$RT" "$scene" -o "$OUT/$n-host-pass$p.png" --size "$size" --depth "$depth" --format rgb565be \
+                --progressive-pass $p --quiet &&
+            "$RT" compare "$OUT/$n-pass$p.png" "$OUT/$n-host-pass$p.png" --max-error 0 >/dev/null &&
+            good=$((good + 1))
+    done
+    fp=$(val first_picture_cycles "$OUT/$n.report") fc=$(val frame_cycles "$OUT/$n.report")
+    "$RT" "$scene" -o "$OUT/$n-host-scan.png" --size "$size" --depth "$depth" --format rgb565be --quiet &&
+        "$RT" compare "$OUT/$n-board.png" "$OUT/$n-host-scan.png" --max-error 0 >/dev/null || good=0
+    if [ $good -eq 7 ]; then
+        ok "$n progressive: the panel after each of passes 1..7 == rt --progressive-pass N rgb565be, the last == scanline order's"
+    else
+        bad "$n progressive: $good of 7 passes' panels equal the host's"
+    fi
+    if [ -n "$fp" ] && [ -n "$fc" ] && [ $((fp * 20)) -lt "$fc" ]; then
+        ok "$n progressive: the first picture on the panel after $fp cycles, the frame after $fc"
+    else
+        bad "$n progressive: first_picture_cycles '${fp:-?}', frame_cycles '${fc:-?}'"
+    fi
+}
+progressive_passes card-320 scenes/bench/card.nff 40x30 3
+progressive_passes showpiece-odd-320 scenes/showpiece.nff 47x31 5
+progressive_passes whitted-240 scenes/bench/whitted.nff 40x30 5 PANEL=240x240
+grep -q '^progress_pass' "$OUT/showpiece-odd-240-flip.report" && bad "PROGRESSIVE=0 reports passes" ||
+    ok "PROGRESSIVE=0: scanline order, no passes"
+# what progressive display cannot draw does not build
+for v in "BOARD=mps2-an385 PROGRESSIVE=1:not a panel" "BOARD=pico AA=2 PROGRESSIVE=1:adaptive anti-aliasing" \
+         "BOARD=pico PICO_DISPLAY=uart PROGRESSIVE=1:not a panel" "BOARD=pico PROGRESSIVE=yes:0 (scanline order) or 1"; do
+    if msg=$(make -s board-info ${v%%:*} 2>&1); then
+        bad "${v%%:*}: accepted"
+    else
+        echo "$msg" | grep -q "${v#*:}" && ok "${v%%:*}: $(echo "$msg" | sed 's/.*\*\*\* //' | head -1)" ||
+            bad "${v%%:*}: '$msg'"
+    fi
+done
 
 # The image is the chip's
 elf=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).elf
@@ -362,7 +420,7 @@ open(sys.argv[2], 'wb').write(d)" "$2" "$OUT/bad.spi"
     fi
 }
 log320=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5).spi
-log240=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 PANEL=240x240 PANEL_FLIP=1).spi
+log240=$(elf_of SCENE=scenes/showpiece.nff SIZE=47x31 DEPTH=5 PANEL=240x240 PANEL_FLIP=1 PROGRESSIVE=0).spi
 host=$OUT/showpiece-odd-320-host.png
 if [ -f "$log320" ] && [ -f "$log240" ]; then
     madctl="i = [c for c in cmds if d[c + 1] == 0x36][0]; d[i + 3] = "
@@ -371,7 +429,7 @@ if [ -f "$log320" ] && [ -f "$log240" ]; then
     panel_damage "no INVON (IPS glass: inverted colours)" "$log320" 320x240 0 "$host" \
         "i = [c for c in cmds if d[c + 1] == 0x21][0]; del d[i:i + 2]" differs
     panel_damage "240x240 flipped without its row offset" "$log240" 240x240 1 "$host" \
-        "[d.__setitem__(slice(c + i, c + i + 3, 2), ((d[c + i] << 8 | d[c + i + 2]) - 80).to_bytes(2, 'big')) for c in cmds if d[c + 1] == 0x2b for i in (3, 7)]" differs
+        "for c, o in [(c, o) for c in cmds if d[c + 1] == 0x2b for o in (3, 7)]: v = (d[c + o] << 8 | d[c + o + 2]) - 80; d[c + o] = v >> 8; d[c + o + 2] = v & 255" differs
     panel_damage "the 240x240 log read as the 320x240 module" "$log240" 320x240 0 "$host" "" differs
     panel_damage "a byte sent with chip select high" "$log320" 320x240 0 "$host" \
         "i = [c for c in cmds if d[c + 1] == 0x2a][0]; d[i + 2] |= 2" "chip select was high"

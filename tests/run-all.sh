@@ -39,6 +39,7 @@ run tests/cli-tests.sh "$B/rt" "$B/test-cli"
 run tests/spelling-tests.sh "$B/rt" "$B/test-spelling"
 run tests/far-tiles-tests.sh "$B/rt" "$B/test-far-tiles"
 run tests/threads-tests.sh "$B/rt" "$B/test-threads"
+run tests/progressive-tests.sh "$B/rt" "$B/test-progressive"
 run tests/spd-tests.sh "$B/rt" "$B/test-spd"
 run tests/report-tests.sh
 run tests/board-tests.sh "$B/rt"

@@ -9,6 +9,10 @@
  *    leaves the rest of the sink's frame untouched;
  *  - the incremental API, stepping 1, 3 and 7 lines, gives the same frame
  *    as one call;
+ *  - progressive display (whole frame and viewports on the 8-pixel grid,
+ *    bands shorter than a block, one and two buffers, padded pitch, one
+ *    call or a row a step) gives the scanline frame's pixels and ends
+ *    passes 1..7 in order, each with its flushes done;
  *  - all of it in SPD mode and with adaptive and uniform anti-aliasing
  *    too, and anti-aliasing's bad options refused before any flush;
  *  - adaptive anti-aliasing's split decisions (opts.aa_splits, the host's
@@ -47,6 +51,9 @@ typedef struct {
     uint8_t img[W * H * 3];
     int flushes, ends, fail_at;
     bool bad_area;
+    uint16_t vp_w;      /* progressive: areas narrower than this are packed tightly */
+    uint8_t passes[8];  /* progressive: pass_end's passes, in order */
+    int n_passes;
     uint8_t band_a[(W * 3 + 16) * 5], band_b[(W * 3 + 16) * 5];
 } test_sink_t;
 
@@ -66,7 +73,8 @@ static int t_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
         t->bad_area = true;
         return 0;
     }
-    size_t pitch = s->pitch ? s->pitch : (size_t)(a->x2 - a->x1 + 1) * 3;
+    bool block = t->vp_w && a->x2 - a->x1 + 1 < t->vp_w;
+    size_t pitch = s->pitch && !block ? s->pitch : (size_t)(a->x2 - a->x1 + 1) * 3;
     for (unsigned y = a->y1; y <= a->y2; y++)
         memcpy(t->img + ((size_t)y * W + a->x1) * 3, px + (size_t)(y - a->y1) * pitch, (size_t)(a->x2 - a->x1 + 1) * 3);
     rt_fb_flush_ready(s);
@@ -78,6 +86,15 @@ static int t_end(rt_fb_sink_t *s)
     test_sink_t *t = s->user;
     t->ends++;
     return 0;
+}
+
+static void t_pass_end(rt_fb_sink_t *s, unsigned pass)
+{
+    test_sink_t *t = s->user;
+    if (s->flushing || t->n_passes >= (int)sizeof t->passes)
+        t->bad_area = true; /* a pass ends with its flushes done */
+    else
+        t->passes[t->n_passes++] = (uint8_t)pass;
 }
 
 /* band_lines lines of `pitch` bytes (0: of the whole width) a band */
@@ -188,6 +205,52 @@ int main(void)
         int rc = be->render(&opts[0], &got.sink, NULL, &err);
         CHECK(rc == 0 && memcmp(got.img, ref[0].img, sizeof got.img) == 0, "%s: stats NULL: status %d, same image",
               bn, rc);
+
+        /* progressive display: one sample and uniform anti-aliasing, the
+         * frame and viewports on the 8-pixel grid, bands of 1, 3 and 5
+         * lines (fewer than a block's 8), tight and padded, one buffer
+         * and two, in one call and in steps of one row: the frame's
+         * pixels, passes 1..7 ended in order, the rest untouched */
+        {
+            const rt_viewport_t pvs[] = { { 0, 0, W, H }, { 8, 8, 24, 16 }, { 16, 8, W - 16, H - 8 } };
+            const struct {
+                int lines;
+                bool padded, two;
+            } bands[] = { { 1, true, false }, { 3, true, true }, { 5, false, true } };
+            int ok = 0, total = 0;
+            for (int m = 0; m < MODES; m += 3)
+                for (size_t i = 0; i < sizeof pvs / sizeof pvs[0]; i++)
+                    for (size_t k = 0; k < sizeof bands / sizeof bands[0]; k++)
+                        for (int stepped = 0; stepped < 2; stepped++) {
+                            rt_render_opts_t o = opts[m];
+                            o.viewport = pvs[i];
+                            o.progressive = RT_PROGRESSIVE_ALL;
+                            sink_init(&got, bands[k].padded ? (size_t)pvs[i].w * 3 + 7 : 0, bands[k].lines,
+                                      bands[k].two);
+                            got.vp_w = pvs[i].w;
+                            got.sink.pass_end = t_pass_end;
+                            rc = stepped ? be->render_steps(&o, &got.sink, &st, &err, 1, NULL, NULL)
+                                         : be->render(&o, &got.sink, &st, &err);
+                            static const uint8_t in_order[] = { 1, 2, 3, 4, 5, 6, 7 };
+                            bool good = rc == 0 && !got.bad_area && got.ends == 1 && got.n_passes == 7 &&
+                                        memcmp(got.passes, in_order, 7) == 0 && same_crop(&got, &ref[m], pvs[i]);
+                            total++;
+                            ok += good;
+                            if (!good)
+                                printf("        %s%s progressive: viewport %u,%u %ux%u, %d-line bands%s: status %d %s\n",
+                                       bn, mode_name[m], pvs[i].x, pvs[i].y, pvs[i].w, pvs[i].h, bands[k].lines,
+                                       stepped ? ", stepped" : "", rc, rc < 0 ? err.msg : "");
+                        }
+            CHECK(ok == total, "%s: progressive: %d of %d renders (one sample and SPP 3, 3 viewports, 3 band "
+                  "shapes, one call and stepped) give the scanline frame's pixels and end passes 1..7", bn, ok, total);
+            rt_render_opts_t o = opts[0];
+            o.progressive = RT_PROGRESSIVE_ALL;
+            sink_init(&got, 0, 4, true);
+            got.fail_at = 5;
+            rc = be->render(&o, &got.sink, &st, &err);
+            CHECK(rc == 42 && got.flushes == 5 && got.ends == 0 && !got.sink.flushing,
+                  "%s: progressive, flush 5 fails -> status %d, %d flushes, %d end", bn, rc, got.flushes, got.ends);
+        }
 
         /* viewports, tight and padded pitch, every mode */
         for (int m = 0; m < MODES; m++) {

@@ -65,7 +65,9 @@
 # given, instead of the scene's resolution), BOARD_PANEL (WxH of the panel
 # the frame goes to: a larger frame is a build error) with
 # BOARD_PANEL_NAME (how that error names it), BOARD_BAND_LINES (the
-# default of BAND_LINES, 4).
+# default of BAND_LINES, 4), BOARD_PROGRESSIVE := 1 (its sink is a panel
+# with frame memory of its own that takes any rectangle in whole-byte
+# pixels: the default of PROGRESSIVE).
 #
 # Each build (scene and FW_CHOICES, below) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying
@@ -96,6 +98,7 @@ BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
 BOARD_RUN  := platform/firmware/run.sh
 BOARD_RUN_AA := 3
 BOARD_RUN_DITHER := 0
+BOARD_PROGRESSIVE := 0
 BOARD_TAG :=
 BOARD_BENCH_VARIANTS :=
 BOARD_SIZE :=
@@ -174,6 +177,30 @@ AA_THRESHOLD := $(or $(word 2,$(subst $(comma), ,$(AA))),0)
 AA_FLAGS := $(if $(filter-out 0,$(AA_LEVELS))$(filter-out 0 1,$(SPP)),-DBOARD_AA_LEVELS=$(AA_LEVELS) -DBOARD_AA_THRESHOLD=$(AA_THRESHOLD) -DBOARD_SPP=$(SPP),-DRT_USE_AA=0)
 # the sampling as a word: $(1) levels, $(2) threshold, $(3) SPP
 sampling_word = $(or $(if $(filter-out 0,$(1)),aa$(1)$(if $(filter-out 0,$(2)),_$(2)))$(if $(filter-out 0 1,$(3)),spp$(3)),aa0)
+# PROGRESSIVE=1: the frame in the core's interlaced passes (progressive
+# display, docs/hal.md; rt --progressive), the whole picture on the panel
+# after 1/64 of the rays; the default on a board whose sink is a panel
+# (BOARD_PROGRESSIVE), rendering on one core with one sample a pixel or
+# SPP. 0: scanline order, and the firmware links none of it
+# (RT_USE_PROGRESSIVE=0). A stream sink sends whole lines top down.
+ifeq ($(origin PROGRESSIVE),undefined)
+PROGRESSIVE := $(if $(filter 1,$(BOARD_PROGRESSIVE)),$(if $(filter 1,$(CORES)),$(if $(filter-out 0,$(AA_LEVELS)),0,1),0),0)
+endif
+ifeq ($(filter 0 1,$(PROGRESSIVE)),)
+$(error PROGRESSIVE=$(PROGRESSIVE): 0 (scanline order) or 1 (interlaced passes))
+endif
+ifeq ($(PROGRESSIVE),1)
+ifneq ($(BOARD_PROGRESSIVE),1)
+$(error PROGRESSIVE=1: BOARD=$(BOARD)'s sink is not a panel that keeps its frame (BOARD_PROGRESSIVE): it gets scanline order)
+endif
+ifneq ($(CORES),1)
+$(error PROGRESSIVE=1 renders on one core (CORES=1))
+endif
+ifneq ($(filter-out 0,$(AA_LEVELS)),)
+$(error PROGRESSIVE=1 needs one sample a pixel or SPP=N: adaptive anti-aliasing (AA=$(AA)) shares corners between pixels)
+endif
+endif
+PROGRESSIVE_FLAGS := $(if $(filter 1,$(PROGRESSIVE)),-DBOARD_PROGRESSIVE=1,-DRT_USE_PROGRESSIVE=0)
 # DITHER=1: ordered dithering of the packed formats (rt --dither); 0
 # (the default) links none of it (RT_USE_DITHER=0).
 DITHER ?= 0
@@ -216,6 +243,7 @@ SPEC_LDFLAGS = $(if $(filter 1,$(SPECIALISE)),-flto $(SPEC_OPT) $(FW_FLAGS_$(1))
 FW_CHOICES := $(SIZE)/$(DEFAULT_SIZE) d$(DEPTH)/d5 $(FORMAT)/$(or $(FW_FORMAT),rgb888) \
               $(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))/$(call sampling_word,$(word 1,$(subst $(comma), ,$(BOARD_RUN_AA))),$(or $(word 2,$(subst $(comma), ,$(BOARD_RUN_AA))),0),0) \
               $(if $(filter 1,$(DITHER)),dither,nodither)/$(if $(filter 1,$(BOARD_RUN_DITHER)),dither,nodither) \
+              $(if $(filter 1,$(PROGRESSIVE)),progressive,scanline)/$(if $(filter 1,$(BOARD_PROGRESSIVE)),progressive,scanline) \
               $(if $(filter 0,$(TEXTURE_FILTER)),pointtex,filtertex)/filtertex $(if $(filter 0,$(PRUNE)),noprune,prune)/prune \
               $(CONFIG)/q20 b$(BAND_LINES)/b$(BOARD_BAND_LINES) s$(STACK_SIZE)/s4096 cores$(CORES)/cores$(BOARD_CORES) \
               $(if $(filter 1,$(SPECIALISE)),spec$(if $(filter 1,$(KEEP_FRAMES)),frames),generic)/spec
@@ -229,7 +257,7 @@ SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdata-sections \
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
-            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(TEXTURE_FILTER_FLAGS) \
+            -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(PROGRESSIVE_FLAGS) $(TEXTURE_FILTER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (render.c: set-up and once per pixel), errors and

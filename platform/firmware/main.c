@@ -54,7 +54,8 @@ _Static_assert(BOARD_HEIGHT >= 1 && BOARD_HEIGHT <= RT_MAX_HEIGHT, "BOARD_HEIGHT
 _Static_assert(BOARD_DEPTH >= 1 && BOARD_DEPTH <= RT_MAX_DEPTH, "BOARD_DEPTH out of 1..RT_MAX_DEPTH");
 
 #if BOARD_CORES == 1 /* (with more, each core has band buffers of its own: bands.c) */
-static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)];
+/* (word-aligned: progressive display copies its lines a word at a time) */
+static uint8_t band[BOARD_BAND_LINES * RT_FB_CONST_LINE_BYTES(BOARD_FORMAT, BOARD_WIDTH)] __attribute__((aligned(4)));
 #endif
 
 /* The core's counters, keyed as on the host (stats.h). */
@@ -78,6 +79,9 @@ int main(void)
     rt_render_opts_t opts = { .width = BOARD_WIDTH, .height = BOARD_HEIGHT, .max_depth = BOARD_DEPTH,
                            .adaptive_milli = BOARD_ADAPTIVE_MILLI, .aa_levels = BOARD_AA_LEVELS,
                            .aa_threshold = BOARD_AA_THRESHOLD, .spp = BOARD_SPP };
+#if BOARD_PROGRESSIVE /* a panel that keeps its frame (firmware.mk's PROGRESSIVE) */
+    opts.progressive = RT_PROGRESSIVE_ALL;
+#endif
 #if BOARD_AA_LEVELS
     opts.scratch = aa_scratch;
     opts.scratch_bytes = sizeof aa_scratch[0];

@@ -43,6 +43,7 @@ typedef struct {
     const rt_render_opts_t *opts;
     rt_viewport_t vp;      /* the viewport the threads share */
     bool split;            /* false: one call of the core, opts->viewport as given */
+    unsigned upto;         /* progressive display up to this pass (0: as opts says) */
     image_t *img;
     run_t *runs;           /* one per thread */
     unsigned n_runs;
@@ -92,12 +93,14 @@ static int band_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
     band_thread_t *t = s->user;
     band_job_t *job = t->job;
     image_t *img = job->img;
-    if (!img->rgb || a->y1 < job->vp.y || a->y2 >= job->vp.y + img->height || a->x1 != job->vp.x ||
-        a->x2 - a->x1 + 1 != img->width)
-        return 1; /* not a band of this image: cannot happen */
-    size_t w = (size_t)img->width;
+    if (!img->rgb || a->y1 < job->vp.y || a->y2 >= job->vp.y + img->height || a->y2 < a->y1 ||
+        a->x1 < job->vp.x || a->x2 >= job->vp.x + img->width || a->x2 < a->x1)
+        return 1; /* not an area of this image: cannot happen */
+    /* a band spans the viewport; progressive display's blocks may be
+     * narrower, packed tightly too (pitch 0) */
+    size_t w = (size_t)(a->x2 - a->x1 + 1);
     for (unsigned y = a->y1; y <= a->y2; y++) {
-        uint8_t *dst = img->rgb + (size_t)(y - job->vp.y) * w * 3;
+        uint8_t *dst = img->rgb + ((size_t)(y - job->vp.y) * img->width + (a->x1 - job->vp.x)) * 3;
         const uint8_t *src = px + (size_t)(y - a->y1) * RT_FB_LINE_BYTES(s->format, w);
         for (size_t x = 0; x < w; x++)
             rt_fb_expand(s->format, src, x, dst + 3 * x);
@@ -179,6 +182,12 @@ static void *band_worker(void *arg)
             o.viewport = (rt_viewport_t){ job->vp.x, (uint16_t)(job->vp.y + now.next), job->vp.w,
                                           (uint16_t)(now.end - now.next) };
             status = job->be->render_steps(&o, &t->sink, &t->stats, &err, 1, claim_line, t);
+        } else if (job->upto) { /* passes 1..upto, a call each, into the one image */
+            status = 0;
+            for (unsigned p = 1; p <= job->upto && status == 0; p++) {
+                o.progressive = (uint8_t)p;
+                status = job->be->render(&o, &t->sink, &t->stats, &err);
+            }
         } else {
             status = job->be->render(&o, &t->sink, &t->stats, &err);
         }
@@ -198,7 +207,8 @@ static void *band_worker(void *arg)
 }
 
 int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, bool dither,
-                 unsigned threads, bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err)
+                 unsigned threads, unsigned upto_pass, bool progress, image_t *img, rt_stats_t *stats,
+                 bands_time_t *time, rt_error_t *err)
 {
     double start = now_seconds();
     /* the frame as the core will see it */
@@ -213,13 +223,18 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
         vp = (rt_viewport_t){ 0, 0, fw, fh };
 
     static band_job_t job; /* one render at a time */
-    job = (band_job_t){ .be = be, .opts = opts, .vp = vp, .img = img, .progress = progress };
+    /* progressive display: one call of the core (a pass's blocks span
+     * eight lines), and no indicator (the passes cover the frame over and
+     * over) */
+    bool progressive = opts->progressive || upto_pass;
+    job = (band_job_t){ .be = be, .opts = opts, .vp = vp, .img = img, .progress = progress && !progressive,
+                        .upto = upto_pass };
     bool valid = fw >= 1 && fh >= 1 && fw <= RT_MAX_WIDTH && fh <= RT_MAX_HEIGHT && vp.w >= 1 && vp.h >= 1 &&
                  vp.x < fw && vp.y < fh && vp.w <= fw - vp.x && vp.h <= fh - vp.y;
     /* One thread renders the viewport in one call of the core: the render
      * and counts of the board's. A frame or viewport the core would refuse
      * is not cut either, for the core's own message. */
-    job.split = valid && threads > 1;
+    job.split = valid && threads > 1 && !progressive;
     atomic_init(&job.failed, false);
     atomic_init(&job.lines_done, 0);
     pthread_mutex_init(&job.lock, NULL);
@@ -230,7 +245,7 @@ int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_for
         img->height = vp.h;
         img->rgb = malloc((size_t)vp.w * vp.h * 3);
     }
-    if (threads < 1)
+    if (threads < 1 || progressive)
         threads = 1;
     if (job.split && threads > vp.h)
         threads = vp.h; /* a line each at least */

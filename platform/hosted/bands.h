@@ -27,12 +27,15 @@ unsigned bands_default_threads(void);
  * `dither`, rt_fb_sink_t) straight into
  * their rows of *img (allocated here: the viewport's size), and its own
  * stats; a thread out of lines takes the lower half of the longest run
- * left (bands.c). *stats gets the sum. opts->worker, scratch and
+ * left (bands.c). Progressive display (opts->progressive, or upto_pass
+ * N: passes 1..N, one call of the core each, the picture as it stands
+ * after pass N) renders on one thread. *stats gets the sum. opts->worker, scratch and
  * scratch_bytes are the threads' own. The progress indicator, if on,
  * shows the lines done by all threads on stderr; *time gets the times.
  * Returns as be->render does: 0, the first failure's sink status, or -1
  * with *err set (then *img is freed). */
 int bands_render(const rt_backend_t *be, const rt_render_opts_t *opts, rt_fb_format_t format, bool dither,
-                 unsigned threads, bool progress, image_t *img, rt_stats_t *stats, bands_time_t *time, rt_error_t *err);
+                 unsigned threads, unsigned upto_pass, bool progress, image_t *img, rt_stats_t *stats,
+                 bands_time_t *time, rt_error_t *err);
 
 #endif

@@ -60,6 +60,11 @@ static const char usage_text[] =
     "                      (0.001..1; off by default)\n"
     "  --threads N         render with N threads, 1..%d (default: the online CPUs,\n"
     "                      here %u); the image is the same for every N\n"
+    "  --progressive       render in 7 interlaced passes, as a panel shows them\n"
+    "                      (one thread; the image is the scanline order's)\n"
+    "  --progressive-pass N\n"
+    "                      the picture as it stands after pass N (1..7): each\n"
+    "                      pixel the one traced at the corner of its cell\n"
     "  --quiet             no progress indicator\n"
     "  -h, --help          this text; --version: the version\n"
     "Options take their value as the next argument or after '='\n"
@@ -166,7 +171,7 @@ static void print_usage(void)
 }
 
 enum {
-    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_SAME_SAMPLES, OPT_TEXTURE_FILTER, OPT_ADAPTIVE, OPT_THREADS, OPT_QUIET, OPT_VERSION,
+    OPT_SIZE = 256, OPT_VIEWPORT, OPT_DEPTH, OPT_FORMAT, OPT_DITHER, OPT_STATS, OPT_SPD, OPT_AA, OPT_SPP, OPT_SAME_SAMPLES, OPT_TEXTURE_FILTER, OPT_ADAPTIVE, OPT_THREADS, OPT_PROGRESSIVE, OPT_PROGRESSIVE_PASS, OPT_QUIET, OPT_VERSION,
     OPT_PSNR_MIN, OPT_MAX_OVER8, OPT_MAX_ERROR, OPT_BLUR,
     OPT_BACKEND /* + the backend's index */
 };
@@ -189,6 +194,8 @@ static const struct option render_options[] = {
     { "texture-filter", required_argument, NULL, OPT_TEXTURE_FILTER },
     { "adaptive", required_argument, NULL, OPT_ADAPTIVE },
     { "threads", required_argument, NULL, OPT_THREADS },
+    { "progressive", no_argument, NULL, OPT_PROGRESSIVE },
+    { "progressive-pass", required_argument, NULL, OPT_PROGRESSIVE_PASS },
     { "quiet", no_argument, NULL, OPT_QUIET },
     { "help", no_argument, NULL, 'h' },
     { "version", no_argument, NULL, OPT_VERSION },
@@ -199,7 +206,7 @@ static const host_option_need_t render_needs[] = {
     { 'o', "a file name" }, { OPT_SIZE, "WxH" }, { OPT_VIEWPORT, "X,Y,W,H" }, { OPT_DEPTH, "a number" },
     { OPT_FORMAT, "a pixel format name" }, { OPT_ADAPTIVE, "a number" },
     { OPT_AA, "LEVELS[,THRESHOLD]" }, { OPT_SPP, "a number" }, { OPT_SAME_SAMPLES, "a build name" }, { OPT_TEXTURE_FILTER, "on or off" },
-    { OPT_THREADS, "a number" }, { 0, NULL },
+    { OPT_THREADS, "a number" }, { OPT_PROGRESSIVE_PASS, "a number" }, { 0, NULL },
 };
 
 #define RENDER_HELP "rt --help"
@@ -249,7 +256,7 @@ static int take_splits(const rt_backend_t *from, rt_render_opts_t *opts, rt_fb_f
     image_t img;
     rt_stats_t st = { 0 };
     bands_time_t time = { 0, 0, 0 };
-    int status = bands_render(from, &rec, format, false, threads, progress, &img, &st, &time, err);
+    int status = bands_render(from, &rec, format, false, threads, 0, progress, &img, &st, &time, err);
     if (status != 0)
         return status;
     image_free(&img);
@@ -269,6 +276,7 @@ static int cmd_render(int argc, char **argv)
     bool dither = false;
     bool quiet = false;
     unsigned threads = bands_default_threads();
+    unsigned upto_pass = 0; /* --progressive-pass */
     bool stats = false;
     report_format_t stats_format = REPORT_TEXT;
 
@@ -407,6 +415,17 @@ static int cmd_render(int argc, char **argv)
             threads = (unsigned)n;
             break;
         }
+        case OPT_PROGRESSIVE:
+            opts.progressive = RT_PROGRESSIVE_ALL;
+            break;
+        case OPT_PROGRESSIVE_PASS: {
+            long n;
+            int st = count_arg("progressive-pass", optarg, RT_PROGRESSIVE_PASSES, &n);
+            if (st != 0)
+                return st;
+            upto_pass = (unsigned)n;
+            break;
+        }
         case OPT_QUIET:
             quiet = true;
             break;
@@ -487,7 +506,7 @@ static int cmd_render(int argc, char **argv)
         free(splits);
         return status < 0 ? EXIT_BAD_INPUT : 1;
     }
-    status = bands_render(be, &opts, format, dither, threads, progress, &img, &st, &time, &err);
+    status = bands_render(be, &opts, format, dither, threads, upto_pass, progress, &img, &st, &time, &err);
     free(splits);
     if (progress)
         fprintf(stderr, "\r                \r");

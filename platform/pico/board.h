@@ -21,4 +21,9 @@ void board_unreset(uint32_t blocks, const char *what);
 /* clk_sys cycles since port_init() started SysTick. */
 uint64_t board_cycles(void);
 
+/* Progressive display: pass `pass` is on the panel, its last byte sent
+ * (st7789.c). Does nothing; run.mjs watches its address to take the
+ * panel's picture and the time of each pass. */
+void board_pass_shown(unsigned pass);
+
 #endif

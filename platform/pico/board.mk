@@ -68,7 +68,10 @@ ifeq ($(filter 0 1,$(PANEL_FLIP)),)
 $(error PANEL_FLIP=$(PANEL_FLIP): 0 or 1)
 endif
 BOARD_SINK     := platform/pico/st7789.c
-BOARD_SINK_CALLBACKS := panel_begin,panel_flush,transfer_wait,panel_end
+BOARD_SINK_CALLBACKS := panel_begin,panel_flush,transfer_wait,panel_end,panel_pass_end
+# the panel keeps its frame: the core's interlaced passes by default
+# (PROGRESSIVE=0: scanline order), the whole picture after 1/64 of the rays
+BOARD_PROGRESSIVE := 1
 BOARD_CFLAGS   += -DPANEL_WIDTH=$(word 1,$(subst x, ,$(PANEL))) -DPANEL_HEIGHT=$(word 2,$(subst x, ,$(PANEL))) -DPANEL_FLIP=$(PANEL_FLIP)
 BOARD_PANEL    := $(PANEL)
 BOARD_PANEL_NAME := $(PANEL) panel (PANEL=$(PANEL))

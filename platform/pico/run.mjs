@@ -23,8 +23,13 @@
 //       must be black (the firmware clears the panel first); the whole
 //       picture goes to FIRMWARE.panel.stream (rt's stream format), the
 //       frame to OUT.png.
-//       Then the runner's own counts of the render (below), the clocks at
-//       the end, the render's time at CLOCK_HZ from the firmware's
+//       Then the runner's own counts of the render (below), for a panel
+//       frame_cycles (the render's start to the panel's last byte, SPI
+//       bytes timed at SPI0's clock: makePanelClock) and, with progressive
+//       display, first_picture_cycles (to pass 1's last byte) and the
+//       panel's frame after each pass in FIRMWARE.passN.stream (taken
+//       where the firmware calls board_pass_shown), the clocks at the
+//       end, the render's time at CLOCK_HZ from the firmware's
 //       render_cycles, and the host's wall time.
 //       --module: the panel module on the pins (st7789.mjs's PANELS,
 //       320x240 by default; ",flip": turned by 180 degrees), which the
@@ -113,6 +118,7 @@ const SPI_MAX_HZ = 62.5e6; // the ST7789's 16 ns write cycle
 const WALL_LIMIT_S = 900;
 const MARK_SYMBOL = 'port_cycles_read';
 const GUARD_SYMBOLS = ['__spinlocked_start', '__spinlocked_end']; // the image's spinlock-guarded data
+const PASS_SYMBOL = 'board_pass_shown'; // progressive display: a pass is on the panel
 const SYSTICK_TOLERANCE = 0.1; // percent
 const hex = (v) => `0x${(v >>> 0).toString(16).padStart(8, '0')}`;
 
@@ -324,6 +330,8 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   }
   const markSym = elf.symbols.get(MARK_SYMBOL);
   const markPC = markSym === undefined ? -1 : (markSym & ~1) >>> 0;
+  const passSym = elf.symbols.get(PASS_SYMBOL);
+  const passPC = passSym === undefined ? -1 : (passSym & ~1) >>> 0;
 
   const mcu = new RP2040();
   const core = mcu.core, clock = mcu.clock;
@@ -468,7 +476,9 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   // while the panel listens, and it reads a phantom bit).
   const serial = [], spi = [];
   mcu.uart[0].onByte = (v) => serial.push(v);
+  const panel = makePanelClock(mcu);
   mcu.spi[0].onTransmit = (v) => {
+    panel.byte(now); // (the clock: either core may have started the transfer)
     spi.push((mcu.gpio[PIN_DC].outputValue ? 1 : 0) | (mcu.gpio[PIN_CS].outputValue ? 2 : 0), v);
     mcu.spi[0].completeTransmit(0);
   };
@@ -545,10 +555,14 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           atCore = 0;
           for (let k = 0; k < 10000; k++) {
             const pc = core.PC;
-            if (pc === markPC) {
+            if (pc === markPC || pc === passPC) {
               // an interrupt taken before it would run the handler first
               if (core.interruptsUpdated && core.checkForInterrupts()) continue;
-              marks[0].push([n0, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+              if (pc === passPC) panel.pass(core, spi.length);
+              else {
+                marks[0].push([n0, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+                panel.mark(core.cycles);
+              }
             }
             at = pc;
             core.executeInstruction();
@@ -584,9 +598,13 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           if (id && pc < ROM_END) {
             c1.romStep();
           } else {
-            if (pc === markPC) {
+            if (pc === markPC || pc === passPC) {
               if (c.interruptsUpdated && c.checkForInterrupts()) continue;
-              marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+              if (pc === passPC) panel.pass(c, spi.length);
+              else {
+                marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
+                if (!id) panel.mark(c.cycles);
+              }
             }
             c.executeInstruction();
             if (id) n1++;
@@ -614,10 +632,62 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   return {
     serial: Buffer.from(serial), spi: Buffer.from(spi), wall: Number(process.hrtime.bigint() - t0) / 1e9,
     instructions: n0 + n1, cycles: Math.max(now, core.cycles, core1.cycles), perCore,
-    marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq,
+    marks, markSym, ending, xipModel, clkSys: mcu.clkSys, clkPeri: mcu.clocks.periFreq, panel,
     backlight: mcu.gpio[PIN_BACKLIGHT].outputEnable && mcu.gpio[PIN_BACKLIGHT].outputValue,
     led: mcu.gpio[PIN_LED].outputEnable && mcu.gpio[PIN_LED].outputValue,
   };
+}
+
+// ---- the panel's time, and its picture after each progressive pass ------
+//
+// rp2040js's DMA and SPI move bytes at once, so the panel's time is kept
+// here: each byte SPI0 sends takes 8 of its clocks (clk_sys / its
+// divider), queued behind the bytes before it, as the chip's DMA sends a
+// band while the core renders the next (the core's waits for a busy SPI
+// are not modelled: they would add only where the SPI falls behind).
+// With progressive display (st7789.c) the firmware calls board_pass_shown
+// (pass) when a pass's last transfer is done: the runner keeps the SPI
+// log's length there (the panel's picture after that pass) and the time.
+function makePanelClock(mcu) {
+  return {
+    free: 0,     // the cycle at which the SPI has sent every byte so far
+    marks: [],   // at each port_cycles_read mark: when the SPI is done
+    passes: [],  // { pass, cycles, spiLength, spiDone } at each board_pass_shown
+    byte(cycles) {
+      this.free = Math.max(this.free, cycles) + (8 * mcu.clkSys) / mcu.spi[0].clockFrequency;
+    },
+    mark(cycles) {
+      // the render's start: st7789.c waited for the panel's clearing to
+      // be sent, so the SPI is idle there
+      if (this.marks.length === 0) this.free = Math.min(this.free, cycles);
+      this.marks.push(Math.max(this.free, cycles));
+    },
+    pass(core, spiLength) {
+      this.passes.push({ pass: core.registers[0], cycles: core.cycles, spiLength, spiDone: Math.max(this.free, core.cycles) });
+    },
+  };
+}
+
+// The frame's time from the render's start to the panel's last byte, and
+// with progressive passes the time to pass 1 on the panel and the panel
+// after each pass (BASE.passN.stream, the frame in rt's stream format);
+// throws what is wrong.
+function panelReport(r, base, module, fw, fh, hz) {
+  const start = r.marks[0][0][1], end = r.panel.marks[r.panel.marks.length - 1];
+  const ms = (c) => (hz ? `, ${((c / hz) * 1e3).toFixed(1)} ms at ${hz / 1e6} MHz` : '');
+  const lines = [`frame_cycles ${Math.round(end - start)} (render start to the panel's last byte, SPI bytes at SPI0's clock${ms(end - start)})`];
+  const { passes } = r.panel;
+  if (passes.length === 0) return lines;
+  if (passes.map((p) => p.pass).join() !== '1,2,3,4,5,6,7') throw new Error(`progressive passes ended in the order ${passes.map((p) => p.pass).join()}, not 1..7`);
+  const first = passes[0];
+  lines.push(`first_picture_cycles ${Math.round(first.spiDone - start)} (render start to pass 1's last panel byte at SPI0's clock${ms(first.spiDone - start)}; with the emulator's instant DMA: ${first.cycles - start})`);
+  for (const p of passes) {
+    const picture = decodePanel(r.spi.subarray(0, p.spiLength), module[0], module[1]);
+    const [x0, y0] = checkBorder(picture, fw, fh);
+    writeFileSync(`${base}.pass${p.pass}.stream`, panelStream(picture, fw, fh, x0, y0));
+  }
+  lines.push(`progressive passes 1..7 on the panel: pass ends at ${passes.map((p) => Math.round(p.spiDone - start)).join(', ')} cycles; the frame after each: ${base}.passN.stream`);
+  return lines;
 }
 
 // The render's counts from the marks: start, (begin, end) pairs of display
@@ -739,6 +809,13 @@ if (!streamed) {
     fail(`${base}.spi: ${e.message}`);
   }
   if (!r.backlight) fail(`the backlight (GP${PIN_BACKLIGHT}) is off at the end: the panel shows nothing`);
+  if (r.marks[0].length >= 2) {
+    try {
+      for (const l of panelReport(r, base, module, fw, fh, Number(hz))) console.log(l);
+    } catch (e) {
+      fail(`${base}.spi: ${e.message}`);
+    }
+  }
   const img = receive(rt, [`${base}.frame.stream`, '-o', out]);
   process.stderr.write(img.stderr);
   if (img.status !== 0) process.exit(img.status ?? 1);

@@ -53,7 +53,12 @@
  * frame_height and a line naming the frame and the panel (PANEL_INFO,
  * which uf2.mjs check also finds in the image), which tell run.mjs where
  * the frame is. A progress line goes to the UART at each tenth of the
- * frame, and the LED toggles at each band.
+ * frame, and the LED toggles at each band. With progressive display
+ * (PROGRESSIVE=1, the default: docs/hal.md) the areas are a pass's rows
+ * of blocks or single blocks, each its own window; at each pass's end
+ * (its last transfer done) a report line "progress_pass N" and a call of
+ * board_pass_shown, where run.mjs takes the panel's picture; the report
+ * adds first_picture_us, render start to pass 1 on the panel.
  *
  * Checked against run.mjs's model of the controller (st7789.mjs), not on
  * hardware: docs/boards.md, "On a real Pico", says what only a real
@@ -149,7 +154,7 @@ _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be p
 #define CYCLES_PER_MS (CLK_SYS_HZ / 1000u)
 
 static uint16_t frame_width, frame_height, frame_x, frame_y;
-static uint64_t frame_start;
+static uint64_t frame_start, first_picture; /* (progressive: cycles to pass 1 on the panel) */
 
 static void delay_ms(uint32_t ms)
 {
@@ -229,6 +234,7 @@ static int panel_begin(rt_fb_sink_t *s, uint16_t w, uint16_t h)
     frame_x = (uint16_t)((PANEL_WIDTH - w) / 2u);
     frame_y = (uint16_t)((PANEL_HEIGHT - h) / 2u);
     frame_start = board_cycles();
+    first_picture = 0;
     return 0;
 }
 
@@ -244,10 +250,29 @@ static int panel_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px
     DMA_WRITE_ADDR = (uint32_t)(uintptr_t)&PL022_DR(SPI0);
     DMA_TRANS_COUNT = (uint32_t)(a->y2 - a->y1 + 1) * (uint32_t)(a->x2 - a->x1 + 1) * 2u;
     DMA_CTRL_TRIG = DMA_EN | DMA_INCR_READ | DMA_CHAIN_TO_SELF | DMA_TREQ_SPI0_TX;
+#if BOARD_PROGRESSIVE
+    port_heartbeat(); /* (the passes cover the frame again and again: progress by pass) */
+#else
     sink_progress((uint32_t)(a->y2 - a->y1 + 1), frame_height);
+#endif
     sink_io_end();
     return 0; /* rt_fb_flush_ready() comes from transfer_wait() */
 }
+
+#if BOARD_PROGRESSIVE
+/* A pass is on the panel (the core waited for its last transfer): the
+ * board's time to the first whole picture, and the runner's mark. */
+static void panel_pass_end(rt_fb_sink_t *s, unsigned pass)
+{
+    (void)s;
+    sink_io_begin();
+    if (pass == 1)
+        first_picture = board_cycles() - frame_start;
+    board_pass_shown(pass);
+    report_value("progress_pass", pass);
+    sink_io_end();
+}
+#endif
 
 static int panel_end(rt_fb_sink_t *s)
 {
@@ -256,6 +281,10 @@ static int panel_end(rt_fb_sink_t *s)
     /* (the core waited for the last transfer) the board's own time for
      * the frame, display included */
     report_value("frame_ms", (board_cycles() - frame_start + CYCLES_PER_MS / 2) / CYCLES_PER_MS);
+#if BOARD_PROGRESSIVE
+    /* to pass 1's last byte, sent: the whole picture on the panel */
+    report_value("first_picture_us", (first_picture * 1000u + CYCLES_PER_MS / 2) / CYCLES_PER_MS);
+#endif
     report_value("frame_width", frame_width);
     report_value("frame_height", frame_height);
 #ifdef BOARD_WIDTH
@@ -314,6 +343,9 @@ void sink_init(rt_fb_sink_t *sink, rt_fb_format_t format, uint8_t *band, size_t 
     sink->flush = panel_flush;
     sink->wait = transfer_wait;
     sink->end = panel_end;
+#if BOARD_PROGRESSIVE
+    sink->pass_end = panel_pass_end;
+#endif
     sink->user = 0;
     sink->flushing = false;
 }

@@ -51,14 +51,24 @@ RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
  * each product is rounded once. |a|, |b| <= max(256, tan_half) and |at| <
  * 513 (camera_init), so up to a lens of 179.8 degrees none needs a
  * saturation test (a wider one would only saturate its edges). The row
- * part at - b v is made once a row. */
-RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
+ * part at - b v is made once a row (camera_row), or a sample for a walk
+ * down a column (camera_column_row). */
+/* The row part at - b v of row j (m = 2j - cy). */
+static void row_part(const camera_t *c, int32_t m, real_wide_t part[3])
 {
-    row->m = 2 * j - c->cy;
-    real_t b = r_from_wide_in_range(c->half_span * row->m);
-    const real_wide_t part[3] = { r_to_wide(c->at.x) - r_wmul(b, c->v.x), r_to_wide(c->at.y) - r_wmul(b, c->v.y),
-                                  r_to_wide(c->at.z) - r_wmul(b, c->v.z) };
-    row->k = 2 * i - c->cx;
+#if RT_BACKEND_FIXED
+    real_t b = r_from_wide_in_range(fx_mul64x(m, c->half_span)); /* (the same product, 32 x 64 bits) */
+#else
+    real_t b = r_from_wide_in_range(c->half_span * m);
+#endif
+    part[0] = r_to_wide(c->at.x) - r_wmul(b, c->v.x);
+    part[1] = r_to_wide(c->at.y) - r_wmul(b, c->v.y);
+    part[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
+}
+
+RT_COLD void camera_column(const camera_t *c, int32_t i, camera_column_t *col)
+{
+    col->k = 2 * i - c->cx;
 #if RT_BACKEND_FIXED
     /* the fixed build walks T along the row in the wide format: the step
      * s u rounded once to 2^-2F, so T is good to 2^-2F a sample (under
@@ -66,13 +76,36 @@ RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *r
      * instead of three 64-bit products */
     const real_t u[3] = { c->u.x, c->u.y, c->u.z };
     for (int n = 0; n < 3; n++) {
-        row->dt[n] = r_wmul_real(2 * c->half_span, u[n]);
-        row->t[n] = part[n] + (fx_mul64x(row->k, row->dt[n]) >> 1); /* k (s/2) u */
+        col->dt[n] = r_wmul_real(2 * c->half_span, u[n]);
+        col->kt[n] = fx_mul64x(col->k, col->dt[n]) >> 1; /* k (s/2) u */
     }
 #else
-    for (int n = 0; n < 3; n++)
+    (void)c;
+#endif
+}
+
+void camera_column_row(const camera_t *c, const camera_column_t *col, int32_t j, camera_row_t *row)
+{
+    real_wide_t part[3];
+    row->m = 2 * j - c->cy;
+    row_part(c, row->m, part);
+    row->k = col->k;
+    row->dk = 2;
+    for (int n = 0; n < 3; n++) {
+#if RT_BACKEND_FIXED
+        row->dt[n] = col->dt[n];
+        row->t[n] = part[n] + col->kt[n];
+#else
         row->row[n] = part[n];
 #endif
+    }
+}
+
+RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
+{
+    camera_column_t col;
+    camera_column(c, i, &col);
+    camera_column_row(c, &col, j, row);
 }
 
 ray_t camera_next(const camera_t *c, camera_row_t *row)
@@ -87,7 +120,7 @@ ray_t camera_next(const camera_t *c, camera_row_t *row)
                   r_from_wide_in_range(row->row[1] + r_wmul(a, c->u.y)),
                   r_from_wide_in_range(row->row[2] + r_wmul(a, c->u.z)));
 #endif
-    row->k += 2;
+    row->k += row->dk;
     vec3_t to_t = v3_sub(t, c->eye);
     ray_t r;
     real_t dist;

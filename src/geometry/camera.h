@@ -59,14 +59,40 @@ typedef struct {
     real_wide_t row[3];      /* T's row part */
 #endif
     int32_t k;     /* the next sample's 2i - cx */
+    int32_t dk;    /* k's step to the sample after: 2 (camera_stride: more) */
     int32_t m;     /* the row's 2j - cy */
 } camera_row_t;
 
 /* Row j of the camera's samples, from column i. */
 void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row);
 
+/* Column i's part of the walk, for samples taken down a column. */
+typedef struct {
+#if RT_BACKEND_FIXED
+    real_wide_t kt[3], dt[3]; /* T's column part k (s/2) u, and the row step */
+#endif
+    int32_t k; /* 2i - cx */
+} camera_column_t;
+void camera_column(const camera_t *c, int32_t i, camera_column_t *col);
+
+/* The walk of row j from column col: exactly camera_row's (camera_row is
+ * these two), for the price of the row part alone. */
+void camera_column_row(const camera_t *c, const camera_column_t *col, int32_t j, camera_row_t *row);
+
 /* The eye ray through the row's next sample; steps to the one after. */
 ray_t camera_next(const camera_t *c, camera_row_t *row);
+
+/* From here on the row's walk takes every n-th sample (camera_row sets
+ * n = 1): each camera_next is exactly where n of them would have left it
+ * (the fixed build's step is n steps, the same integer sum). */
+static inline void camera_stride(camera_row_t *row, int32_t n)
+{
+#if RT_BACKEND_FIXED
+    for (int i = 0; i < 3; i++)
+        row->dt[i] *= n;
+#endif
+    row->dk = 2 * n;
+}
 
 /* The eye ray through sample (i, j), column i from the left, row j from the top. */
 ray_t camera_ray(const camera_t *c, int32_t i, int32_t j);

@@ -203,18 +203,23 @@ static colour_t aa_sample(struct rt_worker *wk, int32_t i, int32_t j, unsigned s
     return v3(clamp_unit(c.x), clamp_unit(c.y), clamp_unit(c.z));
 }
 
-/* Line y, uniform: the mean of spp x spp cell centres a pixel. */
-static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+/* Frame pixel (x, y), uniform: the mean of its spp x spp cell centres. */
+static colour_t uniform_pixel(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
     struct rt_worker *wk = ctx->worker;
     int32_t n = ctx->spp, sub = 2 * n;
-    for (uint16_t x = 0; x < ctx->w; x++) {
-        colour_t sum = v3(0, 0, 0);
-        for (int32_t b = 0; b < n; b++)
-            for (int32_t a = 0; a < n; a++)
-                sum = v3_add(sum, aa_sample(wk, sub * (ctx->x0 + x) + 2 * a + 1, sub * y + 2 * b + 1, 1));
-        put_pixel(line, x, ctx->sink->format, v3_scale(sum, wk->aa_scale), dither_at(ctx, ctx->x0 + x, y));
-    }
+    colour_t sum = v3(0, 0, 0);
+    for (int32_t b = 0; b < n; b++)
+        for (int32_t a = 0; a < n; a++)
+            sum = v3_add(sum, aa_sample(wk, sub * (int32_t)x + 2 * a + 1, sub * (int32_t)y + 2 * b + 1, 1));
+    return v3_scale(sum, wk->aa_scale);
+}
+
+/* Line y, uniform. */
+static void uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
+{
+    for (uint16_t x = 0; x < ctx->w; x++)
+        put_pixel(line, x, ctx->sink->format, uniform_pixel(ctx, ctx->x0 + x, y), dither_at(ctx, ctx->x0 + x, y));
 }
 
 /* A cell corner not traced yet (traced ones are clamped to [0, 1]). */
@@ -421,6 +426,193 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
     }
 }
 
+#if RT_USE_PROGRESSIVE
+/* The progressive passes (rt_render.h), in order: the first sample's
+ * offset in each 8x8 tile, the spacing of the samples, the block each
+ * one paints. One list: the passes' lattices nest, and together they
+ * hold each pixel of a tile once (tests/progressive-tests.sh checks the
+ * pictures against the rule, render.c's counts against a frame's). */
+typedef struct {
+    uint8_t ox, oy, sx, sy, bw, bh;
+} pass_t;
+static const pass_t passes[] = {
+    { 0, 0, 8, 8, 8, 8 }, { 4, 0, 8, 8, 4, 8 }, { 0, 4, 4, 8, 4, 4 }, { 2, 0, 4, 4, 2, 4 },
+    { 0, 2, 2, 4, 2, 2 }, { 1, 0, 2, 2, 1, 2 }, { 0, 1, 1, 2, 1, 1 },
+};
+_Static_assert(sizeof passes / sizeof passes[0] == RT_PROGRESSIVE_PASSES, "a row for each pass");
+#define TILE 8 /* the lattice's period: a viewport's edges lie on it */
+
+/* Flushes bytes `px` as `area` (the other buffer's flush done first):
+ * 0, or the sink's failure (then nothing is in flight). */
+static int flush_area(rt_fb_sink_t *sink, const rt_fb_area_t *area, const uint8_t *px)
+{
+    wait_flushed(sink);
+    sink->flushing = true;
+    int status = sink->flush(sink, area, px);
+    if (status != 0)
+        sink->flushing = false;
+    else if (!sink->band[1])
+        wait_flushed(sink);
+    return status;
+}
+
+/* The colour of frame pixel (x, y) as scanline order gives it, for a row
+ * walk at (x, y) (plain frames: the next sample of wk->row). */
+static RT_INLINE colour_t sample_colour(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y)
+{
+#if RT_USE_AA
+    if (ctx->spp)
+        return uniform_pixel(ctx, x, y);
+#endif
+    (void)x, (void)y;
+    struct rt_worker *wk = ctx->worker;
+    eye_sample(wk, wk->row.k, wk->row.m);
+    ray_t ray = camera_next(&wk->cam, &wk->row);
+    wk->scratch.stats.eye_rays++;
+    return trace_ray(&wk->tr, &ray, 1, R_ONE);
+}
+
+/* Frame pixel (x, y) traced (a row walk at it, for one sample a pixel)
+ * and packed into px: one copy for the rows and the columns. */
+static RT_NOINLINE void progressive_sample(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y, uint8_t px[4])
+{
+    put_pixel(px, 0, ctx->sink->format, sample_colour(ctx, x, y), dither_at(ctx, x, y));
+}
+
+/* Pixel bytes px (`bytes` of them) to pixels from .. to - 1 of a line:
+ * a 16-bit store a pixel where the pixel is two bytes and the line even
+ * (the panels' 565), else byte by byte. */
+static RT_INLINE void paint(uint8_t *line, const uint8_t *px, unsigned bytes, uint32_t from, uint32_t to)
+{
+    uint8_t *p = line + from * bytes, *end = line + to * bytes;
+    if (bytes == 2 && ((uintptr_t)line & 1u) == 0) {
+        uint16_t v;
+        __builtin_memcpy(&v, px, 2);
+        for (; p < end; p += 2)
+            __builtin_memcpy(__builtin_assume_aligned(p, 2), &v, 2);
+        return;
+    }
+    for (; p < end; p += bytes)
+        for (unsigned b = 0; b < bytes; b++)
+            p[b] = px[b];
+}
+
+/* n bytes from src to dst: a word at a time where both and n allow. */
+static RT_INLINE void copy_bytes(uint8_t *dst, const uint8_t *src, size_t n)
+{
+    if ((((uintptr_t)dst | (uintptr_t)src | n) & 3u) == 0) {
+        for (size_t i = 0; i < n; i += 4) {
+            uint32_t v;
+            __builtin_memcpy(&v, __builtin_assume_aligned(src + i, 4), 4);
+            __builtin_memcpy(__builtin_assume_aligned(dst + i, 4), &v, 4);
+        }
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        dst[i] = src[i];
+}
+
+/* A pass whose blocks touch along a row (passes 1, 3, 5, 7): one row of
+ * its samples, line ctx->y, each painted over its block (clipped to the
+ * viewport), the row of blocks one area of band lines, the same line
+ * repeated (flushed again for the lines below when the band holds fewer
+ * than the blocks' height). 0 or the sink's failure. */
+static int progressive_row(rt_render_ctx_t *ctx, const pass_t *ps)
+{
+    rt_fb_sink_t *sink = ctx->sink;
+    struct rt_worker *wk = ctx->worker;
+    uint32_t y = ctx->y, x_end = (uint32_t)ctx->x0 + ctx->w, x = (uint32_t)ctx->x0 + ps->ox;
+    uint32_t lines = ps->bh < ctx->y_end - y ? ps->bh : ctx->y_end - y;
+    unsigned bytes = rt_fb_bytes_per_pixel(PIXEL_FORMAT(sink->format));
+    uint8_t *buf = sink->band[ctx->cur], px[4];
+    if (!ctx->spp) {
+        camera_row(&wk->cam, (int32_t)x, (int32_t)y, &wk->row);
+        camera_stride(&wk->row, ps->sx);
+    }
+    for (; x < x_end; x += ps->sx) {
+        progressive_sample(ctx, x, y, px);
+        paint(buf, px, bytes, x - ctx->x0, (x + ps->bw < x_end ? x + ps->bw : x_end) - ctx->x0);
+    }
+    uint32_t n = lines < ctx->band_lines ? lines : (uint32_t)ctx->band_lines;
+    for (uint32_t k = 1; k < n; k++)
+        copy_bytes(buf + k * ctx->pitch, buf, (size_t)ctx->w * bytes);
+    int status = 0;
+    for (uint32_t k = 0; k < lines && status == 0; k += n) {
+        uint32_t last = k + n < lines ? y + k + n - 1 : y + lines - 1;
+        rt_fb_area_t area = { ctx->x0, (uint16_t)(y + k), (uint16_t)(x_end - 1), (uint16_t)last };
+        status = flush_area(sink, &area, buf);
+    }
+    if (sink->band[1])
+        ctx->cur ^= 1u;
+    return status;
+}
+
+/* A pass whose blocks touch down a column (passes 2, 4, 6: blocks as
+ * tall as the rows are apart): the column of blocks at ctx->x, traced top
+ * down, each painted over its block (clipped), flushed as areas the
+ * column's width and as many lines as a band buffer holds, packed
+ * tightly (one area for the column on the Pico's panel: 280 a frame for
+ * these passes' 25,200 blocks at 320x240). 0 or the sink's failure. */
+static int progressive_column(rt_render_ctx_t *ctx, const pass_t *ps)
+{
+    rt_fb_sink_t *sink = ctx->sink;
+    struct rt_worker *wk = ctx->worker;
+    uint32_t x = ctx->x, x_end = (uint32_t)ctx->x0 + ctx->w;
+    uint32_t w = x + ps->bw < x_end ? ps->bw : x_end - x;
+    unsigned bytes = rt_fb_bytes_per_pixel(PIXEL_FORMAT(sink->format));
+    size_t line = (size_t)w * bytes;
+    uint32_t fit = (uint32_t)(sink->band_bytes / line); /* >= 1: w is at most the viewport's width */
+    uint8_t px[4];
+    camera_column_t col;
+    if (!ctx->spp)
+        camera_column(&wk->cam, (int32_t)x, &col);
+    int status = 0;
+    for (uint32_t y = ctx->y; y < ctx->y_end && status == 0;) {
+        uint8_t *buf = sink->band[ctx->cur];
+        uint32_t first = y, n = ctx->y_end - y < fit ? ctx->y_end - y : fit;
+        for (uint32_t k = 0; k < n; k++, y++) {
+            if (((y - ctx->y) & (ps->sy - 1u)) == 0) { /* a sample's line: the block's first */
+                if (!ctx->spp)
+                    camera_column_row(&wk->cam, &col, (int32_t)y, &wk->row);
+                progressive_sample(ctx, x, y, px);
+            }
+            paint(buf + k * line, px, bytes, 0, w);
+        }
+        rt_fb_area_t area = { (uint16_t)x, (uint16_t)first, (uint16_t)(x + w - 1), (uint16_t)(y - 1) };
+        status = flush_area(sink, &area, buf);
+        if (sink->band[1])
+            ctx->cur ^= 1u;
+    }
+    return status;
+}
+
+/* The next step of a progressive render: row y of the pass under way
+ * (passes whose blocks touch along a row, from row to row) or its next
+ * column (the others: y stays at the pass's first row while columns are
+ * left); once the pass is done, the next pass (the sink told that the
+ * last is on the display); y_end once the last pass is done. */
+static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
+{
+    const pass_t *ps = &passes[ctx->pass - 1];
+    if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+        y = ctx->y_end; /* the last column is done */
+    while (y >= ctx->y_end) {
+        if (ctx->sink->pass_end) {
+            wait_flushed(ctx->sink);
+            ctx->sink->pass_end(ctx->sink, ctx->pass);
+        }
+        if (ctx->pass == ctx->last_pass)
+            break;
+        ps = &passes[ctx->pass++];
+        y = (uint32_t)ctx->y0 + ps->oy;
+        ctx->x = (uint16_t)(ctx->x0 + ps->ox);
+        if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+            y = ctx->y_end; /* no column in the viewport */
+    }
+    ctx->y = (uint16_t)(y < ctx->y_end ? y : ctx->y_end);
+}
+#endif
+
 /* Whether the options record or replay split decisions (RT_AA_REPLAY). */
 #if RT_AA_REPLAY
 #define SPLITS_ASKED(opts) ((opts)->aa_splits_mode != RT_AA_SPLITS_OFF)
@@ -493,7 +685,35 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA)");
         return -1;
     }
-#if RT_USE_AA
+    ctx->pass = ctx->last_pass = 0;
+    if (opts->progressive) {
+#if RT_USE_PROGRESSIVE
+        const char *why = 0;
+        bool all = opts->progressive == RT_PROGRESSIVE_ALL;
+        if (!all && opts->progressive > RT_PROGRESSIVE_PASSES)
+            why = "progressive: a pass from 1 to 7, or RT_PROGRESSIVE_ALL";
+        else if (opts->spd || opts->aa_levels)
+            why = "progressive display needs one sample a pixel or uniform anti-aliasing (spp), not SPD mode or "
+                  "adaptive anti-aliasing (aa_levels 0)";
+        else if (rt_fb_bits(PIXEL_FORMAT(sink->format)) % 8u)
+            why = "progressive display needs whole bytes a pixel (not l4)";
+        else if (vp.x % TILE || vp.y % TILE || ((vp.x + vp.w) % TILE && vp.x + vp.w != w) ||
+                 ((vp.y + vp.h) % TILE && vp.y + vp.h != h))
+            why = "progressive display needs a viewport on the 8-pixel grid (each edge a multiple of 8 or the frame's)";
+        if (why) {
+            rt_error_set(err, 0, why);
+            return -1;
+        }
+        ctx->pass = all ? 1 : opts->progressive;
+        ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
+#else
+        rt_error_set(err, 0, "progressive display not compiled in (RT_USE_PROGRESSIVE)");
+        return -1;
+#endif
+    }
+#if !RT_USE_AA
+    ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
+#else
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
     if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
@@ -602,7 +822,15 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->w = vp.w;
     ctx->y = ctx->band_y = vp.y;
     ctx->y_end = (uint16_t)(vp.y + vp.h);
+    ctx->y0 = vp.y;
     ctx->cur = 0;
+#if RT_USE_PROGRESSIVE
+    if (ctx->pass) {
+        ctx->x = (uint16_t)(vp.x + passes[ctx->pass - 1].ox);
+        progressive_next(ctx, (uint32_t)vp.y + passes[ctx->pass - 1].oy);
+        return 0;
+    }
+#endif
 #if RT_USE_SPD
     if (opts->spd)
         corner_row(wk, vp.y, vp.x, vp.w, ctx->rows[0]);
@@ -631,6 +859,20 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 {
     rt_fb_sink_t *sink = ctx->sink;
     int status = 0;
+#if RT_USE_PROGRESSIVE
+    for (; ctx->pass && lines > 0 && ctx->y < ctx->y_end; lines--) {
+        const pass_t *ps = &passes[ctx->pass - 1];
+        bool rows = ps->bw == ps->sx;
+        status = rows ? progressive_row(ctx, ps) : progressive_column(ctx, ps);
+        if (status != 0) {
+            ctx->y = ctx->y_end; /* done: nothing more to render */
+            break;
+        }
+        if (!rows)
+            ctx->x = (uint16_t)(ctx->x + ps->sx);
+        progressive_next(ctx, rows ? (uint32_t)ctx->y + ps->sy : ctx->y);
+    }
+#endif
     for (; lines > 0 && ctx->y < ctx->y_end; lines--) {
         uint16_t y = ctx->y++;
         uint8_t *line = sink->band[ctx->cur] + (size_t)(y - ctx->band_y) * ctx->pitch;
