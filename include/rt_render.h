@@ -120,6 +120,11 @@ typedef struct {
 
 #define RT_PROGRESSIVE_PASSES 7
 #define RT_PROGRESSIVE_ALL 0xFF
+/* Whether pass p's blocks stack down columns (2, 4, 6: each block as tall
+ * as its samples are apart), which render.c walks and flushes a column at
+ * a time; the others' blocks touch along rows. Several cores share such a
+ * pass best as strips of columns, the others as bands of lines. */
+#define RT_PROGRESSIVE_BY_COLUMNS(p) ((p) % 2u == 0u)
 
 /* A pixel's split decisions (opts.aa_splits): two bits for each square
  * that may split, at level l < levels (the pixel is level 0, 2^l squares

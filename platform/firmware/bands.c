@@ -66,7 +66,7 @@ typedef struct {
 } slot_t;
 
 static slot_t slots[BOARD_CORES][SLOTS];
-static uint8_t slot_px[BOARD_CORES][SLOTS][BAND_BYTES];
+static uint8_t slot_px[BOARD_CORES][SLOTS][BAND_BYTES] __attribute__((aligned(4))); /* (word copies: progressive rows) */
 static rt_fb_sink_t core_sink[BOARD_CORES];
 static rt_error_t core_err[BOARD_CORES];
 
@@ -86,6 +86,7 @@ static struct {
     volatile uint32_t blocked[BOARD_CORES]; /* waiting for a free buffer */
     volatile uint32_t alive, go, spin;    /* start-up hand-shake */
     volatile int status;                  /* first failure, any core */
+    volatile uint32_t passes_shown;       /* progressive display: passes on the panel */
 } fr;
 
 /* What the cores change only through port_atomic_add (a spinlock's on
@@ -95,6 +96,7 @@ static struct {
 __attribute__((section(".bss.spinlocked"))) static struct {
     volatile uint32_t next_band; /* BOARD_BAND_SPLIT 1 */
     volatile uint32_t ticket;    /* the hand-over's lock: tickets taken */
+    volatile uint32_t bands_done; /* progressive display: bands rendered, all passes */
 } taken;
 
 static uint64_t others_busy(unsigned c)
@@ -171,25 +173,46 @@ static slot_t *ready_slot(uint32_t band, unsigned *core, unsigned *k)
     return 0;
 }
 
-/* Hands every ready band, in frame order, to the sink. */
-static void hand_over(unsigned c)
+/* The sink, one core at a time: a ticket lock (first come, first served). */
+static void sink_lock(void)
 {
-    segment_t seg = segment_start(c);
     uint32_t me = port_atomic_add(&taken.ticket, 1);
     while (fr.serving != me)
         port_wait_event();
     __atomic_thread_fence(__ATOMIC_SEQ_CST); /* what the last holder wrote, seen */
+}
+
+static void sink_unlock(void)
+{
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    fr.serving = fr.serving + 1; /* (only the holder writes it) */
+    port_signal_event();
+}
+
+/* An area to the display sink, the lock held; returns once it is out
+ * (the other core then finds the sink idle): 0 or the sink's failure. */
+static int send(const rt_fb_area_t *area, const uint8_t *px)
+{
+    fr.out->flushing = true;
+    int st = fr.out->flush(fr.out, area, px);
+    while (st == 0 && fr.out->flushing)
+        if (fr.out->wait)
+            fr.out->wait(fr.out);
+    return st;
+}
+
+/* Hands every ready band, in frame order, to the sink. */
+static void hand_over(unsigned c)
+{
+    segment_t seg = segment_start(c);
+    sink_lock();
     unsigned oc, k;
     slot_t *s;
     while (fr.status == 0 && (s = ready_slot(fr.next_emit, &oc, &k)) != 0) {
         uint16_t y = (uint16_t)(fr.next_emit * BOARD_BAND_LINES);
         uint16_t y2 = (uint16_t)(y + BOARD_BAND_LINES - 1 < BOARD_HEIGHT ? y + BOARD_BAND_LINES - 1 : BOARD_HEIGHT - 1);
         rt_fb_area_t area = { 0, y, BOARD_WIDTH - 1, y2 };
-        fr.out->flushing = true;
-        int st = fr.out->flush(fr.out, &area, slot_px[oc][k]);
-        while (st == 0 && fr.out->flushing)
-            if (fr.out->wait)
-                fr.out->wait(fr.out);
+        int st = send(&area, slot_px[oc][k]);
         if (st != 0)
             fr.status = st;
         uint64_t at = s->ready_at > fr.last_emitted_at ? s->ready_at : fr.last_emitted_at;
@@ -198,9 +221,7 @@ static void hand_over(unsigned c)
         __atomic_thread_fence(__ATOMIC_SEQ_CST); /* the pixels are out before the buffer is free */
         s->state = SLOT_FREE;
     }
-    __atomic_thread_fence(__ATOMIC_SEQ_CST);
-    fr.serving = me + 1;
-    port_signal_event();
+    sink_unlock();
     (void)segment_end(c, seg); /* counted as busy (so the others' counts stay exact), not as render */
 }
 
@@ -270,6 +291,100 @@ static void render_bands(unsigned c)
     port_signal_event();
 }
 
+#if BOARD_PROGRESSIVE
+/*
+ * Progressive display (rt_render.h) on every core. The panel keeps its
+ * own frame, so areas need not reach it in frame order: each pass is cut
+ * into pieces that no block crosses, bands of PASS_CUT lines where its
+ * blocks touch along rows, strips of PASS_CUT columns where they stack
+ * down columns (RT_PROGRESSIVE_BY_COLUMNS: each column one area, as on one
+ * core). The cores take the pieces from the shared counter, and each core
+ * sends its piece's areas straight to the sink, under the lock, from a
+ * band buffer of its own. A pass's pieces start only once the pass before
+ * is on the panel (the core that finishes a pass's last piece tells the
+ * sink: pass_end), so the panel after each pass is the one a single core
+ * shows. The cost: each core waits for its own transfers, and at the end
+ * of each pass for the other's last piece.
+ */
+#define PASS_CUT 8 /* the lattice's tile */
+
+/* Pieces of pass p. */
+static uint32_t pass_pieces(uint32_t p)
+{
+    return RT_PROGRESSIVE_BY_COLUMNS(p) ? (BOARD_WIDTH + PASS_CUT - 1) / PASS_CUT
+                                        : (BOARD_HEIGHT + PASS_CUT - 1) / PASS_CUT;
+}
+
+/* The core's sink: each area out at once, under the lock. */
+static int pass_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
+{
+    sink_lock();
+    int st = send(a, px);
+    sink_unlock();
+    rt_fb_flush_ready(s);
+    return st;
+}
+
+static void render_passes(unsigned c)
+{
+    bands_core_t *me = &fr.rep->core[c];
+    for (;;) {
+        segment_t seg = segment_start(c);
+        uint32_t piece = port_atomic_add(&taken.next_band, 1), pass = 1, before = 0; /* pieces of earlier passes */
+        while (pass <= RT_PROGRESSIVE_PASSES && piece - before >= pass_pieces(pass))
+            before += pass_pieces(pass++);
+        while (pass <= RT_PROGRESSIVE_PASSES && fr.passes_shown + 1 < pass && fr.status == 0)
+            port_wait_event();
+        me->wait += segment_end(c, seg);
+        if (pass > RT_PROGRESSIVE_PASSES || fr.status != 0)
+            break;
+        rt_render_opts_t o = *fr.opts;
+        uint16_t at = (uint16_t)((piece - before) * PASS_CUT);
+        if (RT_PROGRESSIVE_BY_COLUMNS(pass))
+            o.viewport = (rt_viewport_t){ at, 0, (uint16_t)(BOARD_WIDTH - at < PASS_CUT ? BOARD_WIDTH - at : PASS_CUT),
+                                          BOARD_HEIGHT };
+        else
+            o.viewport = (rt_viewport_t){ 0, at, BOARD_WIDTH,
+                                          (uint16_t)(BOARD_HEIGHT - at < PASS_CUT ? BOARD_HEIGHT - at : PASS_CUT) };
+        o.progressive = (uint8_t)pass;
+        o.worker = (uint8_t)c;
+        seg = segment_start(c);
+        int st = rt_render(fr.sc, &o, &core_sink[c], &me->stats, &core_err[c]);
+        me->render += segment_end(c, seg); /* (its transfers included) */
+        if (st != 0) {
+            fr.status = st;
+            break;
+        }
+        me->bands++;
+        if (port_atomic_add(&taken.bands_done, 1) + 1 == before + pass_pieces(pass)) { /* the pass's last piece */
+            seg = segment_start(c);
+            if (fr.out->pass_end) {
+                sink_lock();
+                fr.out->pass_end(fr.out, pass);
+                sink_unlock();
+            }
+            fr.passes_shown = pass;
+            me->wait += segment_end(c, seg);
+        }
+    }
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    fr.done[c] = 1;
+    port_signal_event(); /* (also wakes a core waiting for a pass after a failure) */
+}
+#endif
+
+/* Core c's share of the frame. */
+static void render_share(unsigned c)
+{
+#if BOARD_PROGRESSIVE
+    if (fr.opts->progressive) {
+        render_passes(c);
+        return;
+    }
+#endif
+    render_bands(c);
+}
+
 /* Core 1 starts here, on its own stack. */
 static void core1_entry(void)
 {
@@ -280,7 +395,7 @@ static void core1_entry(void)
         fr.spin++;
         port_wait_event();
     }
-    render_bands(1);
+    render_share(1);
     /* returns: the port parks core 1 (port.h) */
 }
 
@@ -313,6 +428,12 @@ int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_
     fr.n_bands = (uint32_t)(h + BOARD_BAND_LINES - 1) / BOARD_BAND_LINES;
     for (unsigned c = 0; c < BOARD_CORES; c++) {
         core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .dither = sink->dither, .band_bytes = BAND_BYTES, .flush = slot_flush };
+#if BOARD_PROGRESSIVE
+        if (opts->progressive) { /* each core's first band buffer, its areas sent at once */
+            core_sink[c].flush = pass_flush;
+            core_sink[c].band[0] = slot_px[c][0];
+        }
+#endif
     }
     int st = sink->begin ? sink->begin(sink, opts->width, h) : 0;
     if (st != 0)
@@ -324,7 +445,7 @@ int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_
     __atomic_thread_fence(__ATOMIC_SEQ_CST);
     fr.go = 1;
     port_signal_event();
-    render_bands(0);
+    render_share(0);
     for (unsigned c = 1; c < BOARD_CORES; c++)
         while (!fr.done[c])
             port_wait_event();

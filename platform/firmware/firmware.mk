@@ -180,11 +180,11 @@ sampling_word = $(or $(if $(filter-out 0,$(1)),aa$(1)$(if $(filter-out 0,$(2)),_
 # PROGRESSIVE=1: the frame in the core's interlaced passes (progressive
 # display, docs/hal.md; rt --progressive), the whole picture on the panel
 # after 1/64 of the rays; the default on a board whose sink is a panel
-# (BOARD_PROGRESSIVE), rendering on one core with one sample a pixel or
-# SPP. 0: scanline order, and the firmware links none of it
+# (BOARD_PROGRESSIVE), with one sample a pixel or SPP, on one core or
+# several (platform/firmware/bands.c). 0: scanline order, and the firmware links none of it
 # (RT_USE_PROGRESSIVE=0). A stream sink sends whole lines top down.
 ifeq ($(origin PROGRESSIVE),undefined)
-PROGRESSIVE := $(if $(filter 1,$(BOARD_PROGRESSIVE)),$(if $(filter 1,$(CORES)),$(if $(filter-out 0,$(AA_LEVELS)),0,1),0),0)
+PROGRESSIVE := $(if $(filter 1,$(BOARD_PROGRESSIVE)),$(if $(filter-out 0,$(AA_LEVELS)),0,1),0)
 endif
 ifeq ($(filter 0 1,$(PROGRESSIVE)),)
 $(error PROGRESSIVE=$(PROGRESSIVE): 0 (scanline order) or 1 (interlaced passes))
@@ -192,9 +192,6 @@ endif
 ifeq ($(PROGRESSIVE),1)
 ifneq ($(BOARD_PROGRESSIVE),1)
 $(error PROGRESSIVE=1: BOARD=$(BOARD)'s sink is not a panel that keeps its frame (BOARD_PROGRESSIVE): it gets scanline order)
-endif
-ifneq ($(CORES),1)
-$(error PROGRESSIVE=1 renders on one core (CORES=1))
 endif
 ifneq ($(filter-out 0,$(AA_LEVELS)),)
 $(error PROGRESSIVE=1 needs one sample a pixel or SPP=N: adaptive anti-aliasing (AA=$(AA)) shares corners between pixels)

@@ -440,6 +440,8 @@ static const pass_t passes[] = {
     { 0, 2, 2, 4, 2, 2 }, { 1, 0, 2, 2, 1, 2 }, { 0, 1, 1, 2, 1, 1 },
 };
 _Static_assert(sizeof passes / sizeof passes[0] == RT_PROGRESSIVE_PASSES, "a row for each pass");
+/* (RT_PROGRESSIVE_BY_COLUMNS, rt_render.h, names the passes whose blocks
+ * are narrower than their samples are apart: bw < sx above) */
 #define TILE 8 /* the lattice's period: a viewport's edges lie on it */
 
 /* Flushes bytes `px` as `area` (the other buffer's flush done first):
@@ -593,8 +595,8 @@ static int progressive_column(rt_render_ctx_t *ctx, const pass_t *ps)
  * last is on the display); y_end once the last pass is done. */
 static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 {
-    const pass_t *ps = &passes[ctx->pass - 1];
-    if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+    const pass_t *ps;
+    if (RT_PROGRESSIVE_BY_COLUMNS(ctx->pass) && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
         y = ctx->y_end; /* the last column is done */
     while (y >= ctx->y_end) {
         if (ctx->sink->pass_end) {
@@ -606,7 +608,7 @@ static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
         ps = &passes[ctx->pass++];
         y = (uint32_t)ctx->y0 + ps->oy;
         ctx->x = (uint16_t)(ctx->x0 + ps->ox);
-        if (ps->bw < ps->sx && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
+        if (RT_PROGRESSIVE_BY_COLUMNS(ctx->pass) && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
             y = ctx->y_end; /* no column in the viewport */
     }
     ctx->y = (uint16_t)(y < ctx->y_end ? y : ctx->y_end);
@@ -862,7 +864,7 @@ static RT_INLINE int render_step(rt_render_ctx_t *ctx, uint16_t lines)
 #if RT_USE_PROGRESSIVE
     for (; ctx->pass && lines > 0 && ctx->y < ctx->y_end; lines--) {
         const pass_t *ps = &passes[ctx->pass - 1];
-        bool rows = ps->bw == ps->sx;
+        bool rows = !RT_PROGRESSIVE_BY_COLUMNS(ctx->pass);
         status = rows ? progressive_row(ctx, ps) : progressive_column(ctx, ps);
         if (status != 0) {
             ctx->y = ctx->y_end; /* done: nothing more to render */
