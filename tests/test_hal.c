@@ -12,7 +12,9 @@
  *  - progressive display (whole frame and viewports on the 8-pixel grid,
  *    bands shorter than a block, one and two buffers, padded pitch, one
  *    call or a row a step) gives the scanline frame's pixels and ends
- *    passes 1..7 in order, each with its flushes done;
+ *    passes 1..7 in order, each with its flushes done; each pass alone in
+ *    two bands of lines (as two cores share one) builds the same frame;
+ *    seven bad progressive option sets refused before any flush;
  *  - all of it in SPD mode and with adaptive and uniform anti-aliasing
  *    too, and anti-aliasing's bad options refused before any flush;
  *  - adaptive anti-aliasing's split decisions (opts.aa_splits, the host's
@@ -52,7 +54,7 @@ typedef struct {
     int flushes, ends, fail_at;
     bool bad_area;
     uint16_t vp_w;      /* progressive: areas narrower than this are packed tightly */
-    uint8_t passes[8];  /* progressive: pass_end's passes, in order */
+    uint8_t passes[16]; /* progressive: pass_end's passes, in order */
     int n_passes;
     uint8_t band_a[(W * 3 + 16) * 5], band_b[(W * 3 + 16) * 5];
 } test_sink_t;
@@ -243,6 +245,48 @@ int main(void)
                         }
             CHECK(ok == total, "%s: progressive: %d of %d renders (one sample and SPP 3, 3 viewports, 3 band "
                   "shapes, one call and stepped) give the scanline frame's pixels and end passes 1..7", bn, ok, total);
+            /* each pass alone, in two bands of lines on the grid (as two
+             * cores share a pass), passes 1..7 one after the other into
+             * one sink: the whole frame's pixels */
+            {
+                const rt_viewport_t halves[2] = { { 0, 0, W, 16 }, { 0, 16, W, H - 16 } };
+                sink_init(&got, 0, 2, true);
+                got.vp_w = W;
+                got.sink.pass_end = t_pass_end;
+                rc = 0;
+                for (uint8_t p = 1; p <= RT_PROGRESSIVE_PASSES && rc == 0; p++)
+                    for (int k = 0; k < 2 && rc == 0; k++) {
+                        rt_render_opts_t o = opts[0];
+                        o.viewport = halves[k];
+                        o.progressive = p;
+                        rc = be->render(&o, &got.sink, &st, &err);
+                    }
+                static const uint8_t twice[] = { 1, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 7 };
+                CHECK(rc == 0 && !got.bad_area && got.n_passes == 14 && memcmp(got.passes, twice, 14) == 0 &&
+                          memcmp(got.img, ref[0].img, sizeof got.img) == 0,
+                      "%s: progressive, each pass alone in two bands of lines: the whole frame (status %d %s)", bn, rc,
+                      rc < 0 ? err.msg : "");
+            }
+            /* refused before any flush: no such pass, SPD mode, adaptive
+             * anti-aliasing, a viewport off the grid (x, y, right, bottom) */
+            {
+                rt_render_opts_t bad[7] = { opts[0], opts[1], opts[2], opts[0], opts[0], opts[0], opts[0] };
+                bad[0].progressive = RT_PROGRESSIVE_PASSES + 1;
+                for (int k = 1; k < 7; k++)
+                    bad[k].progressive = RT_PROGRESSIVE_ALL;
+                bad[3].viewport = (rt_viewport_t){ 4, 0, 8, 8 };
+                bad[4].viewport = (rt_viewport_t){ 0, 4, 8, 8 };
+                bad[5].viewport = (rt_viewport_t){ 0, 0, 12, 8 };
+                bad[6].viewport = (rt_viewport_t){ 0, 0, 8, 12 };
+                int refused = 0;
+                for (int k = 0; k < 7; k++) {
+                    sink_init(&got, 0, 4, true);
+                    rc = be->render(&bad[k], &got.sink, &st, &err);
+                    refused += rc == -1 && got.flushes == 0 && strstr(err.msg, "progress") != NULL;
+                }
+                CHECK(refused == 7, "%s: %d of 7 bad progressive options refused before any flush (last: '%s')", bn,
+                      refused, err.msg);
+            }
             rt_render_opts_t o = opts[0];
             o.progressive = RT_PROGRESSIVE_ALL;
             sink_init(&got, 0, 4, true);

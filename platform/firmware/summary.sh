@@ -51,6 +51,10 @@ time_lines() {
         time=$(awk -v c="$cycles" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", c / hz }')
         printf '  %-15s %s at %s MHz, counted by %s;\n' "on the board" "$time" "$mhz" "$counter"
         printf '  %-15s %s instructions a pixel.\n' "" "$ipp"
+        first=$(value first_picture_cycles)
+        [ -z "$first" ] || printf '  %-15s %s ms after the render starts, panel bytes included: progressive\n  %-15s display, pass 1 of 7 (its frame: %s s).\n' \
+            "first picture" "$(awk -v c="$first" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.1f", c / hz * 1000 }')" "" \
+            "$(awk -v c="$(value frame_cycles)" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g", c / hz }')"
     elif grep -q 'instead of -icount' "$report"; then
         printf '  %-15s no time: the instruction counts are host time (QEMU_ACCEL), not instructions.\n' "on the board"
     elif [ -n "$instr" ]; then
@@ -104,4 +108,4 @@ echo "(PSNR: 10 log10(1 / mean squared error); above about 40 dB a difference is
 sed -n 's/^\([^ ]*\) wall time on the host (\(.*\)): \(.*\)$/\1 ran it in \3 on this machine (\2)./p' "$report"
 echo
 echo "The board's report (each counter is described under rt --stats in docs/cli.md):"
-grep -v '^progress_rows\|^board render time\|wall time on the host' "$report" | sed 's/^/  /'
+grep -v '^progress_rows\|^progress_pass\|^board render time\|wall time on the host' "$report" | sed 's/^/  /'
