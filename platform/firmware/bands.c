@@ -87,6 +87,7 @@ static struct {
     volatile uint32_t alive, go, spin;    /* start-up hand-shake */
     volatile int status;                  /* first failure, any core */
     volatile uint32_t passes_shown;       /* progressive display: passes on the panel */
+    volatile int sending;                 /* ... whose area the sink sends (-1: none; under the lock) */
 } fr;
 
 /* What the cores change only through port_atomic_add (a spinlock's on
@@ -315,14 +316,41 @@ static uint32_t pass_pieces(uint32_t p)
                                         : (BOARD_HEIGHT + PASS_CUT - 1) / PASS_CUT;
 }
 
-/* The core's sink: each area out at once, under the lock. */
+/* Under the lock: the sink idle, and the core whose transfer it was told
+ * (its band buffer free again). */
+static void sink_idle(void)
+{
+    while (fr.out->flushing)
+        if (fr.out->wait)
+            fr.out->wait(fr.out);
+    if (fr.sending >= 0) {
+        rt_fb_flush_ready(&core_sink[fr.sending]);
+        fr.sending = -1;
+    }
+}
+
+/* The core's sink: each area started at once, under the lock, once the
+ * sink is idle; the transfer runs on while the core renders into its other
+ * band buffer (the core's wait, or the next core to send, sees it end). */
 static int pass_flush(rt_fb_sink_t *s, const rt_fb_area_t *a, const uint8_t *px)
 {
     sink_lock();
-    int st = send(a, px);
+    sink_idle();
+    fr.out->flushing = true;
+    int st = fr.out->flush(fr.out, a, px);
+    if (st == 0)
+        fr.sending = (int)(s - core_sink);
     sink_unlock();
-    rt_fb_flush_ready(s);
-    return st;
+    return st; /* (on a failure the core stops: its buffer's state no longer matters) */
+}
+
+/* The core's wait for its transfer: under the lock, the sink idle. */
+static void pass_wait(rt_fb_sink_t *s)
+{
+    (void)s;
+    sink_lock();
+    sink_idle();
+    sink_unlock();
 }
 
 static void render_passes(unsigned c)
@@ -360,6 +388,7 @@ static void render_passes(unsigned c)
             seg = segment_start(c);
             if (fr.out->pass_end) {
                 sink_lock();
+                sink_idle(); /* (every piece's render waited for its own last transfer) */
                 fr.out->pass_end(fr.out, pass);
                 sink_unlock();
             }
@@ -426,12 +455,15 @@ int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_
     fr.out = sink;
     fr.rep = rep;
     fr.n_bands = (uint32_t)(h + BOARD_BAND_LINES - 1) / BOARD_BAND_LINES;
+    fr.sending = -1;
     for (unsigned c = 0; c < BOARD_CORES; c++) {
         core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .dither = sink->dither, .band_bytes = BAND_BYTES, .flush = slot_flush };
 #if BOARD_PROGRESSIVE
-        if (opts->progressive) { /* each core's first band buffer, its areas sent at once */
+        if (opts->progressive) { /* each core's two band buffers, its areas sent at once */
             core_sink[c].flush = pass_flush;
+            core_sink[c].wait = pass_wait;
             core_sink[c].band[0] = slot_px[c][0];
+            core_sink[c].band[1] = slot_px[c][1];
         }
 #endif
     }
