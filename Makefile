@@ -330,7 +330,7 @@ bench: deps
 	@echo
 	@sh bench/keep.sh bench/pico-xip.md "The Pico's flash reads in the render, through a model of the XIP cache" sh bench/pico-xip.sh
 	@echo
-	@sh bench/keep.sh bench/progressive.md "Progressive display on the Pico: the card at 320x240, passes against scanline order" sh bench/progressive.sh
+	@sh bench/keep.sh bench/pico-frames.md "The Pico's frame at 320x240 on one core and two, scanline order and progressive display" sh bench/pico-frames.sh
 	@echo
 	python3 bench/boards_bench.py
 	@echo

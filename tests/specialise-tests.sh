@@ -84,7 +84,7 @@ pair card-m3-fixed instructions_per_pixel 0.85 1630 BOARD=mps2-an385 BACKEND=fix
 pair showpiece-m3-fixed-aa3 instructions_per_pixel 1 128000 BOARD=mps2-an385 SCENE=scenes/showpiece.nff SIZE=24x24
 pair picolib-m3-fixed instructions_per_pixel 1 2400 BOARD=mps2-an385 SCENE=scenes/bench/picolib.nff SIZE=40x30 DEPTH=6 AA=0
 # (scanline order: the budget is the render's; progressive display, the
-# panel's default, adds its passes' walk: bench/progressive.md)
+# panel's default, adds its passes' walk: bench/pico-frames.md)
 pair card-pico-fixed render_cycles 1 2780000 BOARD=pico CORES=1 SCENE=scenes/bench/card.nff SIZE=24x18 DEPTH=3 PROGRESSIVE=0
 
 if msg=$(make -s firmware SPECIALISE=2 2>&1); then
