@@ -131,7 +131,7 @@ pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be "PICO_DIVIDER=0 SP
 # both its critical path (the later core's render plus its waits, output
 # left out) and its time on core 0 (render_cycles). rp2040js steps the two
 # cores by their cycles, so the figures repeat exactly.
-CORES_SIZE=40x96 CORES_BANDS=24 CORES_SHARE=0.55
+CORES_SIZE=80x48 CORES_BANDS=12 CORES_SHARE=0.55
 pico_case card-cores2 scenes/bench/card.nff $CORES_SIZE 3 rgb565be
 pico_case card-cores1 scenes/bench/card.nff $CORES_SIZE 3 rgb565be CORES=1
 r2=$OUT/card-cores2.report r1=$OUT/card-cores1.report
