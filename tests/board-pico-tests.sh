@@ -240,6 +240,12 @@ if core1_image pass >"$OUT/core1/pass.build" 2>&1 &&
         got=$(val "${kv%=*}" "$OUT/core1/pass.report")
         [ "$got" = "${kv#*=}" ] || bad "core 1 model: ${kv%=*} is ${got:-missing}, expected ${kv#*=}"
     done
+    # each core's marks counted apart: 100 additions under a lock, at
+    # least 5 instructions each
+    for k in render_instructions core1_render_instructions; do
+        [ "$(val $k "$OUT/core1/pass.report")" -ge 500 ] 2>/dev/null ||
+            bad "core 1 model: $k is $(val $k "$OUT/core1/pass.report"), expected at least 500 (each core's marks counted apart)"
+    done
     c1=$(val core1_instructions "$OUT/core1/pass.report")
     [ "${c1:-0}" -gt 50 ] && grep -q '^core 1 at the end: sleeping (WFI)' "$OUT/core1/pass.report" &&
         ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE (not WFI), SIO_IRQ_PROC1 waking WFI, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
