@@ -292,15 +292,21 @@ if core1_image pass >"$OUT/core1/pass.build" 2>&1 &&
    node platform/pico/run.mjs "$OUT/core1/pass.elf" "$OUT/core1/pass.png" "$RT" >"$OUT/core1/pass.report" 2>&1; then
     # each value as the datasheet gives it (the list in tests/pico_core1.c)
     for kv in stale_vld=1 stale_word=0 launched=1 cpuid0=0 cpuid1=1 roe_at_entry=10 div0=333 div1=142857 locked_count=200 \
-              sev_woke=1 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
+              sev_woke=1 wfi_after_sev=0 wfi_irq_word=77 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
               fifo_full_st=4 fifo_cleared_st=0 fifo_empty_read=0 fifo_roe_st=8 irq15_roe=1 irq15_clear=0 \
               reset_stale=0 reset_more=0 relaunched=1 tie_core0=128 tie_core1=0 core1_launches=2 exit_status=0; do
         got=$(val "${kv%=*}" "$OUT/core1/pass.report")
         [ "$got" = "${kv#*=}" ] || bad "core 1 model: ${kv%=*} is ${got:-missing}, expected ${kv#*=}"
     done
+    # each core's marks counted apart: 100 additions under a lock, at
+    # least 5 instructions each
+    for k in render_instructions core1_render_instructions; do
+        [ "$(val $k "$OUT/core1/pass.report")" -ge 500 ] 2>/dev/null ||
+            bad "core 1 model: $k is $(val $k "$OUT/core1/pass.report"), expected at least 500 (each core's marks counted apart)"
+    done
     c1=$(val core1_instructions "$OUT/core1/pass.report")
     [ "${c1:-0}" -gt 50 ] && grep -q '^core 1 at the end: sleeping (WFI)' "$OUT/core1/pass.report" &&
-        ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
+        ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE (not WFI), SIO_IRQ_PROC1 waking WFI, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
         bad "core 1 model: core 1 ran ${c1:-no} instructions: $(grep '^core 1 at the end' "$OUT/core1/pass.report")"
 else
     bad "core 1 model: the image did not build or run: $(tail -3 "$OUT/core1/pass.build" "$OUT/core1/pass.report")"
