@@ -22,7 +22,7 @@
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - both cores (the default; platform/firmware/bands.c) give the panel
 #    bytes core 0 alone gives (CORES=1), the report has each core's
-#    cycles and bands, the two-core frame's critical path and its time on
+#    cycles and bands (and the runner each core's instructions), the two-core frame's critical path and its time on
 #    core 0 are at most 0.55 of one core's cycles, and each core's stack
 #    sits in its own 4 KiB SRAM bank;
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
@@ -143,11 +143,13 @@ else
     bad "two cores: the panel differs from one core's ($p2, $p1)"
 fi
 c0=$(val core0_render_cycles "$r2") c1=$(val core1_render_cycles "$r2") b0=$(val core0_bands "$r2") b1=$(val core1_bands "$r2")
+i0=$(val render_instructions "$r2") i1=$(val core1_render_instructions "$r2")
 if [ "$(val cores "$r2")" = 2 ] && [ "$(val cores_one_at_a_time "$r2")" = 0 ] && [ "${c0:-0}" -gt 0 ] && [ "${c1:-0}" -gt 0 ] &&
-   [ "${b0:-0}" -gt 0 ] && [ "${b1:-0}" -gt 0 ] && [ $((b0 + b1)) = $CORES_BANDS ] && [ -z "$(val cores "$r1")" ]; then
-    ok "two cores: core 0 rendered $b0 bands in $c0 cycles, core 1 $b1 in $c1 (SysTick, each core's own)"
+   [ "${b0:-0}" -gt 0 ] && [ "${b1:-0}" -gt 0 ] && [ $((b0 + b1)) = $CORES_BANDS ] && [ -z "$(val cores "$r1")" ] &&
+   [ "${i0:-0}" -gt 0 ] && [ "${i1:-0}" -gt 0 ]; then
+    ok "two cores: core 0 rendered $b0 bands in $c0 cycles, core 1 $b1 in $c1 (SysTick, each core's own); the runner counted $i0 and $i1 instructions"
 else
-    bad "two cores: report cores $(val cores "$r2"), cycles ${c0:-?} and ${c1:-?}, bands ${b0:-?} + ${b1:-?} of $CORES_BANDS"
+    bad "two cores: report cores $(val cores "$r2"), cycles ${c0:-?} and ${c1:-?}, bands ${b0:-?} + ${b1:-?} of $CORES_BANDS, instructions ${i0:-?} and ${i1:-?}"
 fi
 one=$(val render_cycles "$r1") cp=$(val critical_path_cycles "$r2") frame=$(val render_cycles "$r2")
 if share=$(awk -v one="$one" -v cp="$cp" -v f="$frame" -v max=$CORES_SHARE 'BEGIN {
