@@ -27,7 +27,7 @@
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - both cores (the default; platform/firmware/bands.c) give the panel
 #    bytes core 0 alone gives (CORES=1), the report has each core's
-#    cycles and bands, the two-core frame's critical path and its time on
+#    cycles and bands (and the runner each core's instructions), the two-core frame's critical path and its time on
 #    core 0 are at most 0.55 of one core's cycles, and each core's stack
 #    sits in its own 4 KiB SRAM bank;
 #  - the SIO divider (PICO_DIVIDER=1, the default) and libgcc's division
@@ -142,7 +142,7 @@ pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be "PICO_DIVIDER=0 SP
 # both its critical path (the later core's render plus its waits, output
 # left out) and its time on core 0 (render_cycles). rp2040js steps the two
 # cores by their cycles, so the figures repeat exactly.
-CORES_SIZE=40x96 CORES_BANDS=24 CORES_SHARE=0.55
+CORES_SIZE=80x48 CORES_BANDS=12 CORES_SHARE=0.55
 pico_case card-cores2 scenes/bench/card.nff $CORES_SIZE 3 rgb565be PROGRESSIVE=0
 pico_case card-cores1 scenes/bench/card.nff $CORES_SIZE 3 rgb565be "CORES=1 PROGRESSIVE=0"
 r2=$OUT/card-cores2.report r1=$OUT/card-cores1.report
@@ -154,11 +154,13 @@ else
     bad "two cores: the panel differs from one core's ($p2, $p1)"
 fi
 c0=$(val core0_render_cycles "$r2") c1=$(val core1_render_cycles "$r2") b0=$(val core0_bands "$r2") b1=$(val core1_bands "$r2")
+i0=$(val render_instructions "$r2") i1=$(val core1_render_instructions "$r2")
 if [ "$(val cores "$r2")" = 2 ] && [ "$(val cores_one_at_a_time "$r2")" = 0 ] && [ "${c0:-0}" -gt 0 ] && [ "${c1:-0}" -gt 0 ] &&
-   [ "${b0:-0}" -gt 0 ] && [ "${b1:-0}" -gt 0 ] && [ $((b0 + b1)) = $CORES_BANDS ] && [ -z "$(val cores "$r1")" ]; then
-    ok "two cores: core 0 rendered $b0 bands in $c0 cycles, core 1 $b1 in $c1 (SysTick, each core's own)"
+   [ "${b0:-0}" -gt 0 ] && [ "${b1:-0}" -gt 0 ] && [ $((b0 + b1)) = $CORES_BANDS ] && [ -z "$(val cores "$r1")" ] &&
+   [ "${i0:-0}" -gt 0 ] && [ "${i1:-0}" -gt 0 ]; then
+    ok "two cores: core 0 rendered $b0 bands in $c0 cycles, core 1 $b1 in $c1 (SysTick, each core's own); the runner counted $i0 and $i1 instructions"
 else
-    bad "two cores: report cores $(val cores "$r2"), cycles ${c0:-?} and ${c1:-?}, bands ${b0:-?} + ${b1:-?} of $CORES_BANDS"
+    bad "two cores: report cores $(val cores "$r2"), cycles ${c0:-?} and ${c1:-?}, bands ${b0:-?} + ${b1:-?} of $CORES_BANDS, instructions ${i0:-?} and ${i1:-?}"
 fi
 one=$(val render_cycles "$r1") cp=$(val critical_path_cycles "$r2") frame=$(val render_cycles "$r2")
 if share=$(awk -v one="$one" -v cp="$cp" -v f="$frame" -v max=$CORES_SHARE 'BEGIN {
@@ -352,15 +354,21 @@ if core1_image pass >"$OUT/core1/pass.build" 2>&1 &&
    node platform/pico/run.mjs "$OUT/core1/pass.elf" "$OUT/core1/pass.png" "$RT" >"$OUT/core1/pass.report" 2>&1; then
     # each value as the datasheet gives it (the list in tests/pico_core1.c)
     for kv in stale_vld=1 stale_word=0 launched=1 cpuid0=0 cpuid1=1 roe_at_entry=10 div0=333 div1=142857 locked_count=200 \
-              sev_woke=1 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
+              sev_woke=1 wfi_after_sev=0 wfi_irq_word=77 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
               fifo_full_st=4 fifo_cleared_st=0 fifo_empty_read=0 fifo_roe_st=8 irq15_roe=1 irq15_clear=0 \
               reset_stale=0 reset_more=0 relaunched=1 tie_core0=128 tie_core1=0 core1_launches=2 exit_status=0; do
         got=$(val "${kv%=*}" "$OUT/core1/pass.report")
         [ "$got" = "${kv#*=}" ] || bad "core 1 model: ${kv%=*} is ${got:-missing}, expected ${kv#*=}"
     done
+    # each core's marks counted apart: 100 additions under a lock, at
+    # least 5 instructions each
+    for k in render_instructions core1_render_instructions; do
+        [ "$(val $k "$OUT/core1/pass.report")" -ge 500 ] 2>/dev/null ||
+            bad "core 1 model: $k is $(val $k "$OUT/core1/pass.report"), expected at least 500 (each core's marks counted apart)"
+    done
     c1=$(val core1_instructions "$OUT/core1/pass.report")
     [ "${c1:-0}" -gt 50 ] && grep -q '^core 1 at the end: sleeping (WFI)' "$OUT/core1/pass.report" &&
-        ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
+        ok "core 1 model: stale 0, launch, CPUID, ROE at entry, per-core dividers, a counter under a spinlock, SEV/WFE (not WFI), SIO_IRQ_PROC1 waking WFI, spinlocks, FIFO WOF/ROE/IRQ 15, reset by PSM and relaunch, core 0 wins a tie ($c1 core-1 instructions)" ||
         bad "core 1 model: core 1 ran ${c1:-no} instructions: $(grep '^core 1 at the end' "$OUT/core1/pass.report")"
 else
     bad "core 1 model: the image did not build or run: $(tail -3 "$OUT/core1/pass.build" "$OUT/core1/pass.report")"

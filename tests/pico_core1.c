@@ -16,8 +16,13 @@
  *   div0, div1              each core's own quotient, core 1 dividing
  *                           between core 0's write and read
  *   locked_count            both cores' 100 additions each to a counter
- *                           under spinlock 3, at once: 200
+ *                           under spinlock 3, at once: 200 (each core
+ *                           marks its additions' start and end with
+ *                           port_cycles_read, which run.mjs counts from)
  *   sev_woke                core 1 left `while (!flag) wfe` after SEV
+ *   wfi_after_sev           core 1 in WFI still asleep after core 0's SEV (0)
+ *   wfi_irq_word            ... and woken by its FIFO interrupt, whose
+ *                           handler read the word core 0 sent (77)
  *   own_event               core 0's `sev; wfe` did not sleep
  *   lock_first, lock_again, lock_st, lock_core1_held, lock_core1_freed
  *                           spinlock 5: claimed, held, SPINLOCK_ST, core
@@ -90,13 +95,14 @@
 #define TIMER_INTR REG(0x40054034u)
 #define TIMER_INTE REG(0x40054038u)
 #define TIMER_IRQ_0 0u
+#define SIO_IRQ_PROC1 16u
 
 #define STACK0 0x20040000u /* top of striped SRAM */
 #define STACK1 0x20041000u /* top of SRAM4, core 1's own bank */
 
 /* what the cores share: words in SRAM (no .data here) */
 struct shared {
-    volatile uint32_t flag, woke, cpuid1, div1, roe1, held1, freed1, step;
+    volatile uint32_t flag, woke, cpuid1, div1, roe1, held1, freed1, woke_wfi, irq_word;
     volatile uint32_t tie[2];
 };
 #define SH ((struct shared *)0x20000000u)
@@ -220,14 +226,20 @@ static void __attribute__((unused)) core1_reset(void)
 }
 
 /* ---- core 1 ------------------------------------------------------------- */
+/* the runner's mark (run.mjs watches this function's address on each
+ * core): both cores bracket their additions with it */
+__attribute__((noinline, used)) uint32_t port_cycles_read(void) { return CPUID; }
+
 static void add_counts(void)
 {
+    (void)port_cycles_read();
     for (uint32_t i = 0; i < COUNT_ADDS; i++) {
         while (!SPINLOCK(COUNT_LOCK))
             ;
         COUNT = COUNT + 1u;
         SPINLOCK(COUNT_LOCK) = 0;
     }
+    (void)port_cycles_read();
 }
 
 static void __attribute__((unused)) core1_unguarded(void)
@@ -261,8 +273,21 @@ static void core1_main(void)
         wfe();
     SH->freed1 = SPINLOCK(5);
     SPINLOCK(5) = 0;
+    /* WFI: core 0's SEV leaves it asleep, a FIFO word (SIO_IRQ_PROC1) wakes it */
+    NVIC_ISER = 1u << SIO_IRQ_PROC1;
     push(3);
+    wfi();
+    SH->woke_wfi = 1;
+    NVIC_ICER = 1u << SIO_IRQ_PROC1;
     /* returns: the ROM parks core 1 in WFI */
+}
+
+/* core 1's FIFO interrupt: the word, and the flags cleared */
+void sio_irq_proc1(void)
+{
+    while (FIFO_ST & FIFO_VLD)
+        SH->irq_word = FIFO_RD;
+    FIFO_ST = 0;
 }
 
 static void __attribute__((unused)) core1_tie(void)
@@ -366,9 +391,19 @@ void reset(void)
     report("lock_again", again);
     report("lock_st", st);
     SPINLOCK(5) = 0; /* freed, then core 1 may take it */
+    SH->woke_wfi = 0;
     SH->flag = 3;
     sev();
     a = pop();
+    /* core 1 goes to WFI: an event does not wake it, its FIFO interrupt does */
+    sev();
+    for (volatile int n = 0; n < 100; n++)
+        ;
+    report("wfi_after_sev", SH->woke_wfi);
+    FIFO_WR = 77u;
+    while (!SH->woke_wfi)
+        ;
+    report("wfi_irq_word", SH->irq_word);
     report("lock_core1_held", SH->held1);
     report("lock_core1_freed", SH->freed1);
     report("cpuid1", SH->cpuid1);
@@ -412,5 +447,6 @@ __attribute__((section(".vectors"), used, aligned(256))) const uint32_t vectors[
     [0] = STACK0,
     [1] = (uint32_t)reset,
     [16 + TIMER_IRQ_0] = (uint32_t)timer_irq,
+    [16 + SIO_IRQ_PROC1] = (uint32_t)sio_irq_proc1,
     [47] = 0,
 };

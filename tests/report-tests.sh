@@ -9,7 +9,8 @@
 #    pico's SysTick) gets cycles / clock, "counted by"; the others get
 #    instructions x the CPI of a canned time table's row for that board,
 #    backend and sampling, "estimated", and the figure is that product;
-#    on two cores the critical path's instructions, named so; a board
+#    on two cores the critical path's instructions, named so (the pico's
+#    two cores: both cores' instructions a pixel, summed); a board
 #    missing from the table gets a sentence saying there is no time, not
 #    an empty figure;
 #  - the emulator that ran it named right (rp2040js where board.mk sets
@@ -122,6 +123,15 @@ if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "about $want a
     ok "two cores: the critical path's 600,000 instructions x $cpi ($want)"
 else
     bad "two cores ($want): $(sentences "$out") | $out"
+fi
+# the pico's two cores: the runner counts each core's instructions, and
+# the line a pixel gives both cores' together
+printf 'pixels 100\nrender_cycles 5000000\nrender_instructions 1000000\ninstructions_per_pixel 10000\ncore1_render_instructions 1200000\nrp2040js wall time on the host (x): 1.0 s\n' >"$tmp/pico2.txt"
+out=$(summarize pico "$tmp/pico2.txt" "")
+if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "22,000 instructions a pixel, both cores together\."; then
+    ok "pico, two cores: 22,000 instructions a pixel, both cores together (the runner's two counts)"
+else
+    bad "pico, two cores: $(sentences "$out") | $out"
 fi
 # a board and backend the table does not have: a sentence, no figure
 head -1 "$table" >"$tmp/empty.csv"

@@ -141,9 +141,9 @@ uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v);
 /* A board that counts cycles but not instructions (BOARD_CYCLES 1,
  * BOARD_INSTR_COUNTER 0: the pico, whose SysTick is each core's own):
  * the calling core's own cycles, which bands.c counts each core's work
- * with. Not port_cycles_read(): a runner may watch that one's calls on
- * core 0 as the render's marks (platform/pico/run.mjs), which must stay
- * the render's start, the output pairs and its end. */
+ * with. Not port_cycles_read(): a runner may watch that one's calls as
+ * each core's marks (platform/pico/run.mjs), which must stay the start of
+ * its share of the render, its output's pairs and the end. */
 uint64_t port_core_cycles_read(void);
 
 /* Provided by platform/firmware/stack.c when BOARD_CORES > 1: the stack

@@ -1,7 +1,9 @@
 /* sink_io.c - the time a display sink spends on output (sink.h), kept
  * apart so the render's counts are the renderer's alone. With two cores
  * (bands.c) either core may output, one at a time; the cycles are each
- * core's own (its SysTick), so each core keeps its own total. */
+ * core's own (its SysTick), so each core keeps its own total. The cycle
+ * reads are port_cycles_read's, which a runner may count as the output's
+ * marks on the core that calls it (port.h). */
 #include "port.h"
 #include "sink.h"
 
@@ -13,15 +15,10 @@ static uint64_t instr_total, instr_mark;
 #if BOARD_CYCLES
 static uint64_t cycles_total[BOARD_CORES], cycles_mark;
 
-/* The caller's core, and its cycles: on core 0 through port_cycles_read,
- * whose calls a runner counts as the output's marks (port.h); on core 1
- * not, so that core 0's marks stay the render's. */
 #if BOARD_CORES > 1
 static unsigned io_core(void) { return port_core_id(); }
-static uint64_t io_cycles(void) { return port_core_id() ? port_core_cycles_read() : port_cycles_read(); }
 #else
 static unsigned io_core(void) { return 0; }
-static uint64_t io_cycles(void) { return port_cycles_read(); }
 #endif
 #endif
 
@@ -29,14 +26,14 @@ void sink_io_begin(void)
 {
     instr_mark = port_icount_read();
 #if BOARD_CYCLES
-    cycles_mark = io_cycles();
+    cycles_mark = port_cycles_read();
 #endif
 }
 
 void sink_io_end(void)
 {
 #if BOARD_CYCLES
-    cycles_total[io_core()] += io_cycles() - cycles_mark;
+    cycles_total[io_core()] += port_cycles_read() - cycles_mark;
 #endif
     instr_total += port_icount_read() - instr_mark;
 }

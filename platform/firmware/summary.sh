@@ -32,7 +32,14 @@ case $SAMPLING in
 esac
 case $SAMPLING in *"--texture-filter off"*) how="${how%,}, textures point-sampled," ;; esac
 mhz=$(awk -v hz="$CLOCK_HZ" 'BEGIN { printf "%g", hz / 1e6 }')
-ipp=$(value instructions_per_pixel | commas)
+ipp=$(value instructions_per_pixel | commas) both=
+# a runner that counts each core's instructions (the pico's: core 0's are
+# render_instructions) gives both cores' work a pixel
+if [ -n "$(value core1_render_instructions)" ]; then
+    ipp=$(awk -v a="$(value render_instructions)" -v b="$(value core1_render_instructions)" -v p="$(value pixels)" \
+        'BEGIN { printf "%d", (a + b) / p + 0.5 }' | commas)
+    both=", both cores together"
+fi
 
 # The time on the board: the port's own cycle count where it has one
 # (render_cycles: SysTick on the pico, DWT's CYCCNT on an STM32F4 chip),
@@ -50,7 +57,7 @@ time_lines() {
         [ "$emulator" = rp2040js ] && counter="$counter under rp2040js (its Cortex-M0+ timing, code in SRAM)"
         time=$(awk -v c="$cycles" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", c / hz }')
         printf '  %-15s %s at %s MHz, counted by %s;\n' "on the board" "$time" "$mhz" "$counter"
-        printf '  %-15s %s instructions a pixel.\n' "" "$ipp"
+        printf '  %-15s %s instructions a pixel%s.\n' "" "$ipp" "$both"
         first=$(value first_picture_cycles)
         [ -z "$first" ] || printf '  %-15s %s ms after the render starts, panel bytes included: progressive\n  %-15s display, pass 1 of 7 (its frame: %s s).\n' \
             "first picture" "$(awk -v c="$first" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.1f", c / hz * 1000 }')" "" \

@@ -17,8 +17,8 @@
  *    interrupt counts the wraps (every 0.134 s at 125 MHz). Each core has
  *    its own SysTick (in its own PPB) and its own count of wraps. The M0+
  *    has no instruction counter (BOARD_INSTR_COUNTER := 0): run.mjs
- *    counts instructions from outside, between the calls of
- *    port_cycles_read on core 0.
+ *    counts each core's instructions from outside, between its calls of
+ *    port_cycles_read (core 1: around its whole share, core1_start).
  *  - Both cores (BOARD_CORES 2, port.h's multi-core part): core 1 waits
  *    in the boot ROM from reset until core 0 sends it the launch sequence
  *    over the inter-core FIFO (port_start_core1); it gets the vector table
@@ -267,9 +267,9 @@ uint64_t board_cycles(void)
 }
 
 /* The firmware's marks (render start and end, display output): run.mjs
- * counts instructions between the calls of this very function on core 0.
- * no_icf: no other function (port_core_cycles_read) may be folded into
- * it, or its calls would be marks too. */
+ * counts each core's instructions between its calls of this very
+ * function. no_icf: no other function (port_core_cycles_read) may be
+ * folded into it, or its calls would be marks too. */
 __attribute__((noinline, no_icf)) uint64_t port_cycles_read(void) { return board_cycles(); }
 
 #if BOARD_CORES > 1
@@ -302,7 +302,9 @@ static void core1_start(void)
     SIO_FIFO_ST = 0; /* clears the ROM's sticky read-on-empty (ROE) */
     systick_start_wrapping(); /* core 1's own SysTick */
     __asm__ volatile("cpsie i" : : : "memory");
+    (void)port_cycles_read(); /* core 1's marks for run.mjs: start, (its output's pairs,) end */
     core1_entry();
+    (void)port_cycles_read();
     /* done: nothing left that could wake it */
     systick_stop();
     __asm__ volatile("cpsid i" : : : "memory");

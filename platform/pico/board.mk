@@ -77,10 +77,12 @@ BOARD_PANEL    := $(PANEL)
 BOARD_PANEL_NAME := $(PANEL) panel (PANEL=$(PANEL))
 FW_FORMAT      := rgb565be
 # the panel gets bands of 4 lines either way: on two cores (bands.c)
-# each core has two band buffers of its own (at 64x64 the showpiece's
-# critical path is 0.529 of one core's cycles with 4 lines, 0.548 with
-# 8; card at 320x240 0.5045 and 0.5061); on one (CORES=1) st7789.c
-# splits the buffer of 8 lines main.c gives it into two
+# each core has two band buffers of its own; 4 lines gave a shorter
+# critical path than 8 on 7 of bench/cores.md's 10 scenes at 64x64 (the
+# showpiece 0.529 of one core's cycles against 0.548) and on the card at
+# 320x240 (0.5044 against 0.5061), a longer one on 3 and on picolib
+# (0.5087 against 0.5049). On one core (CORES=1) st7789.c splits the
+# buffer of 8 lines main.c gives it into two.
 BOARD_BAND_LINES = $(if $(filter 1,$(CORES)),8,4)
 else ifneq ($(PICO_DISPLAY),uart)
 $(error PICO_DISPLAY=$(PICO_DISPLAY): st7789 or uart)
