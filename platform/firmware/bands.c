@@ -86,8 +86,10 @@ static struct {
     volatile uint32_t blocked[BOARD_CORES]; /* waiting for a free buffer */
     volatile uint32_t alive, go, spin;    /* start-up hand-shake */
     volatile int status;                  /* first failure, any core */
+#if BOARD_PROGRESSIVE
     volatile uint32_t passes_shown;       /* progressive display: passes on the panel */
     volatile int sending;                 /* ... whose area the sink sends (-1: none; under the lock) */
+#endif
 } fr;
 
 /* What the cores change only through port_atomic_add (a spinlock's on
@@ -97,7 +99,9 @@ static struct {
 __attribute__((section(".bss.spinlocked"))) static struct {
     volatile uint32_t next_band; /* BOARD_BAND_SPLIT 1 */
     volatile uint32_t ticket;    /* the hand-over's lock: tickets taken */
-    volatile uint32_t bands_done; /* progressive display: bands rendered, all passes */
+#if BOARD_PROGRESSIVE
+    volatile uint32_t bands_done; /* progressive display: pieces rendered, all passes */
+#endif
 } taken;
 
 static uint64_t others_busy(unsigned c)
@@ -455,10 +459,10 @@ int bands_render(const rt_scene_t *sc, const rt_render_opts_t *opts, rt_fb_sink_
     fr.out = sink;
     fr.rep = rep;
     fr.n_bands = (uint32_t)(h + BOARD_BAND_LINES - 1) / BOARD_BAND_LINES;
-    fr.sending = -1;
     for (unsigned c = 0; c < BOARD_CORES; c++) {
         core_sink[c] = (rt_fb_sink_t){ .format = sink->format, .dither = sink->dither, .band_bytes = BAND_BYTES, .flush = slot_flush };
 #if BOARD_PROGRESSIVE
+        fr.sending = -1;
         if (opts->progressive) { /* each core's two band buffers, its areas sent at once */
             core_sink[c].flush = pass_flush;
             core_sink[c].wait = pass_wait;

@@ -595,7 +595,6 @@ static int progressive_column(rt_render_ctx_t *ctx, const pass_t *ps)
  * last is on the display); y_end once the last pass is done. */
 static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 {
-    const pass_t *ps;
     if (RT_PROGRESSIVE_BY_COLUMNS(ctx->pass) && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
         y = ctx->y_end; /* the last column is done */
     while (y >= ctx->y_end) {
@@ -605,7 +604,7 @@ static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
         }
         if (ctx->pass == ctx->last_pass)
             break;
-        ps = &passes[ctx->pass++];
+        const pass_t *ps = &passes[ctx->pass++];
         y = (uint32_t)ctx->y0 + ps->oy;
         ctx->x = (uint16_t)(ctx->x0 + ps->ox);
         if (RT_PROGRESSIVE_BY_COLUMNS(ctx->pass) && ctx->x >= (uint32_t)ctx->x0 + ctx->w)
