@@ -14,7 +14,9 @@ instruction counts) and records
   - PSNR and max channel error against the exact double reference (the
     host's rt --double at the same size, in the board's pixel format);
   - code (text + vectors + exidx) and static RAM (data + bss) of the ELF.
-A board with two cores renders on one here (CORES=1), like the others;
+A board with two cores renders on one here (CORES=1), like the others, and
+a panel in scanline order (PROGRESSIVE=0: bench/pico-frames.md has the
+other orders);
 bench/cores_bench.py measures its split. It writes bench/boards.md and
 bench/boards.csv.
 
@@ -78,7 +80,7 @@ def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""
     per pixel, where the port counts them), image (in out), facts."""
     # one core on every board (a two-core board's split: bench/cores_bench.py)
     args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size,
-            "DEPTH=%d" % depth, "CORES=1", "AA=0", "DITHER=0"] + variant.split()
+            "DEPTH=%d" % depth, "CORES=1", "PROGRESSIVE=0", "AA=0", "DITHER=0"] + variant.split()
     r = run(["make", "-s", "-j2", "firmware"] + args, check=False)
     if r.returncode:
         return None

@@ -35,7 +35,7 @@ FRAME_SCENES = {"card": 3, "picolib": 6}  # scene: its ray-tree depth
 
 def report(board, scene, cores, size=SIZE, depth=5, path=None):
     args = ["BOARD=" + board, "SCENE=" + (path or scene_path(scene)), "SIZE=" + size, "DEPTH=%d" % depth, "CORES=%d" % cores,
-            "AA=0"]
+            "AA=0", "PROGRESSIVE=0"]  # (scanline order: the bands' split; bench/pico-frames.md has progressive display)
     if run(["make", "-s", "-j2", "firmware"] + args, check=False).returncode:
         return None, None
     png = os.path.join(OUT, "%s-%s-%s-%d.png" % (board, scene, size, cores))

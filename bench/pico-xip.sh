@@ -10,7 +10,7 @@
 set -e
 for sd in card:3 picolib:6 whitted:5; do
     s=${sd%:*} d=${sd#*:}
-    vars="BOARD=pico SCENE=scenes/bench/$s.nff SIZE=320x240 DEPTH=$d CORES=1"
+    vars="BOARD=pico SCENE=scenes/bench/$s.nff SIZE=320x240 DEPTH=$d CORES=1 PROGRESSIVE=0"
     make -s -j2 build/host/rt firmware $vars >/dev/null
     elf=$(make -s board-info $vars | sed -n 's/.*elf=\([^ ]*\).*/\1/p')
     echo "$s (depth $d, 320x240, fixed):"

@@ -76,7 +76,7 @@ def measure_sampling(board, backend, label, variables, opts, hz):
     if not m:
         # why: the link's overflow, when that is it
         args = ["BOARD=" + board, "BACKEND=" + backend, "SCENE=" + scenes_bench.scene_path(SCENE), "SIZE=" + size,
-                "DEPTH=%d" % scenes_bench.SCENES[SCENE], "CORES=1", variables]
+                "DEPTH=%d" % scenes_bench.SCENES[SCENE], "CORES=1", "PROGRESSIVE=0", variables]
         err = run(["make", "-s", "firmware"] + args, check=False).stderr
         over = re.search(r"region .RAM' overflowed by (\d+) bytes", err)
         row["note"] = ("RAM overflows by %s bytes at %s" % (format(int(over.group(1)), ","), size) if over
