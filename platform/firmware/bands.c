@@ -8,6 +8,8 @@
  * rendered it; a ticket lock keeps one core at a time in the sink. Besides
  * the read-only scene, the cores share only the band counter, the
  * buffers' states and the hand-over.
+ * Progressive display (opts.progressive) takes pieces of each pass
+ * instead and sends their areas as they come (below, BOARD_PROGRESSIVE).
  *
  * Which core renders which band (BOARD_BAND_SPLIT):
  *   0  interleave: core c takes bands c, c + N, c + 2N, ...

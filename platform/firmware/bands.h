@@ -1,7 +1,9 @@
 /*
  * bands.h - one frame on several cores (BOARD_CORES > 1): bands of
  * BOARD_BAND_LINES lines, rendered on every core and handed to the
- * display sink in order, so the sink sees the stream one core sends.
+ * display sink in order, so the sink sees the stream one core sends; or,
+ * with progressive display (a panel that keeps its frame), each pass in
+ * pieces whose areas go to the sink as they are rendered (bands.c).
  */
 #ifndef BANDS_H
 #define BANDS_H
@@ -28,7 +30,8 @@ typedef struct {
     bool one_at_a_time;     /* the cores ran in turns (QEMU -icount): counts exact */
 } bands_report_t;
 
-/* Renders the frame of opts (width, height, depth; no viewport) on all
+/* Renders the frame of opts (width, height, depth, progressive 0 or
+ * RT_PROGRESSIVE_ALL; no viewport) on all
  * cores into sink: core 0 calls this, it starts the others. A scratch
  * (adaptive anti-aliasing) is BOARD_CORES areas of scratch_bytes each,
  * one after the other: one per core. 0, -1 with
