@@ -54,7 +54,7 @@ RT_COLD void camera_start_at_bounds(camera_t *c, vec3_t min, vec3_t max)
  * part at - b v is made once a row (camera_row), or a sample for a walk
  * down a column (camera_column_row). */
 /* The row part at - b v of row j (m = 2j - cy). */
-static void row_part(const camera_t *c, int32_t m, real_wide_t part[3])
+static RT_INLINE void row_part(const camera_t *c, int32_t m, real_wide_t part[3])
 {
 #if RT_BACKEND_FIXED
     real_t b = r_from_wide_in_range(fx_mul64x(m, c->half_span)); /* (the same product, 32 x 64 bits) */
@@ -66,9 +66,12 @@ static void row_part(const camera_t *c, int32_t m, real_wide_t part[3])
     part[2] = r_to_wide(c->at.z) - r_wmul(b, c->v.z);
 }
 
-RT_COLD void camera_column(const camera_t *c, int32_t i, camera_column_t *col)
+/* Column i's part of the walk: k = 2i - cx and, in the fixed build, the
+ * step dt and T's column part kt = k (s/2) u (inline in camera_row, so a
+ * build without progressive display links no camera_column). */
+static RT_INLINE int32_t column_part(const camera_t *c, int32_t i, real_wide_t dt[3], real_wide_t kt[3])
 {
-    col->k = 2 * i - c->cx;
+    int32_t k = 2 * i - c->cx;
 #if RT_BACKEND_FIXED
     /* the fixed build walks T along the row in the wide format: the step
      * s u rounded once to 2^-2F, so T is good to 2^-2F a sample (under
@@ -76,36 +79,61 @@ RT_COLD void camera_column(const camera_t *c, int32_t i, camera_column_t *col)
      * instead of three 64-bit products */
     const real_t u[3] = { c->u.x, c->u.y, c->u.z };
     for (int n = 0; n < 3; n++) {
-        col->dt[n] = r_wmul_real(2 * c->half_span, u[n]);
-        col->kt[n] = fx_mul64x(col->k, col->dt[n]) >> 1; /* k (s/2) u */
+        dt[n] = r_wmul_real(2 * c->half_span, u[n]);
+        kt[n] = fx_mul64x(k, dt[n]) >> 1; /* k (s/2) u */
     }
 #else
-    (void)c;
+    (void)dt, (void)kt;
 #endif
+    return k;
 }
 
-void camera_column_row(const camera_t *c, const camera_column_t *col, int32_t j, camera_row_t *row)
+/* Row j added to a row walk that holds its column part (row->t in the
+ * fixed build). */
+static RT_INLINE void add_row_part(const camera_t *c, int32_t j, camera_row_t *row)
 {
     real_wide_t part[3];
     row->m = 2 * j - c->cy;
     row_part(c, row->m, part);
-    row->k = col->k;
     row->dk = 2;
     for (int n = 0; n < 3; n++) {
 #if RT_BACKEND_FIXED
-        row->dt[n] = col->dt[n];
-        row->t[n] = part[n] + col->kt[n];
+        row->t[n] += part[n];
 #else
         row->row[n] = part[n];
 #endif
     }
 }
 
+RT_COLD void camera_column(const camera_t *c, int32_t i, camera_column_t *col)
+{
+#if RT_BACKEND_FIXED
+    col->k = column_part(c, i, col->dt, col->kt);
+#else
+    col->k = column_part(c, i, 0, 0);
+#endif
+}
+
+void camera_column_row(const camera_t *c, const camera_column_t *col, int32_t j, camera_row_t *row)
+{
+    row->k = col->k;
+#if RT_BACKEND_FIXED
+    for (int n = 0; n < 3; n++) {
+        row->dt[n] = col->dt[n];
+        row->t[n] = col->kt[n];
+    }
+#endif
+    add_row_part(c, j, row);
+}
+
 RT_COLD void camera_row(const camera_t *c, int32_t i, int32_t j, camera_row_t *row)
 {
-    camera_column_t col;
-    camera_column(c, i, &col);
-    camera_column_row(c, &col, j, row);
+#if RT_BACKEND_FIXED
+    row->k = column_part(c, i, row->dt, row->t);
+#else
+    row->k = column_part(c, i, 0, 0);
+#endif
+    add_row_part(c, j, row);
 }
 
 ray_t camera_next(const camera_t *c, camera_row_t *row)

@@ -681,14 +681,15 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     }
     ctx->pitch = pitch;
     ctx->band_lines = band_lines;
-    /* modes left out of this build (one message: the board leaves both out) */
-    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1 || SPLITS_ASKED(opts)))) {
-        rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA)");
+    /* modes left out of this build (one message: a board leaves them out together) */
+    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1 || SPLITS_ASKED(opts))) ||
+        (!RT_USE_PROGRESSIVE && opts->progressive)) {
+        rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA, RT_USE_PROGRESSIVE)");
         return -1;
     }
+#if RT_USE_PROGRESSIVE
     ctx->pass = ctx->last_pass = 0;
     if (opts->progressive) {
-#if RT_USE_PROGRESSIVE
         const char *why = 0;
         bool all = opts->progressive == RT_PROGRESSIVE_ALL;
         if (!all && opts->progressive > RT_PROGRESSIVE_PASSES)
@@ -707,13 +708,12 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
         }
         ctx->pass = all ? 1 : opts->progressive;
         ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
-#else
-        rt_error_set(err, 0, "progressive display not compiled in (RT_USE_PROGRESSIVE)");
-        return -1;
-#endif
     }
+#endif
 #if !RT_USE_AA
+#if RT_USE_PROGRESSIVE
     ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
+#endif
 #else
     ctx->aa_levels = opts->aa_levels;
     ctx->spp = opts->spp > 1 ? opts->spp : 0;
@@ -823,7 +823,9 @@ static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const
     ctx->w = vp.w;
     ctx->y = ctx->band_y = vp.y;
     ctx->y_end = (uint16_t)(vp.y + vp.h);
+#if RT_USE_PROGRESSIVE
     ctx->y0 = vp.y;
+#endif
     ctx->cur = 0;
 #if RT_USE_PROGRESSIVE
     if (ctx->pass) {
