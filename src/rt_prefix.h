@@ -69,7 +69,6 @@
 #define polygon_init             rt_polygon_init
 #define polygon_shading_normal   rt_polygon_shading_normal
 #define prim_box                 rt_prim_box
-#define r_from_decimal           rt_r_from_decimal
 #define r_from_decimal_scaled    rt_r_from_decimal_scaled
 #define r_pow_float              rt_r_pow_float
 #define ray_hit_cone             rt_ray_hit_cone

@@ -1,6 +1,6 @@
 #!/bin/sh
 # Smoke fuzz: each libFuzzer harness (see the Makefile) for FUZZ_SMOKE
-# seconds (default 20) from its seed corpus, under ASan and UBSan. Any
+# seconds (default 15) from its seed corpus, under ASan and UBSan. Any
 # crash, hang (> 10 s) or sanitizer report fails it; the input is left in
 # build/fuzz-smoke/NAME/ (add it to tests/fuzz-found/ once fixed).
 SECONDS_=${FUZZ_SMOKE:-15}

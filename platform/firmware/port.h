@@ -151,7 +151,6 @@ uint64_t port_core_cycles_read(void);
  * measure either core's (1: the board's .stack1, same size and guard).
  * stack_paint() paints whichever of the two stacks it is called on. */
 uint32_t stack_high_water_core(unsigned core);
-uint32_t stack_size_core(unsigned core);
 int stack_guard_intact_core(unsigned core);
 
 #endif

@@ -72,11 +72,6 @@ int stack_guard_intact(void) { return region_guard_intact(__stack_limit, __stack
 #if BOARD_CORES > 1
 _Static_assert(BOARD_CORES == 2, "stack.c knows two stacks: .stack (core 0) and .stack1 (core 1)");
 
-uint32_t stack_size_core(unsigned core)
-{
-    return core ? region_size(__stack1_limit, __stack1_top) : stack_size();
-}
-
 uint32_t stack_high_water_core(unsigned core)
 {
     return core ? region_high_water(__stack1_limit, __stack1_top) : stack_high_water();

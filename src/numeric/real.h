@@ -195,7 +195,6 @@ static RT_INLINE uint8_t r_to_u8(real_t c)
         return 255;
     return (uint8_t)(c * 255 + (real_t)0.5);
 }
-bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out);
 /* +-mant * 10^exp10 * 2^scale_log2 */
 bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2, real_t *out);
 bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out);
@@ -354,10 +353,6 @@ static inline uint8_t r_to_u8(real_t c)
 #else
     return (uint8_t)(((int64_t)c * 255 + FX_HALF) >> FX_FRAC_BITS);
 #endif
-}
-static inline bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
-{
-    return fx_from_decimal(neg, mant, exp10, FX_FRAC_BITS, (uint32_t)FX_MAX, out);
 }
 static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
 {

@@ -26,15 +26,6 @@ static bool decimal_to_double(bool neg, uint64_t mant, int32_t exp10, double *ou
     return true;
 }
 
-bool r_from_decimal(bool neg, uint64_t mant, int32_t exp10, real_t *out)
-{
-    double v;
-    if (!decimal_to_double(neg, mant, exp10, &v) || v > 1e30 || v < -1e30)
-        return false;
-    *out = (real_t)v;
-    return true;
-}
-
 bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10, int32_t scale_log2, real_t *out)
 {
     double v;
