@@ -4,7 +4,7 @@
 #                   full commands
 #   make run        install the host build's and BOARD's missing packages,
 #                   render SCENE on an emulated board (BOARD=mps2-an385 by
-#                   default, BACKEND=fixed; platform/firmware/firmware.mk)
+#                   default, BACKEND=fixed; app/firmware/firmware.mk)
 #                   at the scene's resolution unless SIZE=WxH is given,
 #                   write out/<scene>-<board>-<backend>[-choices].png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
@@ -33,7 +33,7 @@
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
 # float, and double with the fixed build's tolerances); each copy is
-# partially linked with platform/hosted/backend.c into one object that
+# partially linked with app/rt/backend.c into one object that
 # exports only its rt_backend_t, so `rt` carries every build.
 
 SCENE ?= scenes/showpiece.nff
@@ -87,7 +87,7 @@ WARN      = -std=c11 -Wall -Wextra -Werror
 CORE_SRC  = $(wildcard src/*.c src/*/*.c)
 CORE_DIRS = $(patsubst %/,%,$(sort $(dir $(CORE_SRC))))
 CORE_H    = $(wildcard include/*.h src/*.h src/*/*.h)
-HOST_INC  = -Iinclude -Isrc -Iplatform/hosted
+HOST_INC  = -Iinclude -Isrc -Iapp/rt
 
 # Two host variants: optimised, and sanitised (what the tests run).
 host_CFLAGS = -O2 -g
@@ -100,7 +100,7 @@ asan_LDFLAGS = -fsanitize=address,undefined
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
-# RT_HOST_BACKENDS in platform/hosted/backend.h.
+# RT_HOST_BACKENDS in app/rt/backend.h.
 HOST_BACKENDS = fixed double float double_ftol
 BACKEND_FLAGS_fixed =
 BACKEND_FLAGS_double = -DRT_BACKEND_DOUBLE=1
@@ -114,7 +114,7 @@ build/$(1)/$(2)/%.o: src/%.c $(CORE_H) Makefile
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -ffreestanding $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -Iinclude -Isrc -c $$< -o $$@
 
-build/$(1)/$(2)/backend.o: platform/hosted/backend.c platform/hosted/backend.h $(CORE_H) Makefile
+build/$(1)/$(2)/backend.o: app/rt/backend.c app/rt/backend.h $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) $$($(1)_CFLAGS) $(HOST_CAPS) $(3) -DBACKEND_ID=$(2) $(HOST_INC) -c $$< -o $$@
@@ -131,7 +131,7 @@ endef
 define host_rules
 $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
-build/$(1)/%.o: platform/hosted/%.c $(wildcard platform/hosted/*.h) $(CORE_H) Makefile
+build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -pthread $$($(1)_CFLAGS) $(HOST_CAPS) $(HOST_INC) -c $$< -o $$@
@@ -246,11 +246,11 @@ build/lib/librt_core.a: $(patsubst src/%.c,build/lib/core/%.o,$(CORE_SRC))
 
 # The scene compiler for that library (the same configuration, so its
 # tables link with it), as CMakeLists.txt's rt-scenec.
-build/lib/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) $(CORE_H) $(wildcard platform/hosted/*.h) Makefile
+build/lib/rt-scenec: tools/scenec.c app/rt/host_io.c $(CORE_SRC) $(CORE_H) $(wildcard app/rt/*.h) Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iplatform/hosted -o $@ \
-	    tools/scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
+	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off -Iinclude -Isrc -Iapp/rt -o $@ \
+	    tools/scenec.c app/rt/host_io.c $(CORE_SRC) -lm
 
 INTERNAL_H    = $(wildcard src/*.h src/*/*.h)
 INTERNAL_DIRS = $(sort $(patsubst src/%/,%,$(filter-out src/,$(dir $(INTERNAL_H)))))
@@ -287,7 +287,7 @@ host-run: deps-host
 	@printf 'fixed vs the exact double reference: '
 	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
 
-include platform/firmware/firmware.mk
+include app/firmware/firmware.mk
 
 # deps: everything the tests and benchmarks use (make test, bench,
 # stress, fuzz); deps-board: only what rendering on BOARD needs (make run,
@@ -296,17 +296,17 @@ include platform/firmware/firmware.mk
 # (make image, uf2): the same but its emulator (no QEMU, no npm ci of the
 # Pico's rp2040js; Node.js stays, for uf2.mjs); deps-host: the host build
 # (make host-run). Each names the command it installs for in its messages
-# (platform/ensure-deps.sh).
+# (tools/ensure-deps.sh).
 DEPS_FOR = make $(or $(firstword $(filter-out deps deps-board deps-image deps-host,$(MAKECMDGOALS))),$(1))
 deps:
-	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh platform/ensure-deps.sh test
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,test)' sh tools/ensure-deps.sh test
 deps-host:
-	@ENSURE_DEPS_FOR='$(call DEPS_FOR,host-run)' sh platform/ensure-deps.sh host
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,host-run)' sh tools/ensure-deps.sh host
 deps-board:
-	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_PACKAGES) \
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,run) (BOARD=$(BOARD))' sh tools/ensure-deps.sh run $(BOARD_PACKAGES) \
 	    $(if $(filter profile,$(MAKECMDGOALS)),python3)
 deps-image:
-	@ENSURE_DEPS_FOR='$(call DEPS_FOR,image) (BOARD=$(BOARD))' ENSURE_DEPS_EMULATOR=0 sh platform/ensure-deps.sh run \
+	@ENSURE_DEPS_FOR='$(call DEPS_FOR,image) (BOARD=$(BOARD))' ENSURE_DEPS_EMULATOR=0 sh tools/ensure-deps.sh run \
 	    $(filter-out qemu-system-%,$(BOARD_PACKAGES))
 
 # Run time against error over the numeric configurations (bench/results.md,
@@ -397,11 +397,11 @@ build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 # $(1) backend id, $(2) its flags: one build of the core for the
 # differential harness, instrumented, exporting only rt_backend_<id>
 define fuzz_core_rule
-build/fuzz/core-$(1).o: $(CORE_SRC) $(CORE_H) platform/hosted/backend.c platform/hosted/backend.h Makefile
+build/fuzz/core-$(1).o: $(CORE_SRC) $(CORE_H) app/rt/backend.c app/rt/backend.h Makefile
 	@rm -rf build/fuzz/$(1) && mkdir -p build/fuzz/$(1)
 	$(show) CC $$@
 	$(Q)cd build/fuzz/$(1) && clang $(FUZZ_FLAGS) -fsanitize=fuzzer-no-link $(HOST_CAPS) $(2) -DBACKEND_ID=$(1) \
-	    $(addprefix -I$(CURDIR)/,include src platform/hosted) -c $(addprefix $(CURDIR)/,$(CORE_SRC) platform/hosted/backend.c)
+	    $(addprefix -I$(CURDIR)/,include src app/rt) -c $(addprefix $(CURDIR)/,$(CORE_SRC) app/rt/backend.c)
 	$(Q)$(LD) -r -o $$@.tmp build/fuzz/$(1)/*.o
 	$(Q)$(OBJCOPY) -G rt_backend_$(1) $$@.tmp $$@
 	@rm -f $$@.tmp
@@ -417,22 +417,22 @@ build/fuzz/fuzz_readers: tests/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz
 # $(1) name, $(2) backend flags: the scene compiler with the firmware's
 # capacities, for the fixed tables and for the float ones (hex floats)
 define fuzz_scenec_rule
-build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c platform/hosted/host_io.c \
-                        $(wildcard platform/hosted/*.h) $(CORE_SRC) $(CORE_H) Makefile
+build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c app/rt/host_io.c \
+                        $(wildcard app/rt/*.h) $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
-	    -Iplatform/hosted -o $$@ tests/fuzz_scenec.c platform/hosted/host_io.c $(CORE_SRC) -lm
+	    -Iapp/rt -o $$@ tests/fuzz_scenec.c app/rt/host_io.c $(CORE_SRC) -lm
 endef
 $(eval $(call fuzz_scenec_rule,fuzz_scenec,))
 $(eval $(call fuzz_scenec_rule,fuzz_scenec_float,-DRT_BACKEND_FLOAT=1))
 
-build/fuzz/fuzz_receive: tests/fuzz_receive.c platform/hosted/uart_stream.c platform/hosted/uart_stream.h \
-                         platform/hosted/image.h include/rt_fb.h Makefile
+build/fuzz/fuzz_receive: tests/fuzz_receive.c app/rt/uart_stream.c app/rt/uart_stream.h \
+                         app/rt/image.h include/rt_fb.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iplatform/hosted -o $@ \
-	    tests/fuzz_receive.c platform/hosted/uart_stream.c -lz
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iapp/rt -o $@ \
+	    tests/fuzz_receive.c app/rt/uart_stream.c -lz
 
 fuzz: deps build/fuzz/$(FUZZER)
 	@mkdir -p build/fuzz/corpus-$(FUZZER)

@@ -45,9 +45,9 @@ RT_DEFS := $(if $(filter float,$(RT_BACKEND)),-DRT_BACKEND_FLOAT=1) \
            $(if $(RT_CONFIG_FILE),-DRT_CONFIG_FILE='"$(abspath $(RT_CONFIG_FILE))"')
 RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) -I$(RT_DIR)/src $(RT_DEFS)
 
-RT_SCENEC_SRC := $(RT_DIR)/tools/scenec.c $(RT_DIR)/platform/hosted/host_io.c $(RT_SRC)
+RT_SCENEC_SRC := $(RT_DIR)/tools/scenec.c $(RT_DIR)/app/rt/host_io.c $(RT_SRC)
 RT_SCENEC_CFLAGS := -std=c11 -O2 -ffp-contract=off -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/include -I$(RT_DIR)/src \
-                    -I$(RT_DIR)/platform/hosted $(RT_DEFS)
+                    -I$(RT_DIR)/app/rt $(RT_DEFS)
 RT_SCENEC_LDLIBS := -lm
 
 ifeq ($(filter fixed float double,$(RT_BACKEND)),)

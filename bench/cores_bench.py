@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Boards with two cores: how the frame splits (platform/firmware/bands.c).
+"""Boards with two cores: how the frame splits (app/firmware/bands.c).
 
 For each board whose board.mk sets BOARD_CORES above 1 and each scene of
 boards_bench.py (fixed point, 64x64, depth 5) it runs the firmware on one

@@ -2,7 +2,7 @@
 # The core's footprint as a library, per feature set, for a Cortex-M3 at
 # -Os: every C file of src/ compiled with the set's switches, linked with
 # --gc-sections from the entry points a user calls, plus the four memory
-# functions GCC may emit (platform/firmware/libc_min.c). Scene tables
+# functions GCC may emit (app/firmware/libc_min.c). Scene tables
 # and the user's sink are not counted. Prints code (text + rodata) and
 # static RAM (data + bss) per set.
 OUT=build/lib-size
@@ -14,7 +14,7 @@ sizes() { # set name, entry points, flags
     name=$1 entries=$2
     shift 2
     objs=""
-    for c in src/*.c src/*/*.c platform/firmware/libc_min.c; do
+    for c in src/*.c src/*/*.c app/firmware/libc_min.c; do
         o="$OUT/$name-$(basename "$c" .c).o"
         $CC $ARCH $CFLAGS "$@" -c "$c" -o "$o" || return 1
         objs="$objs $o"

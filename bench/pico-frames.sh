@@ -31,7 +31,7 @@ for sd in card:3 picolib:6 whitted:5 showpiece:5; do
             make -s -j2 firmware $vars >"$OUT/build.log" 2>&1 || { tail -5 "$OUT/build.log"; exit 1; }
             elf=$(make -s board-info $vars | sed -n 's/.*elf=\([^ ]*\).*/\1/p')
             r=$OUT/$s-$c-$p
-            node platform/pico/run.mjs "$elf" "$r.png" build/host/rt $HZ >"$r.report" 2>&1 || { tail -5 "$r.report"; exit 1; }
+            node tools/emu/pico/run.mjs "$elf" "$r.png" build/host/rt $HZ >"$r.report" 2>&1 || { tail -5 "$r.report"; exit 1; }
             f=$(val frame_cycles "$r.report") fp=$(val first_picture_cycles "$r.report") cp=$(val critical_path_cycles "$r.report")
             eval "f_${c}_$p=$f"
             one=$(eval echo \$f_1_$p)

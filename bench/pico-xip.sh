@@ -14,6 +14,6 @@ for sd in card:3 picolib:6 whitted:5; do
     make -s -j2 build/host/rt firmware $vars >/dev/null
     elf=$(make -s board-info $vars | sed -n 's/.*elf=\([^ ]*\).*/\1/p')
     echo "$s (depth $d, 320x240, fixed):"
-    node platform/pico/run.mjs --xip-model "$elf" "build/pico-xip-$s.png" build/host/rt |
+    node tools/emu/pico/run.mjs --xip-model "$elf" "build/pico-xip-$s.png" build/host/rt |
         grep -E '^(cycles_per_pixel|xip_)|^XIP cache model' | sed 's/^/  /'
 done

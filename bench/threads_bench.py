@@ -5,7 +5,7 @@ Every SPD scene (scenes/spd/*.nff) at 512x512 in SPD mode (--spd, fixed
 backend), rendered by build/host/rt with
   - --threads 1: the whole frame in one call of the core, one thread;
   - --threads 2: two threads, each starting on half the lines and taking
-    half of what the other has left when it runs out (platform/hosted/
+    half of what the other has left when it runs out (app/rt/
     bands.c); each run start recomputes its top row of SPD corner rays,
     which the eye-ray column shows.
 Time: render_seconds of --stats (wall time of the render, without loading

@@ -19,7 +19,7 @@ core. For each board, backend and sampling it records
 The one-sample rows are bench/scenes.csv's (bench/scenes_bench.py measures
 them; this reads them), the anti-aliased ones are measured here. The
 CPI column is the table make run prices a QEMU board's run with
-(platform/firmware/summary.sh reads bench/time.csv).
+(tools/firmware/summary.sh reads bench/time.csv).
 It writes bench/time.md, bench/time.csv and bench/time.svg.
 
   bench/time_bench.py [--boards a,b] [--backends a,b] [--update] [--from-csv]
@@ -205,7 +205,7 @@ def write_md(rows):
             if r["sampling"] == CHECK["sampling"] and r.get("cpi"):
                 f.write("\nThe table's CPI against a run's own: %s on %s (%s), its instruction mix priced by\n"
                         "bench/cycles.py: %s instructions a pixel x %s = %s cycles a pixel, %s s at %s MHz;\n"
-                        "%s. make run prices a run with the table's CPI (platform/firmware/summary.sh).\n"
+                        "%s. make run prices a run with the table's CPI (tools/firmware/summary.sh).\n"
                         % (r["sampling"], r["board"], r["backend"], fnum(r["ipp"]), r["cpi"], fnum(r["cpp"]),
                            r["seconds"], r["clock_mhz"], r["note"]))
 

@@ -61,7 +61,7 @@ v = 34 if d[i] != 34 else 51
 if sys.argv[5] == 'not a 4-bit grey': v = 35
 d[i:i+n] = bytes([v] * n); open(sys.argv[2],'wb').write(d)" "$dump" "$OUT/bad.ppm" "$at" "$n" "$want"
     rm -f "$OUT/bad.stream"
-    msg=$(sh platform/lm3s6965evb/run.sh --panel "$OUT/bad.ppm" 128 64 "$OUT/bad.stream" 2>&1); status=$?
+    msg=$(sh tools/emu/lm3s6965evb/run.sh --panel "$OUT/bad.ppm" 128 64 "$OUT/bad.stream" 2>&1); status=$?
     if [ $status -ne 0 ] && [ ! -e "$OUT/bad.stream" ] && echo "$msg" | grep -q "$want"; then
         ok "capture check: $msg"
     else

@@ -25,7 +25,7 @@
 #    panel within 5% of the frame's time, and PROGRESSIVE=0 draws in
 #    scanline order (its progress in rows);
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
-#  - both cores (the default; platform/firmware/bands.c) give the panel
+#  - both cores (the default; app/firmware/bands.c) give the panel
 #    bytes core 0 alone gives (CORES=1), the report has each core's
 #    cycles and bands (and the runner each core's instructions), the two-core frame's critical path and its time on
 #    core 0 are at most 0.55 of one core's cycles, and each core's stack
@@ -74,7 +74,7 @@ pico_case() { # NAME SCENE SIZE DEPTH FORMAT [MAKE-VARS]
         return 1
     fi
     base=$(elf_of "$@")
-    if chk=$(node platform/pico/uf2.mjs check "$base.uf2" 2>&1); then
+    if chk=$(node tools/emu/pico/uf2.mjs check "$base.uf2" 2>&1); then
         ok "$n: $chk"
     else
         bad "$n: the UF2 does not check out: $chk"
@@ -135,7 +135,7 @@ pico_case rings-nodiv scenes/spd/rings-1.nff 24x24 5 rgb565be "PICO_DIVIDER=0 SP
 
 # Both cores (the default build) against core 0 alone (make CORES=1), in
 # scanline order (the passes of progressive display, split as
-# platform/firmware/bands.c says, are checked against the host's below),
+# app/firmware/bands.c says, are checked against the host's below),
 # on a frame of CORES_BANDS bands of 4 lines: the same panel bytes (the whole
 # panel as the glass shows it), each core's cycles and bands in the
 # report, and the two-core frame within CORES_SHARE of one core's cycles,
@@ -273,7 +273,7 @@ set -- $(wdiv_calls) $(wdiv_calls PICO_DIVIDER=0)
 # The render reads no flash past the XIP cache (run.mjs --xip-model):
 # no miss as built, where code in flash would miss
 b=$(elf_of SCENE=scenes/bench/card.nff SIZE=40x30 DEPTH=3)
-node platform/pico/run.mjs --xip-model "$b.elf" "$OUT/xip.png" "$RT" >"$OUT/xip.report" 2>&1
+node tools/emu/pico/run.mjs --xip-model "$b.elf" "$OUT/xip.png" "$RT" >"$OUT/xip.report" 2>&1
 m=$(val xip_render_misses "$OUT/xip.report") f=$(val xip_model_code_in_flash_misses "$OUT/xip.report")
 if [ "$m" = 0 ] && [ "${f:-0}" -gt 0 ]; then
     ok "XIP cache model: no miss in the render ($(val xip_render_flash_reads "$OUT/xip.report") flash reads); $f misses with code and tables in flash"
@@ -284,7 +284,7 @@ fi
 # A crystal that never starts: the bounded wait expires, the firmware says
 # which, stops with status 5 and leaves the LED off
 b=$(elf_of SCENE=scenes/bench/card.nff SIZE=40x30 DEPTH=3)
-msg=$(node platform/pico/run.mjs --no-crystal "$b.elf" "$OUT/nocrystal.png" "$RT" 2>&1); status=$?
+msg=$(node tools/emu/pico/run.mjs --no-crystal "$b.elf" "$OUT/nocrystal.png" "$RT" 2>&1); status=$?
 if [ $status -eq 5 ] && echo "$msg" | grep -q 'XOSC) never became stable' && echo "$msg" | grep -q 'LED (GP25) at the end: off'; then
     ok "no crystal: status 5, '$(echo "$msg" | grep XOSC)', LED off"
 else
@@ -300,9 +300,9 @@ python3 -c "import sys
 d = bytearray(open(sys.argv[1], 'rb').read())
 d[32 + 10] ^= 0x01          # a byte of boot2's code in the first block's payload
 open(sys.argv[2], 'wb').write(d)" "$base.uf2" "$OUT/badcrc/fixed.uf2"
-msg=$(node platform/pico/uf2.mjs check "$OUT/badcrc/fixed.uf2" 2>&1) && bad "uf2.mjs check passed a damaged boot2: $msg" ||
+msg=$(node tools/emu/pico/uf2.mjs check "$OUT/badcrc/fixed.uf2" 2>&1) && bad "uf2.mjs check passed a damaged boot2: $msg" ||
     { echo "$msg" | grep -q 'CRC' && ok "uf2.mjs check: $msg" || bad "uf2.mjs check without a CRC message: $msg"; }
-msg=$(node platform/pico/run.mjs "$OUT/badcrc/fixed.elf" "$OUT/badcrc.png" "$RT" 2>&1); status=$?
+msg=$(node tools/emu/pico/run.mjs "$OUT/badcrc/fixed.elf" "$OUT/badcrc.png" "$RT" 2>&1); status=$?
 if [ $status -ne 0 ] && echo "$msg" | grep -q 'CRC' && echo "$msg" | grep -q 'USB boot'; then
     ok "a damaged boot2 CRC: $(echo "$msg" | grep CRC | head -1)"
 else
@@ -315,20 +315,20 @@ fault_image() { # NAME BOOT2-OBJECT: $OUT/fault/NAME.elf and .uf2
         -Wl,--section-start=.boot2=0x10000000 -Wl,--section-start=.text=0x10000100 \
         -o "$OUT/fault/$1.elf" tests/pico_fault.S "$2" &&
         arm-none-eabi-objcopy -O binary "$OUT/fault/$1.elf" "$OUT/fault/$1.bin" &&
-        node platform/pico/uf2.mjs pack "$OUT/fault/$1.bin" "$OUT/fault/$1.uf2"
+        node tools/emu/pico/uf2.mjs pack "$OUT/fault/$1.bin" "$OUT/fault/$1.uf2"
 }
 mkdir -p "$OUT/fault"
 boot2=build/board/pico/boot2/boot2_crc.o
 arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles -e start -DFAULT_BOOT2 -Wl,-Ttext=0x20041f00 \
     -o "$OUT/fault/boot2.elf" tests/pico_fault.S && arm-none-eabi-objcopy -O binary "$OUT/fault/boot2.elf" "$OUT/fault/boot2.bin" &&
-    node platform/pico/uf2.mjs boot2 "$OUT/fault/boot2.bin" "$OUT/fault/boot2.S" &&
+    node tools/emu/pico/uf2.mjs boot2 "$OUT/fault/boot2.bin" "$OUT/fault/boot2.S" &&
     arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -c "$OUT/fault/boot2.S" -o "$OUT/fault/boot2.o"
 for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothing is mapped" "XIP $OUT/fault/boot2.o SSI not set up"; do
     set -- $f
     name=$1 obj=$2
     shift 2
     if fault_image "$name" "$obj" >"$OUT/fault/$name.build" 2>&1; then
-        msg=$(node platform/pico/run.mjs "$OUT/fault/$name.elf" "$OUT/fault/$name.png" "$RT" 2>&1); status=$?
+        msg=$(node tools/emu/pico/run.mjs "$OUT/fault/$name.elf" "$OUT/fault/$name.png" "$RT" 2>&1); status=$?
         if [ $status -ne 0 ] && echo "$msg" | grep -q "$*"; then
             ok "$(echo "$name" | tr A-Z a-z): $(echo "$msg" | grep "$*" | head -1 | cut -c1-150)"
         else
@@ -339,7 +339,7 @@ for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothin
     fi
 done
 
-# The second core as run.mjs models it (platform/pico/core1.mjs), on
+# The second core as run.mjs models it (tools/emu/pico/core1.mjs), on
 # small images (tests/pico_core1.c): the launch through the boot ROM's
 # wait, FIFOs, events, spinlocks, per-core SIO, a core-1 reset; and each
 # broken use fails with its reason
@@ -347,11 +347,11 @@ core1_image() { # NAME [CASE]
     arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os -ffreestanding -nostdlib -Wall -Wextra -Werror ${2:+-DCASE_$2} \
         -T tests/pico_core1.ld -o "$OUT/core1/$1.elf" tests/pico_core1.c "$boot2" -lgcc &&
         arm-none-eabi-objcopy -O binary "$OUT/core1/$1.elf" "$OUT/core1/$1.bin" &&
-        node platform/pico/uf2.mjs pack "$OUT/core1/$1.bin" "$OUT/core1/$1.uf2" >/dev/null
+        node tools/emu/pico/uf2.mjs pack "$OUT/core1/$1.bin" "$OUT/core1/$1.uf2" >/dev/null
 }
 mkdir -p "$OUT/core1"
 if core1_image pass >"$OUT/core1/pass.build" 2>&1 &&
-   node platform/pico/run.mjs "$OUT/core1/pass.elf" "$OUT/core1/pass.png" "$RT" >"$OUT/core1/pass.report" 2>&1; then
+   node tools/emu/pico/run.mjs "$OUT/core1/pass.elf" "$OUT/core1/pass.png" "$RT" >"$OUT/core1/pass.report" 2>&1; then
     # each value as the datasheet gives it (the list in tests/pico_core1.c)
     for kv in stale_vld=1 stale_word=0 launched=1 cpuid0=0 cpuid1=1 roe_at_entry=10 div0=333 div1=142857 locked_count=200 \
               sev_woke=1 wfi_after_sev=0 wfi_irq_word=77 own_event=1 lock_first=32 lock_again=0 lock_st=32 lock_core1_held=0 lock_core1_freed=32 \
@@ -382,7 +382,7 @@ for f in "ONE_ZERO expected 0 (the second of 0, 0, 1).*received 0x00000001" \
          "UNGUARDED core 1 writes 0x20000100, in the data the image guards by spinlock"; do
     name=${f%% *} want=${f#* }
     if core1_image "$name" "$name" >"$OUT/core1/$name.build" 2>&1; then
-        msg=$(node platform/pico/run.mjs "$OUT/core1/$name.elf" "$OUT/core1/$name.png" "$RT" 2>&1); status=$?
+        msg=$(node tools/emu/pico/run.mjs "$OUT/core1/$name.elf" "$OUT/core1/$name.png" "$RT" 2>&1); status=$?
         if [ $status -ne 0 ] && echo "$msg" | grep -q "on core [01]: .*$want\|^pico run: $want"; then
             ok "core 1 $(echo "$name" | tr A-Z_ a-z\ ): $(echo "$msg" | grep 'pico run' | cut -c1-160)"
         else
@@ -413,7 +413,7 @@ cmds = [i for i in range(0, len(d), 2) if d[i] & 0x81 == 0]
 $6
 open(sys.argv[2], 'wb').write(d)" "$2" "$OUT/bad.spi"
     rm -f "$OUT/bad.stream" "$OUT/bad.png"
-    msg=$(node platform/pico/run.mjs --panel "$OUT/bad.spi" 47 31 "$OUT/bad.stream" "$3" "$4" 2>&1); status=$?
+    msg=$(node tools/emu/pico/run.mjs --panel "$OUT/bad.spi" 47 31 "$OUT/bad.stream" "$3" "$4" 2>&1); status=$?
     if [ "$7" = differs ]; then
         if [ $status -eq 0 ] && "$RT" receive "$OUT/bad.stream" -o "$OUT/bad.png" >/dev/null &&
            cmp=$("$RT" compare "$OUT/bad.png" "$5" --max-error 0); then
@@ -455,7 +455,7 @@ if [ -f "$log320" ] && [ -f "$log240" ]; then
     # the intact logs decode to the images the runs wrote
     for p in "$log320 320x240 0" "$log240 240x240 1"; do
         set -- $p
-        if node platform/pico/run.mjs --panel "$1" 47 31 "$OUT/good.stream" "$2" "$3" && "$RT" receive "$OUT/good.stream" -o "$OUT/good.png" >/dev/null &&
+        if node tools/emu/pico/run.mjs --panel "$1" 47 31 "$OUT/good.stream" "$2" "$3" && "$RT" receive "$OUT/good.stream" -o "$OUT/good.png" >/dev/null &&
            "$RT" compare "$OUT/good.png" "$host" --max-error 0 >/dev/null; then
             ok "the intact SPI log of the $2 module$( [ "$3" = 1 ] && echo ', flipped') decodes to the host's image"
         else
@@ -470,7 +470,7 @@ fi
 # teapot-2: 39 KB of tables) at the panel's full size
 if make -s -j2 firmware BOARD=pico SCENE=scenes/spd/teapot-2.nff SIZE=320x240 DEPTH=5 >"$OUT/teapot.build" 2>&1; then
     used=$(arm-none-eabi-objdump -h "$(elf_of SCENE=scenes/spd/teapot-2.nff SIZE=320x240 DEPTH=5).elf" |
-        awk -f platform/firmware/sections.awk | awk '$5 != "flash" { n += $2 } END { print n }')
+        awk -f tools/firmware/sections.awk | awk '$5 != "flash" { n += $2 } END { print n }')
     [ "$used" -le 262144 ] && ok "teapot-2 at 320x240 links: $used bytes of SRAM (code, tables, data, bss, stack) of 262144" ||
         bad "teapot-2 at 320x240: $used bytes of SRAM"
 else

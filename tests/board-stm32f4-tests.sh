@@ -101,12 +101,12 @@ fi
 # a fault: status 4 and its line, not a hang
 fault="$OUT/fault.elf"
 if ${cross}gcc -mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard -O2 -ffreestanding -nostdlib -nostartfiles \
-       -DBOARD_COUNTERS_PROBED=1 -DBOARD_LED=1 -DBOARD_CYCLES=1 -Iinclude -Iplatform/firmware \
-       -T platform/stm32f4/link.ld -Lplatform/firmware -Wl,--defsym=STM32_FLASH=1024K,--defsym=STM32_RAM=128K \
+       -DBOARD_COUNTERS_PROBED=1 -DBOARD_LED=1 -DBOARD_CYCLES=1 -Iinclude -Iplatform -Iapp/firmware \
+       -T platform/stm32f4/link.ld -Lapp/firmware -Wl,--defsym=STM32_FLASH=1024K,--defsym=STM32_RAM=128K \
        tests/stm32f4_fault.c platform/arch/cortex-m/startup.c platform/stm32f4/board.c platform/stm32f4/clock.c \
-       platform/firmware/report.c \
+       app/firmware/report.c \
        -lgcc -o "$fault" 2>"$OUT/fault.build"; then
-    QEMU="qemu-system-arm -M netduinoplus2" RUN_END=report timeout 120 sh platform/firmware/run.sh "$fault" \
+    QEMU="qemu-system-arm -M netduinoplus2" RUN_END=report timeout 120 sh tools/firmware/run.sh "$fault" \
         "$OUT/fault.png" "$RT" >"$OUT/fault.report" 2>"$OUT/fault.err"
     st=$?
     if [ $st = 4 ] && grep -aq 'fault: abort' "${fault%.elf}.stream" && grep -aq 'exit_status 4' "${fault%.elf}.stream"; then

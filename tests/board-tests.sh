@@ -216,8 +216,8 @@ fi
 # The stream sink on the host against a console whose bytes take time (a
 # real UART's; QEMU's is always ready): each call's output is all counted
 # as output, the end record's included (tests/sink_stream_test.c).
-if cc -std=c11 -Wall -Wextra -Werror -DBOARD_CYCLES=1 -Iinclude -Iplatform/firmware tests/sink_stream_test.c \
-       platform/firmware/sink_stream.c platform/firmware/sink_io.c platform/firmware/report.c -o "$OUT/sink-stream-test" \
+if cc -std=c11 -Wall -Wextra -Werror -DBOARD_CYCLES=1 -Iinclude -Iplatform -Iapp/firmware tests/sink_stream_test.c \
+       app/firmware/sink_stream.c app/firmware/sink_io.c app/firmware/report.c -o "$OUT/sink-stream-test" \
        2>"$OUT/sink-stream.build" && "$OUT/sink-stream-test" >"$OUT/sink-stream.txt"; then
     ok "stream sink: $(tail -1 "$OUT/sink-stream.txt" | cut -d' ' -f2-), every byte out counted as output"
 else

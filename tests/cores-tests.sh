@@ -1,5 +1,5 @@
 #!/bin/sh
-# Two cores (mps2-an521, platform/firmware/bands.c), 64x64, depth 5:
+# Two cores (mps2-an521, app/firmware/bands.c), 64x64, depth 5:
 #  - the two-core image is byte-identical to the same board on one core
 #    (make CORES=1) and to the host fixed build; the UART stream's frame
 #    records (header, bands, end) are byte-identical to one core's;

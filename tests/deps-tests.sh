@@ -1,5 +1,5 @@
 #!/bin/sh
-# platform/ensure-deps.sh on a machine where nothing is installed: a PATH
+# tools/ensure-deps.sh on a machine where nothing is installed: a PATH
 # of the few tools the script runs plus stubs (dpkg-query knows no package,
 # apt-get and npm succeed or fail as asked, id says root), so
 #  - make run (the default board) asks for the host build and the ARM
@@ -124,7 +124,7 @@ else
     bad "make test: $out"
 fi
 : >"$STUB_LOG"
-out=$(ENSURE_DEPS_DRY_RUN=1 stub sh platform/ensure-deps.sh run gcc-riscv64-unknown-elf qemu-system-misc)
+out=$(ENSURE_DEPS_DRY_RUN=1 stub sh tools/ensure-deps.sh run gcc-riscv64-unknown-elf qemu-system-misc)
 if has "$out" gcc-riscv64-unknown-elf qemu-system-misc && lacks "$out" '^(gcc-arm-none-eabi|qemu-system-arm|nodejs)$' &&
     [ ! -s "$STUB_LOG" ]; then
     ok "run with a board's packages (sifive_e): those, not the default board's; a dry run calls no apt-get"
@@ -133,7 +133,7 @@ else
 fi
 
 # a failing apt-get: the package, the command, what to do, exit 1
-out=$(APT_FAIL=qemu-system-arm ENSURE_DEPS_FOR='make run (BOARD=mps2-an385)' stub sh platform/ensure-deps.sh run)
+out=$(APT_FAIL=qemu-system-arm ENSURE_DEPS_FOR='make run (BOARD=mps2-an385)' stub sh tools/ensure-deps.sh run)
 status=$?
 if [ $status -ne 0 ] &&
     printf '%s\n' "$out" | grep -qxF "ensure-deps: could not install qemu-system-arm, needed by make run (BOARD=mps2-an385): E: Unable to locate package qemu-system-arm" &&
@@ -144,7 +144,7 @@ else
 fi
 
 # no mirror: every package named, and apt-get update's warning
-out=$(APT_OFFLINE=1 stub sh platform/ensure-deps.sh run)
+out=$(APT_OFFLINE=1 stub sh tools/ensure-deps.sh run)
 status=$?
 if [ $status -ne 0 ] &&
     printf '%s\n' "$out" | grep -q "^ensure-deps: could not install gcc make binutils gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm, needed by make run: E: Unable to locate package" &&
@@ -156,7 +156,7 @@ fi
 
 # not root and no sudo: says so, exit 1, no apt-get
 : >"$STUB_LOG"
-out=$(STUB_UID=1000 stub sh platform/ensure-deps.sh run)
+out=$(STUB_UID=1000 stub sh tools/ensure-deps.sh run)
 status=$?
 if [ $status -ne 0 ] && [ ! -s "$STUB_LOG" ] &&
     printf '%s\n' "$out" | grep -q "^ensure-deps: could not install .*qemu-system-arm, needed by make run: installing needs root, and there is no sudo"; then
@@ -171,7 +171,7 @@ echo "a certificate" >"$OUT/ca.crt"
 ENSURE_DEPS_CA_BUNDLE=$PWD/$OUT/ca.crt
 export ENSURE_DEPS_CA_BUNDLE
 : >"$STUB_LOG"
-out=$(NPM=1 NPM_CAFILE_OK=1 stub sh platform/ensure-deps.sh run gcc-arm-none-eabi nodejs)
+out=$(NPM=1 NPM_CAFILE_OK=1 stub sh tools/ensure-deps.sh run gcc-arm-none-eabi nodejs)
 status=$?
 if [ $status -eq 0 ] && grep -q "npm ci .*--cafile=$ENSURE_DEPS_CA_BUNDLE" "$STUB_LOG" &&
     printf '%s\n' "$out" | grep -q "installed with the system's certificates"; then
@@ -179,10 +179,10 @@ if [ $status -eq 0 ] && grep -q "npm ci .*--cafile=$ENSURE_DEPS_CA_BUNDLE" "$STU
 else
     bad "npm ci with the system's certificates: exit $status: $out; $(cat "$STUB_LOG")"
 fi
-out=$(NPM=1 ENSURE_DEPS_FOR='make run (BOARD=pico)' stub sh platform/ensure-deps.sh run gcc-arm-none-eabi nodejs)
+out=$(NPM=1 ENSURE_DEPS_FOR='make run (BOARD=pico)' stub sh tools/ensure-deps.sh run gcc-arm-none-eabi nodejs)
 status=$?
 if [ $status -ne 0 ] &&
-    printf '%s\n' "$out" | grep -q '^ensure-deps: could not install rp2040js@1.4.1 (npm ci in platform/pico), needed by make run (BOARD=pico): npm error' &&
+    printf '%s\n' "$out" | grep -q '^ensure-deps: could not install rp2040js@1.4.1 (npm ci in tools/emu/pico), needed by make run (BOARD=pico): npm error' &&
     printf '%s\n' "$out" | grep -q 'SELF_SIGNED_CERT_IN_CHAIN' &&
     printf '%s\n' "$out" | grep -q 'NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt' &&
     printf '%s\n' "$out" | grep -q 'NODE_OPTIONS=--use-openssl-ca' &&
@@ -192,7 +192,7 @@ else
     bad "npm ci fails: exit $status: $out"
 fi
 
-out=$(stub sh platform/ensure-deps.sh build 2>&1)
+out=$(stub sh tools/ensure-deps.sh build 2>&1)
 status=$?
 if [ $status -eq 2 ] && printf '%s\n' "$out" | grep -q '^usage: '; then
     ok "an unknown mode: usage, exit 2"

@@ -106,7 +106,7 @@ check(not missing, "%d rt options the docs name are in rt's help%s" % (len(named
 
 # make targets and variables
 vars_read = set()
-for mk in ["Makefile", "platform/firmware/firmware.mk"] + glob.glob("platform/*/board.mk"):
+for mk in ["Makefile", "app/firmware/firmware.mk"] + glob.glob("platform/*/board.mk"):
     with open(mk) as f:
         vars_read.update(re.findall(r"\$\(([A-Z_][A-Z0-9_]*)\)", f.read()))
         f.seek(0)

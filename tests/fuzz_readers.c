@@ -5,7 +5,7 @@
  * scale and resolution) or rejected by all three with the same
  * "line: message", degenerate shapes and views included (the reader
  * decides them on the position grid, docs/scenes.md). Built from the
- * three backends' objects (platform/hosted/backend.h) at the host
+ * three backends' objects (app/rt/backend.h) at the host
  * capacities, like rt.
  */
 #include <stdio.h>

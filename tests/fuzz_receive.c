@@ -1,6 +1,6 @@
 /*
  * fuzz_receive.c - libFuzzer harness over the decoder of the board's UART
- * stream (platform/hosted/uart_stream.c, what `rt receive` runs), under
+ * stream (app/rt/uart_stream.c, what `rt receive` runs), under
  * ASan and UBSan. The input is the stream itself (the seeds are streams
  * from QEMU runs), decoded twice: read whole, as from a file; and handed
  * over 1 to 13 bytes at a time by a source that goes idle right after

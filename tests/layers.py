@@ -10,8 +10,16 @@ File A depends on file B when A's object refers to a symbol B's object
 defines (calls, and function pointers such as the reader's keyword
 table); inline functions of headers count for the file that uses them.
 Headers are checked by their #include lines. The objects are one
-backend's compilation of the core (default build/asan/fixed). Prints the
-dependencies and "layers: N passed, M failed"."""
+backend's compilation of the core (default build/asan/fixed).
+
+Around the core, by #include lines: app/rt/ (the rt command) and tools/
+use src/ and include/; app/firmware/ (the firmware every board runs)
+uses src/, include/ and the port contract platform/port.h, no board's
+own files; platform/ (the ports) uses include/, platform/ and, of
+app/firmware/, only sink.h (what a display driver implements); src/
+uses none of them. platform/ holds ports only: C, assembler, linker
+scripts and make fragments, no scripts or emulators (tools/).
+Prints the dependencies and "layers: N passed, M failed"."""
 import glob
 import os
 import re
@@ -23,8 +31,11 @@ RANK = {'': 0, 'numeric': 1, 'geometry': 2, 'reader': 3, 'tracer': 3}
 
 objdir = sys.argv[1] if len(sys.argv) > 1 else 'build/asan/fixed'
 failed = []
+checks = 0
 
 def check(ok, text):
+    global checks
+    checks += 1
     print('  %s  %s' % ('ok  ' if ok else 'FAIL', text))
     if not ok:
         failed.append(text)
@@ -102,6 +113,66 @@ for v in sorted(deps):
         visit(v)
 check(not cycles, 'no call cycle between files%s' % (': %s' % cycles if cycles else ''))
 
-n = 4
-print('layers: %d passed, %d failed' % (n - len(failed), len(failed)))
+# ---- the tree around the core: app/, platform/, tools/ -------------------
+# An include is looked up beside the file, then in every folder a build
+# names with -I (so a forbidden one is found whichever build would see it).
+ROOTS = ['include', 'src', 'platform', 'app/firmware', 'app/rt']
+
+def area(path):
+    """The part of the tree a file belongs to: src, include, app/rt,
+    app/firmware, platform or tools."""
+    parts = path.split('/')
+    return '/'.join(parts[:2]) if parts[0] == 'app' else parts[0]
+
+def resolve(user, inc):
+    for d in [os.path.dirname(user)] + ROOTS:
+        p = os.path.normpath(os.path.join(d, inc))
+        if os.path.isfile(p):
+            return p
+    return None  # a system header, or one a build writes (scene_data.h)
+
+# who may include what: the areas a file's includes may resolve to, and
+# single files allowed from an area otherwise closed to it
+MAY_USE = {
+    'src': ({'src', 'include'}, set()),
+    'app/rt': ({'app/rt', 'src', 'include'}, set()),
+    'tools': ({'tools', 'app/rt', 'src', 'include'}, set()),
+    'app/firmware': ({'app/firmware', 'src', 'include'}, {'platform/port.h'}),
+    'platform': ({'platform', 'include'}, {'app/firmware/sink.h'}),
+}
+uses, bad_tree = set(), []
+for top in MAY_USE:
+    for path in sorted(glob.glob('%s/**/*.[chS]' % top, recursive=True)):
+        if 'node_modules' in path:
+            continue
+        for n, line in enumerate(open(path, errors='replace'), 1):
+            m = re.match(r'\s*#\s*include\s+"([^"]+)"', line)
+            used = m and resolve(path, m.group(1))
+            if not used:
+                continue
+            uses.add((area(path), used))
+            areas, files = MAY_USE[area(path)]
+            if area(used) not in areas and used not in files:
+                bad_tree.append('%s:%d: %s (%s)' % (path, n, m.group(1), used))
+# the look-up finds what the builds use (else the rule above checks nothing)
+seen = [(a, u) for a, u in [('app/firmware', 'platform/port.h'), ('platform', 'platform/port.h'),
+                            ('platform', 'app/firmware/sink.h'), ('app/rt', 'include/rt_fb.h'),
+                            ('app/firmware', 'src/tracer/trace.h')] if (a, u) in uses]
+check(len(seen) == 5, 'includes around the core are found (%s)' % ', '.join('%s -> %s' % s for s in seen))
+check(not bad_tree, 'src/ uses no app/ or platform/; app/rt/ and tools/ no platform/ or app/firmware/; '
+      'app/firmware/ of platform/ only port.h; platform/ of app/ only app/firmware/sink.h%s' %
+      (': ' + ', '.join(bad_tree) if bad_tree else ''))
+
+# platform/ holds the ports only: sources, linker scripts, make fragments
+PORT_FILES = ('.c', '.h', '.S', '.ld', '.mk')
+not_port = sorted(p for p in glob.glob('platform/**/*', recursive=True)
+                  if os.path.isfile(p) and not p.endswith(PORT_FILES) and 'node_modules' not in p)
+check(not not_port, 'platform/ holds only %s files%s' %
+      (' '.join(PORT_FILES), ': not ' + ', '.join(not_port) if not_port else ''))
+boards = sorted(os.path.dirname(p) for p in glob.glob('platform/*/board.mk'))
+others = sorted(d for d in glob.glob('platform/*/') if d.rstrip('/') not in boards and d != 'platform/arch/')
+check(boards and not others, 'every folder of platform/ is a board (board.mk) or arch/: %d boards%s' %
+      (len(boards), ', not ' + ' '.join(others) if others else ''))
+
+print('layers: %d passed, %d failed' % (checks - len(failed), len(failed)))
 sys.exit(1 if failed else 0)

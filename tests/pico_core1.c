@@ -1,6 +1,6 @@
 /*
  * pico_core1.c - small images for run.mjs's model of the RP2040's second
- * core (platform/pico/core1.mjs), for tests/board-pico-tests.sh. Built
+ * core (tools/emu/pico/core1.mjs), for tests/board-pico-tests.sh. Built
  * with tests/pico_core1.ld after our boot2, run from flash at the ring
  * oscillator's clock (no PLL: nothing here needs speed).
  *

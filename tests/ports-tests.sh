@@ -89,7 +89,7 @@ for n in ("FLASH", "RAM"):
     print("%s=%d" % (n.lower(), int(m.group(1), 16)), end=" ")' "$map")"
             # flash: what is loaded; RAM: what is not, and what reset
             # copies there (.data; code and scene tables run from SRAM)
-            eval "$(${cross}objdump -h "$elf" | awk -f platform/firmware/sections.awk | awk '
+            eval "$(${cross}objdump -h "$elf" | awk -f tools/firmware/sections.awk | awk '
                 $5 != "ram" { fl += $2 } $5 != "flash" { ram += $2 }
                 END { printf "used_flash=%d used_ram=%d\n", fl, ram }')"
             if [ "${flash:-0}" -gt 0 ] && [ "$used_flash" -le "$flash" ] && [ "${ram:-0}" -gt 0 ] && [ "$used_ram" -le "$ram" ]; then

@@ -1,5 +1,5 @@
 #!/bin/sh
-# make run's report (platform/firmware/summary.sh) on every board of
+# make run's report (tools/firmware/summary.sh) on every board of
 # platform/*/board.mk, from a canned board report and canned `rt compare`
 # lines (no emulator runs):
 #  - the opening lines read as sentences: the board's BOARD_TITLE whole,
@@ -45,7 +45,7 @@ blur="psnr 58.39 dB  max-error 3  over2 0.000%  over8 0.000%"
 summarize() {
     SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 BOARD=$1 BOARD_TITLE=$title CLOCK_HZ=$hz BACKEND=fixed \
         SAMPLING=$3 OUT=out/x.png IMAGE_NOTE="" TIME_TABLE=${4:-$table} \
-        sh platform/firmware/summary.sh "$2" "$exact" "$area" "$blur" | sed '/^The board/,$d'
+        sh tools/firmware/summary.sh "$2" "$exact" "$area" "$blur" | sed '/^The board/,$d'
 }
 # sentences TEXT: what is wrong with the opening lines as sentences, or nothing
 sentences() {
@@ -144,7 +144,7 @@ else
 fi
 
 # every runner prints the wall-time line summary.sh reads
-for r in platform/*/run.sh platform/pico/run.mjs; do
+for r in tools/firmware/run.sh tools/emu/*/run.sh tools/emu/pico/run.mjs; do
     [ -f "$r" ] || continue
     grep -q '\(QEMU\|rp2040js\) wall time on the host (' "$r" &&
         ok "$r prints \"<emulator> wall time on the host (...)\"" ||

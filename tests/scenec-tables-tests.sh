@@ -43,8 +43,8 @@ for b in float double; do
     flag=-DRT_BACKEND_$(echo $b | tr a-z A-Z)=1
     d="$out/$b"
     mkdir -p "$d"
-    if ! log "$b-scenec" cc $WARN -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -Iplatform/hosted \
-        -o "$d/rt-scenec" tools/scenec.c platform/hosted/host_io.c src/*.c src/*/*.c -lm; then
+    if ! log "$b-scenec" cc $WARN -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $CAPS $flag -Iinclude -Isrc -Iapp/rt \
+        -o "$d/rt-scenec" tools/scenec.c app/rt/host_io.c src/*.c src/*/*.c -lm; then
         bad "$b: rt-scenec does not build"
         continue
     fi
@@ -91,7 +91,7 @@ if command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/n
     M4="-mcpu=cortex-m4 -mthumb -mfpu=fpv4-sp-d16 -mfloat-abi=hard"
     # mps2-an386's board.mk: the AN385's board.c and link.ld
     PORT="platform/arch/cortex-m/startup.c platform/arch/cortex-m/semihost.c platform/mps2-an385/board.c
-          platform/firmware/report.c platform/firmware/stack.c platform/firmware/libc_min.c"
+          app/firmware/report.c app/firmware/stack.c app/firmware/libc_min.c"
     d="$out/m4f"
     mkdir -p "$d"
     # soft-float helpers (double arithmetic, conversions) and libm in an image
@@ -112,8 +112,8 @@ if command -v arm-none-eabi-gcc >/dev/null && command -v qemu-system-arm >/dev/n
         elf="$d/$name.elf"
         if ! log "m4f-$name" arm-none-eabi-gcc $WARN $M4 -O2 -ffreestanding -fno-math-errno -ffp-contract=off \
             -ffunction-sections -fdata-sections -DRT_BACKEND_FLOAT=1 -DRT_USE_SPD=0 -DTABLES_BOARD=1 \
-            -Iinclude -Isrc -Iplatform/firmware -nostdlib -nostartfiles -Wl,--gc-sections \
-            -T platform/mps2-an385/link.ld -Lplatform/firmware -o "$elf" \
+            -Iinclude -Isrc -Iplatform -Iapp/firmware -nostdlib -nostartfiles -Wl,--gc-sections \
+            -T platform/mps2-an385/link.ld -Lapp/firmware -o "$elf" \
             tests/scenec_tables.c "$out/float/$name.c" src/*.c src/*/*.c $PORT -lgcc; then
             bad "Cortex-M4F, $name: does not build"
             continue

@@ -1,5 +1,5 @@
 /*
- * sink_stream_test.c - the stream sink (platform/firmware/sink_stream.c)
+ * sink_stream_test.c - the stream sink (app/firmware/sink_stream.c)
  * and its output accounting (sink_io.c) on the host, against a console
  * whose every byte takes time, as a real UART's does (QEMU's is always
  * ready, so no board run shows it): each of begin(), flush() and end()

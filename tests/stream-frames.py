@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """stream-frames.py A.stream B.stream: whether two UART streams (format in
-platform/firmware/sink.h) carry the same frame: the same header, band
+app/firmware/sink.h) carry the same frame: the same header, band
 records (position, lines, pixels, checksum) and end record, in the same
 order. Report ('T') records may differ. Prints what it compared; exit 1
 on a difference or a malformed stream."""

@@ -9,7 +9,7 @@
 # skip (make test installs both); cc missing fails.
 STRICT="-std=c11 -Wall -Wextra -Wpedantic -Wshadow -Wundef -Wcast-align -Wdouble-promotion -Werror"
 COMMON="-ffreestanding -O2 -Iinclude -Isrc"
-# the Makefile's HOST_CAPS, and platform/firmware/firmware.mk's BOARD_CAPS
+# the Makefile's HOST_CAPS, and app/firmware/firmware.mk's BOARD_CAPS
 # and feature macros (RT_USE_* not given are on: rt_config.h)
 HOST="-DRT_MAX_SPHERES=16384 -DRT_MAX_CONES=16384 -DRT_MAX_POLYGONS=16384 -DRT_MAX_VERTICES=65536
       -DRT_MAX_LIGHTS=32 -DRT_MAX_MATERIALS=1024 -DRT_MAX_WORKERS=64 -DRT_MAX_DEPTH=8"

@@ -1,5 +1,5 @@
 #!/bin/sh
-# rt --threads N (platform/hosted/bands.c: one thread renders the frame or
+# rt --threads N (app/rt/bands.c: one thread renders the frame or
 # viewport in one call of the core; two or more start on equal runs of
 # lines and split what is left when one runs out): the same image, byte
 # for byte, for N = 1, 2 and 3,

@@ -2,8 +2,8 @@
 # QEMU: a Cortex-M3 (no FPU) set to 50 MHz, 256 KiB flash, 64 KiB SRAM,
 # and an SSD0323 128x64 OLED with 4-bit grey pixels on SSI0, where the
 # frame goes (oled.c, band by band, no frame buffer). Only the report
-# lines go over UART0; run.sh captures the panel through QEMU's monitor.
-# The port contract and the variables are in platform/firmware/firmware.mk.
+# lines go over UART0; tools/emu/lm3s6965evb/run.sh captures the panel through QEMU's monitor.
+# The port contract and the variables are in app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := TI Stellaris LM3S6965 evaluation board with a Cortex-M3, no FPU and a 128x64 OLED
 BOARD_ARCH     := cortex-m
@@ -19,7 +19,7 @@ BOARD_SRC      := platform/lm3s6965evb/board.c
 BOARD_LD       := platform/lm3s6965evb/link.ld
 BOARD_SINK     := platform/lm3s6965evb/oled.c
 BOARD_SINK_CALLBACKS := oled_begin,oled_flush,oled_end
-BOARD_RUN      := platform/lm3s6965evb/run.sh
+BOARD_RUN      := tools/emu/lm3s6965evb/run.sh
 BOARD_CFLAGS   += -DSINK_HOLDS_FRAME=1
 # the panel's pixel format, whatever FORMAT says
 FW_FORMAT      := l4

@@ -14,7 +14,8 @@
  * frame_height, which tell the host what part of the panel to take.
  *
  * The frame stays on the panel (SINK_HOLDS_FRAME, board.mk): the firmware
- * reports "drawn 1" and idles while the host captures the panel (run.sh).
+ * reports "drawn 1" and idles while the host captures the panel
+ * (tools/emu/lm3s6965evb/run.sh).
  * Only what QEMU's SSD0323 model acts on is sent; a real panel also needs
  * its power-up sequence (supply, contrast, multiplex, remap).
  */

@@ -1,5 +1,5 @@
 # board.mk - ARM MPS2 AN385 under QEMU: a Cortex-M3 at 25 MHz, no FPU.
-# The port contract and the variables are in platform/firmware/firmware.mk.
+# The port contract and the variables are in app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := ARM MPS2 AN385, an FPGA board (QEMU's model), with a Cortex-M3 and no FPU
 BOARD_ARCH     := cortex-m

@@ -1,7 +1,7 @@
 # board.mk - ARM MPS2 AN386 under QEMU: a Cortex-M4F at 25 MHz with the
 # single-precision FPU. Memory map and peripherals are the AN385's, so it
 # uses that port's board.c and link.ld; every build is hard-float (the
-# reset handler enables the FPU first). Variables: platform/firmware/firmware.mk.
+# reset handler enables the FPU first). Variables: app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := ARM MPS2 AN386, an FPGA board (QEMU's model), with a Cortex-M4F and its single-precision FPU
 BOARD_ARCH     := cortex-m

@@ -3,7 +3,7 @@
 # nor the DSP extension (QEMU's SSE-200 gives them to core 1 only: MVFR0
 # reads 0 on core 0, a VFP instruction faults NOCP there and a DSP one
 # UNDEFINSTR), and both cores run one image, so every build is soft-float
-# and without DSP instructions. Variables: platform/firmware/firmware.mk.
+# and without DSP instructions. Variables: app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := ARM MPS2 AN521, an FPGA board (QEMU's model), with two Cortex-M33, built without FPU or DSP
 BOARD_ARCH     := cortex-m
@@ -19,7 +19,7 @@ BOARD_CLOCK_HZ ?= 20000000
 BOARD_BACKENDS := fixed float double
 BOARD_SRC      := platform/mps2-an521/board.c
 BOARD_LD       := platform/mps2-an521/link.ld
-# both cores render (platform/firmware/bands.c, with port.h's multi-core
+# both cores render (app/firmware/bands.c, with port.h's multi-core
 # part); make CORES=1 renders on core 0 alone
 BOARD_CORES    := 2
 # bands of one line: the finest split between the cores. Critical path on

@@ -7,9 +7,9 @@
 # The image is for the chip: boot2 (boot2.S) first, code copied to SRAM,
 # clocks and resets brought up in board.c, cycles counted by SysTick,
 # the run ended by sleeping; the build writes <backend>.uf2 beside the
-# ELF (image.mk). run.mjs boots that UF2 under rp2040js the way the chip
-# does (rp2040js pinned in package.json, installed into node_modules/ by
-# npm ci, by platform/ensure-deps.sh). Variables: platform/firmware/firmware.mk.
+# ELF (image.mk). tools/emu/pico/run.mjs boots that UF2 under rp2040js
+# the way the chip does (rp2040js pinned in that folder's package.json,
+# installed into its node_modules/ by npm ci, by tools/ensure-deps.sh). Variables: app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := Raspberry Pi Pico (RP2040) with both Cortex-M0+ cores and no FPU
 BOARD_ARCH     := cortex-m
@@ -28,14 +28,14 @@ BOARD_BACKENDS := fixed float
 BOARD_SRC      := platform/pico/board.c
 BOARD_LD       := platform/pico/link.ld
 # (the module on the panel's pins, for the runner's model of its glass)
-BOARD_RUN       = node platform/pico/run.mjs --module $(PANEL)$(if $(filter 1,$(PANEL_FLIP)),$(comma)flip)
+BOARD_RUN       = node tools/emu/pico/run.mjs --module $(PANEL)$(if $(filter 1,$(PANEL_FLIP)),$(comma)flip)
 # SysTick counts cycles (board.c); the M0+ has no instruction counter, so
 # run.mjs counts instructions from outside the image; no semihosting: the
 # run ends with the exit status as a report line, then the core sleeps
 BOARD_CYCLES   := 1
 BOARD_INSTR_COUNTER := 0
 BOARD_ARCH_SKIP := semihost
-# both cores render (platform/firmware/bands.c, with port.h's multi-core
+# both cores render (app/firmware/bands.c, with port.h's multi-core
 # part: board.c); make CORES=1 renders on core 0 alone
 BOARD_CORES    := 2
 # the LED on GP25 blinks as bands are drawn (port_heartbeat, board.c)
@@ -44,7 +44,7 @@ BOARD_CFLAGS   += -DBOARD_LED=1
 BOARD_RULES    := platform/pico/image.mk
 BOARD_OBJS     := build/board/pico/boot2/boot2_crc.o
 BOARD_IMAGES    = $(FW_DIR)/$(BACKEND).uf2
-BOARD_IMAGE_SHOW := node platform/pico/uf2.mjs check
+BOARD_IMAGE_SHOW := node tools/emu/pico/uf2.mjs check
 BOARD_IMAGE_NOTE = copy it onto the RPI-RP2 drive (hold BOOTSEL while plugging the Pico in): docs/boards.md, On a real Pico
 # make run renders one sample a pixel: rp2040js runs 25 to 35 million
 # cycles a second, and the default scene anti-aliased (AA=3) takes about

@@ -10,12 +10,12 @@
  * starts the image through its vector table at 0x10000100.
  *
  * Built on its own (at most 252 bytes of code), then padded and given its
- * CRC by `uf2.mjs boot2`, which writes the .boot2 section the firmware
- * links at 0x10000000:
+ * CRC by `tools/emu/pico/uf2.mjs boot2`, which writes the .boot2
+ * section the firmware links at 0x10000000:
  *   arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles \
  *       -Wl,-Ttext=0x20041f00 -o boot2.elf platform/pico/boot2.S
  *   arm-none-eabi-objcopy -O binary boot2.elf boot2.bin
- *   node platform/pico/uf2.mjs boot2 boot2.bin boot2_crc.S
+ *   node tools/emu/pico/uf2.mjs boot2 boot2.bin boot2_crc.S
  *
  * Register offsets and field positions are from the RP2040 datasheet's
  * SSI register description (DW_apb_ssi), also in its SVD:

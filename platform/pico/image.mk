@@ -1,8 +1,9 @@
 # image.mk - the Pico's own build steps (BOARD_RULES in board.mk),
-# included by platform/firmware/firmware.mk after its rules:
+# included by app/firmware/firmware.mk after its rules:
 #  - boot2: boot2.S assembled for SRAM 0x20041f00 (where the boot ROM
-#    runs it), padded to 252 bytes and followed by its CRC (uf2.mjs), as
-#    the .boot2 section that link.ld puts first in flash;
+#    runs it), padded to 252 bytes and followed by its CRC
+#    (tools/emu/pico/uf2.mjs), as the .boot2 section that link.ld puts
+#    first in flash;
 #  - <backend>.uf2 beside each ELF: its flash image as UF2 blocks for the
 #    RPI-RP2 drive (family RP2040), checked as it is written, and, with
 #    the panel, that it draws the frame make built it for on that panel;
@@ -19,9 +20,9 @@ $(PICO_BOOT2)/boot2.bin: $(PICO_BOOT2)/boot2.elf
 	$(show) OBJCOPY $@
 	$(Q)$(FW_OBJCOPY) -O binary $< $@
 
-$(PICO_BOOT2)/boot2_crc.S: $(PICO_BOOT2)/boot2.bin platform/pico/uf2.mjs
+$(PICO_BOOT2)/boot2_crc.S: $(PICO_BOOT2)/boot2.bin tools/emu/pico/uf2.mjs
 	$(show) BOOT2 $@
-	$(Q)node platform/pico/uf2.mjs boot2 $< $@
+	$(Q)node tools/emu/pico/uf2.mjs boot2 $< $@
 
 $(PICO_BOOT2)/boot2_crc.o: $(PICO_BOOT2)/boot2_crc.S
 	$(show) AS $@
@@ -31,10 +32,10 @@ $(FW_DIR)/%.bin: $(FW_DIR)/%.elf
 	$(show) OBJCOPY $@
 	$(Q)$(FW_OBJCOPY) -O binary $< $@
 
-$(FW_DIR)/%.uf2: $(FW_DIR)/%.bin platform/pico/uf2.mjs
+$(FW_DIR)/%.uf2: $(FW_DIR)/%.bin tools/emu/pico/uf2.mjs
 	$(show) UF2 $@
-	$(Q)node platform/pico/uf2.mjs pack $< $@
-	@node platform/pico/uf2.mjs check $@ $(if $(filter st7789,$(PICO_DISPLAY)),--expect "frame $(SIZE) centred on the $(PANEL) ST7789 panel") >/dev/null
+	$(Q)node tools/emu/pico/uf2.mjs pack $< $@
+	@node tools/emu/pico/uf2.mjs check $@ $(if $(filter st7789,$(PICO_DISPLAY)),--expect "frame $(SIZE) centred on the $(PANEL) ST7789 panel") >/dev/null
 
 # make uf2: make image by the name Pico users look for
 uf2: image

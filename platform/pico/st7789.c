@@ -41,7 +41,7 @@
  * Per band: wait for the last transfer, then CASET and RASET (the band's
  * window, with the panel's offset), RAMWR and the band's bytes by DMA
  * channel 0 paced by SPI0's transmit request; chip select rises when the
- * transfer is done. With two cores (platform/firmware/bands.c) either core
+ * transfer is done. With two cores (app/firmware/bands.c) either core
  * sends a band, one at a time under the hand-over's lock, and waits for
  * its transfer (transfer_wait) before letting go of the lock: the other
  * core always finds the DMA channel idle and the panel released. What
@@ -60,9 +60,9 @@
  * board_pass_shown, where run.mjs takes the panel's picture; the report
  * adds first_picture_us, render start to pass 1 on the panel.
  *
- * Checked against run.mjs's model of the controller (st7789.mjs), not on
- * hardware: docs/boards.md, "On a real Pico", says what only a real
- * module can confirm.
+ * Checked against the runner's model of the controller
+ * (tools/emu/pico/st7789.mjs), not on hardware: docs/boards.md, "On a
+ * real Pico", says what only a real module can confirm.
  */
 #include "../arch/cortex-m/pl022.h"
 #include "board.h"

@@ -1,6 +1,6 @@
 # board.mk - SiFive HiFive1 (FE310, QEMU's sifive_e): an RV32IMAC core,
 # 16 KiB of RAM (DTIM), the program executed in place from SPI flash.
-# The port contract and the variables are in platform/firmware/firmware.mk.
+# The port contract and the variables are in app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := SiFive HiFive1 (FE310) with an RV32IMAC core, no FPU and 16 KiB of RAM
 BOARD_ARCH     := riscv

@@ -9,7 +9,7 @@
 # CYCCNT stays 0, the same image runs at the reset clock and counts
 # instructions with TIM2, and says so. The build writes <backend>.bin
 # and <backend>.hex beside the ELF (image.mk). Variables:
-# platform/firmware/firmware.mk.
+# app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    =  $(if $(filter f405,$(STM32)),an STM32F405/F407 board (STM32F4DISCOVERY and the like),a Nucleo-64 board (STM32F401/F411/F446)) with a Cortex-M4F and its single-precision FPU
 BOARD_ARCH     := cortex-m
@@ -22,7 +22,8 @@ BOARD_BACKENDS := fixed float double
 BOARD_SRC      := platform/stm32f4/board.c platform/stm32f4/clock.c
 BOARD_LD       := platform/stm32f4/link.ld
 # no semihosting: the run ends with the exit status as the last report
-# line, then the core sleeps; run.sh stops QEMU on that line
+# line, then the core sleeps; tools/firmware/run.sh stops QEMU on that
+# line
 BOARD_ARCH_SKIP := semihost
 # CYCCNT on the chip, TIM2's instruction count under QEMU: board.c finds
 # out at run time which works, and the report names it

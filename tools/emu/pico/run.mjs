@@ -43,7 +43,7 @@
 //   node run.mjs --panel FIRMWARE.spi W H OUT.stream [PANEL [FLIP]]
 //       Only the panel's decoding: the WxH frame centred on the module's
 //       picture, the rest checked black, as an rgb565be frame in rt's
-//       stream format (platform/firmware/sink.h).
+//       stream format (app/firmware/sink.h).
 //
 // The chip's state at boot2's start: every block of RESETS in reset but
 // IO_QSPI and PADS_QSPI (the ROM's), RESET_DONE its complement; clk_sys

@@ -1,6 +1,6 @@
 /*
  * port.h - the port contract: what a board folder (platform/<board>/)
- * gives the board-independent firmware in platform/firmware/.
+ * gives the board-independent firmware in app/firmware/.
  *
  * A port provides, in its own files:
  *   - start-up: a reset entry that copies .data, zeroes .bss, enables
@@ -17,10 +17,11 @@
  *   - a linker script that defines MEMORY, says where code, the scene's
  *     tables and the stack go (the region aliases CODE, SCENE and STACK)
  *     and includes
- *     platform/firmware/sections.ld (which defines the symbols below);
+ *     app/firmware/sections.ld (which defines the symbols below);
  *   - board.mk: CPU flags, QEMU command, clock, backends (docs/boards.md,
  *     "Adding a board").
- * Only platform/ includes this header; the core never does.
+ * Only app/firmware/ and platform/ include this header; the core (src/)
+ * never does.
  */
 #ifndef PORT_H
 #define PORT_H
@@ -39,7 +40,7 @@ void port_write(const void *data, size_t len);
  * instruction counter (the RP2040's Cortex-M0+) sets
  * BOARD_INSTR_COUNTER := 0 in its board.mk: it then provides neither,
  * its report gives no instruction counts, and the board's runner counts
- * them from outside the image (platform/pico/run.mjs). */
+ * them from outside the image (tools/emu/pico/run.mjs). */
 #ifndef BOARD_INSTR_COUNTER /* firmware.mk passes the board's */
 #define BOARD_INSTR_COUNTER 1
 #endif
@@ -90,7 +91,7 @@ static inline void port_heartbeat(void) {}
 /* Ends the run with this exit status. */
 void port_exit(int status) __attribute__((noreturn));
 
-/* ---- provided by platform/firmware/ for the port ------------------------ */
+/* ---- provided by app/firmware/ for the port ------------------------ */
 
 /* The stack region of sections.ld: painted at start, measured after. */
 void stack_paint(void);
@@ -106,7 +107,7 @@ void report_text(const char *text);
 /*
  * Only a board with a second core provides these (mps2-an521: two
  * Cortex-M33; pico: the RP2040's two Cortex-M0+); its board.mk sets
- * BOARD_CORES := 2 (platform/firmware/bands.c then splits the frame
+ * BOARD_CORES := 2 (app/firmware/bands.c then splits the frame
  * between the cores), and a single-core port neither defines nor links
  * any of them. Both cores run the same image, so port_exit() stays core
  * 0's, and core 1 reports through shared memory; the console may be
@@ -142,11 +143,11 @@ uint32_t port_atomic_add(volatile uint32_t *p, uint32_t v);
  * BOARD_INSTR_COUNTER 0: the pico, whose SysTick is each core's own):
  * the calling core's own cycles, which bands.c counts each core's work
  * with. Not port_cycles_read(): a runner may watch that one's calls as
- * each core's marks (platform/pico/run.mjs), which must stay the start of
+ * each core's marks (tools/emu/pico/run.mjs), which must stay the start of
  * its share of the render, its output's pairs and the end. */
 uint64_t port_core_cycles_read(void);
 
-/* Provided by platform/firmware/stack.c when BOARD_CORES > 1: the stack
+/* Provided by app/firmware/stack.c when BOARD_CORES > 1: the stack
  * functions above measure core 0's stack (sections.ld's .stack); these
  * measure either core's (1: the board's .stack1, same size and guard).
  * stack_paint() paints whichever of the two stacks it is called on. */

@@ -11,8 +11,9 @@
 #   test   everything: every board's packages, the tests' and the
 #          benchmarks' tools (clang, valgrind, cppcheck, cmake, python3)
 #   (board and all: the old names of run and test)
-# A board whose emulator is an npm package (platform/pico: rp2040js, run
-# by Node.js) pins it in its folder's package.json and package-lock.json;
+# A board whose emulator is an npm package (the Pico's, rp2040js, run by
+# Node.js) has its runner in tools/emu/<board>/, which pins the package
+# in its package.json and package-lock.json;
 # `npm ci` installs it into that folder's node_modules/ (ignored by git)
 # when nodejs is among the packages (BOARD=pico, and test). When npm does
 # not trust the registry's certificate (a proxy that intercepts TLS), it
@@ -38,7 +39,7 @@ esac
 case $mode in
 run | host | test) ;;
 *)
-    echo "usage: sh platform/ensure-deps.sh run [PACKAGE...] | host | test" >&2
+    echo "usage: sh tools/ensure-deps.sh run [PACKAGE...] | host | test" >&2
     echo "  (make run and make test run it themselves: they are the set-up)" >&2
     exit 2
     ;;
@@ -68,14 +69,14 @@ command -v ld >/dev/null 2>&1 || need="$need binutils"
 [ -f /usr/include/zlib.h ] || installed zlib1g-dev || need="$need zlib1g-dev"
 [ -f /usr/include/png.h ] || installed libpng-dev || need="$need libpng-dev"
 # the boards: cross compilers, newlib (libm for the soft-float comparison), QEMU
-npm_boards=""
+npm_dirs=""
 for p in $boards; do
     if [ "$p" = nodejs ]; then
         # any Node.js 18 or later with its npm will do (Debian's packages
         # are nodejs and npm; NodeSource's nodejs brings npm itself)
         command -v node >/dev/null 2>&1 || need="$need nodejs"
         [ "${ENSURE_DEPS_EMULATOR:-1}" = 0 ] && continue
-        npm_boards=$(ls platform/*/package-lock.json 2>/dev/null | xargs -r -n1 dirname)
+        npm_dirs=$(ls tools/emu/*/package-lock.json 2>/dev/null | xargs -r -n1 dirname)
         command -v npm >/dev/null 2>&1 || need="$need npm"
         continue
     fi
@@ -105,7 +106,7 @@ npm_names() {
         sed 's/"\([^"]*\)": *"\([^"]*\)"/\1@\2/' | tr '\n' ' ' | sed 's/ $//'
 }
 npm_todo=""
-for d in $npm_boards; do
+for d in $npm_dirs; do
     command -v npm >/dev/null 2>&1 && (cd "$d" && npm ls --depth=0 >/dev/null 2>&1) && continue
     npm_todo="$npm_todo $d"
 done

@@ -22,7 +22,7 @@
 #    are made of one list of choices (FW_CHOICES below), each named only
 #    when it is not its default: out/<scene>-<board>-<backend>[-choices].
 #
-# The port contract (platform/firmware/port.h): a board folder
+# The port contract (platform/port.h): a board folder
 # platform/<BOARD>/ holds board.mk, which sets
 #   BOARD_ARCH      platform/arch/<arch>/ brings reset and exit (cortex-m, riscv)
 #   BOARD_CROSS     the cross toolchain's prefix (arm-none-eabi-)
@@ -93,9 +93,9 @@ BOARD_IMAGE_SHOW :=
 BOARD_FLASH :=
 BOARD_FLASH_PACKAGE :=
 BOARD_ICOUNT := shift=0
-BOARD_SINK := platform/firmware/sink_stream.c
+BOARD_SINK := app/firmware/sink_stream.c
 BOARD_SINK_CALLBACKS := stream_begin,stream_flush,stream_end
-BOARD_RUN  := platform/firmware/run.sh
+BOARD_RUN  := tools/firmware/run.sh
 BOARD_RUN_AA := 3
 BOARD_RUN_DITHER := 0
 BOARD_PROGRESSIVE := 0
@@ -125,7 +125,7 @@ BOARD_CAPS = -DRT_MAX_SPHERES=1024 -DRT_MAX_CONES=1024 -DRT_MAX_POLYGONS=4096 \
 # The frame: SIZE if given, else the board's BOARD_SIZE, else the scene's
 # resolution (scene-size.awk; 128x128 if it finds none, and the reader
 # then says what is wrong with the scene)
-SCENE_SIZE := $(if $(wildcard $(SCENE)),$(shell awk -f platform/firmware/scene-size.awk '$(SCENE)'))
+SCENE_SIZE := $(if $(wildcard $(SCENE)),$(shell awk -f tools/firmware/scene-size.awk '$(SCENE)'))
 DEFAULT_SIZE := $(or $(BOARD_SIZE),$(SCENE_SIZE),128x128)
 SIZE_IS := $(if $(filter-out undefined,$(origin SIZE)),SIZE=$(SIZE),$(if $(BOARD_SIZE),the board's default size,the resolution of $(SCENE)))
 ifeq ($(origin SIZE),undefined)
@@ -181,7 +181,7 @@ sampling_word = $(or $(if $(filter-out 0,$(1)),aa$(1)$(if $(filter-out 0,$(2)),_
 # display, docs/hal.md; rt --progressive), the whole picture on the panel
 # after 1/64 of the rays; the default on a board whose sink is a panel
 # (BOARD_PROGRESSIVE), with one sample a pixel or SPP, on one core or
-# several (platform/firmware/bands.c). 0: scanline order, and the firmware links none of it
+# several (app/firmware/bands.c). 0: scanline order, and the firmware links none of it
 # (RT_USE_PROGRESSIVE=0). A stream sink sends whole lines top down.
 ifeq ($(origin PROGRESSIVE),undefined)
 PROGRESSIVE := $(if $(filter 1,$(BOARD_PROGRESSIVE)),$(if $(filter-out 0,$(AA_LEVELS)),0,1),0)
@@ -255,7 +255,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -fno-tree-loop-distribute-patterns -fstack-usage -fcallgraph-info=su \
             $(BOARD_CAPS) -DBOARD_WIDTH=$(W) -DBOARD_HEIGHT=$(H) -DBOARD_DEPTH=$(DEPTH) $(if $(filter-out 1 2 3 4 5,$(DEPTH)),-DRT_MAX_DEPTH=$(DEPTH)) \
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(PROGRESSIVE_FLAGS) $(TEXTURE_FILTER_FLAGS) \
-            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
+            $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform -Iapp/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
 # Sources compiled with -Os instead of -O2, where bytes count more than
 # instructions: the frame (render.c: set-up and once per pixel), errors and
 # counters, the UART sink, and the solids' object-space code (xform,
@@ -267,7 +267,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # whose products -Os would slow (the card +1%).
 FW_SIZE_FILES = render rt_error stats sink_stream xform shape csg object
 FW_SIZE_FILES_fixed = camera
-FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
+FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lapp/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
@@ -279,27 +279,27 @@ FW_FLAGS_double = $(BOARD_FPU) -DRT_BACKEND_DOUBLE=1
 
 # The firmware's files: the core, the board-independent firmware, the
 # architecture's reset and exit, the board's own, the display sink.
-FW_PORT_SRC = platform/firmware/main.c platform/firmware/report.c platform/firmware/stack.c platform/firmware/sink_io.c \
-              $(if $(filter-out 1,$(CORES)),platform/firmware/bands.c) \
-              platform/firmware/libc_min.c $(BOARD_SINK) \
+FW_PORT_SRC = app/firmware/main.c app/firmware/report.c app/firmware/stack.c app/firmware/sink_io.c \
+              $(if $(filter-out 1,$(CORES)),app/firmware/bands.c) \
+              app/firmware/libc_min.c $(BOARD_SINK) \
               $(filter-out $(BOARD_ARCH_SKIP:%=platform/arch/$(BOARD_ARCH)/%.c),$(wildcard platform/arch/$(BOARD_ARCH)/*.c)) \
               $(wildcard platform/arch/$(BOARD_ARCH)/*.S) $(BOARD_SRC)
-FW_SRC_DIRS = $(CORE_DIRS) platform/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
+FW_SRC_DIRS = $(CORE_DIRS) app/firmware platform/arch/$(BOARD_ARCH) $(sort $(patsubst %/,%,$(dir $(BOARD_SRC) $(BOARD_SINK))))
 # (the objects are linked by file name, whatever folder a file is in)
 CORE_NAMES = $(sort $(notdir $(CORE_SRC:.c=)))
 FW_NAMES = $(CORE_NAMES) $(basename $(notdir $(FW_PORT_SRC)))
 
 # ---- scene compiler (a host tool, with the firmware's capacities) -------
 
-$(SCENEC_DIR)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
+$(SCENEC_DIR)/%.o: src/%.c $(CORE_H) app/firmware/firmware.mk
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)$(CC) $(WARN) -ffreestanding -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -c $< -o $@
 
-$(SCENEC_DIR)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $(patsubst src/%.c,$(SCENEC_DIR)/%.o,$(CORE_SRC)) \
-                         $(wildcard platform/hosted/*.h) $(CORE_H)
+$(SCENEC_DIR)/rt-scenec: tools/scenec.c app/rt/host_io.c $(patsubst src/%.c,$(SCENEC_DIR)/%.o,$(CORE_SRC)) \
+                         $(wildcard app/rt/*.h) $(CORE_H)
 	$(show) LD $@
-	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iplatform/hosted -o $@ \
+	$(Q)$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 $(BOARD_CAPS) $(CFG_FLAGS) -Iinclude -Isrc -Iapp/rt -o $@ \
 	    $(filter %.c %.o,$^)
 
 # ---- firmware ------------------------------------------------------------
@@ -321,16 +321,16 @@ $(FW_DIR)/scene_data.c $(FW_DIR)/scene_data.h &: $(SCENE) $(FW_DIR)/scene.path $
 # built for that backend (host cc, -ffp-contract=off as the firmware, libm
 # for the reader's tan/sin/cos/floor): the same bits the host reader makes.
 define scenec_fp
-$(SCENEC_DIR)-$(1)/%.o: src/%.c $(CORE_H) platform/firmware/firmware.mk
+$(SCENEC_DIR)-$(1)/%.o: src/%.c $(CORE_H) app/firmware/firmware.mk
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -ffreestanding -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc -c $$< -o $$@
 
-$(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c platform/hosted/host_io.c $$(patsubst src/%.c,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_SRC)) \
-                         $(wildcard platform/hosted/*.h) $(CORE_H)
+$(SCENEC_DIR)-$(1)/rt-scenec: tools/scenec.c app/rt/host_io.c $$(patsubst src/%.c,$(SCENEC_DIR)-$(1)/%.o,$$(CORE_SRC)) \
+                         $(wildcard app/rt/*.h) $(CORE_H)
 	$$(show) LD $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L -O2 -ffp-contract=off $$(BOARD_CAPS) $$(CFG_FLAGS) $(2) -Iinclude -Isrc \
-	    -Iplatform/hosted -o $$@ $$(filter %.c %.o,$$^) -lm
+	    -Iapp/rt -o $$@ $$(filter %.c %.o,$$^) -lm
 
 $(FW_DIR)/scene_data_$(1).c: $(SCENE) $(FW_DIR)/scene.path $(SCENEC_DIR)-$(1)/rt-scenec
 	@mkdir -p $$(@D)
@@ -342,7 +342,7 @@ $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 
 # $(1) backend, $(2) a folder of sources
 define firmware_objs
-$(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) $(wildcard platform/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
+$(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) platform/port.h $(wildcard app/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
 	$$(Q)$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) \
@@ -363,7 +363,7 @@ PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fix
 # hard-float build inlines vsqrt and links none of them; the fixed build
 # neither: tests/ports-tests.sh checks).
 define firmware_elf
-$(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) platform/firmware/sections.ld
+$(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) app/firmware/sections.ld
 	$$(show) LD $$@
 	$$(Q)$$(FW_CC) $$(FW_LDFLAGS) $$(BOARD_FPU) $$(call SPEC_LDFLAGS,$(1)) -Wl,-Map=$(FW_DIR)/$(1).map -o $$@ $$(FW_OBJS_$(1)) $(2) -lgcc
 endef
@@ -372,7 +372,7 @@ $(eval $(call firmware_elf,float,-lm -lc))
 $(eval $(call firmware_elf,double,-lm -lc))
 
 # The intersection-cost probe (bench/prims-bench.sh): no frame, just tests.
-$(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) platform/firmware/sections.ld
+$(FW_DIR)/prims.elf: $(PRIMS_OBJS) $(BOARD_LD) app/firmware/sections.ld
 	$(show) LD $@
 	$(Q)$(FW_CC) $(FW_LDFLAGS) $(BOARD_FPU) -o $@ $(PRIMS_OBJS) -lgcc
 
@@ -395,7 +395,7 @@ image: deps-image $(BOARD_IMAGES)
 # command (its tool, BOARD_FLASH_PACKAGE, installed when missing)
 flash: $(BOARD_IMAGES)
 	@$(if $(BOARD_FLASH),,echo "BOARD=$(BOARD) has no flash command$(if $(BOARD_IMAGES),: make image writes the files to flash ($(BOARD_IMAGE_NOTE)),: it runs under its emulator only)" >&2; exit 1)
-	@ENSURE_DEPS_FOR='make flash (BOARD=$(BOARD))' sh platform/ensure-deps.sh run $(BOARD_FLASH_PACKAGE)
+	@ENSURE_DEPS_FOR='make flash (BOARD=$(BOARD))' sh tools/ensure-deps.sh run $(BOARD_FLASH_PACKAGE)
 	$(BOARD_FLASH)
 
 ifneq ($(BOARD_RULES),)
@@ -436,12 +436,12 @@ run: deps-board
 	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
 	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BOARD_TITLE="$(BOARD_TITLE)" CLOCK_HZ=$(BOARD_CLOCK_HZ) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \
 	    OUT=$(RUN_OUT) IMAGE_NOTE="$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))" \
-	    sh platform/firmware/summary.sh $(RUN_REPORT) "$$(build/host/rt compare $(RUN_OUT) $(RUN_REF))" \
+	    sh tools/firmware/summary.sh $(RUN_REPORT) "$$(build/host/rt compare $(RUN_OUT) $(RUN_REF))" \
 	    "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA))" "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1)"
 	@$(call copy_images,echo "  image for the board:")
 
 size: $(FW_ELF)
-	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) platform/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
+	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) tools/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt
 
 # Instructions per function, group and ray kind inside the render, under
 # QEMU (bench/profile.py), with the display sink apart as the firmware's

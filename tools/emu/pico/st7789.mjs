@@ -182,7 +182,7 @@ export function checkBorder(picture, w, h) {
 
 // The w x h of the module's picture at x0, y0 (the whole panel by
 // default) as rt's stream: header, one band, end (the stream format of
-// platform/firmware/sink.h).
+// app/firmware/sink.h).
 export function panelStream(picture, w = picture.width, h = picture.height, x0 = 0, y0 = 0) {
   const { width, height } = picture;
   if (!(w >= 1 && x0 >= 0 && x0 + w <= width && h >= 1 && y0 >= 0 && y0 + h <= height)) throw new Error(`a ${w}x${h} frame at ${x0},${y0} is not on the ${width}x${height} panel`);

@@ -1,5 +1,5 @@
 /* uart_stream.h - the decoder of the framed stream the board's UART sink
- * writes (format in platform/firmware/sink.h), pulled from any byte
+ * writes (format in app/firmware/sink.h), pulled from any byte
  * source: a file, a pipe, a serial line, or a buffer (the fuzz harness).
  *
  * Before the frame header it resynchronises: bytes that do not start the

@@ -4,7 +4,7 @@
 # (loaded into flash, run from RAM after reset copies it: .data, and the
 # code and scene tables of a board that runs them from SRAM) or "ram"
 # (not loaded: .bss, the stack). For footprint.sh and the tests:
-#   objdump -h FIRMWARE.elf | awk -f platform/firmware/sections.awk
+#   objdump -h FIRMWARE.elf | awk -f tools/firmware/sections.awk
 function hex(s,   v, i) {
     v = 0
     for (i = 1; i <= length(s); i++)
