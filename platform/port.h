@@ -117,7 +117,8 @@ void report_text(const char *text);
  * not the caller's).
  */
 
-/* Which core runs the caller: 0 (the one reset starts in main) or 1. */
+/* Which core runs the caller: 0 (the one reset starts in main) or 1
+ * (sink_io.c keeps each core's output cycles apart by it). */
 unsigned port_core_id(void);
 
 /* Core 1 starts running entry() on its own stack (the board's .stack1);

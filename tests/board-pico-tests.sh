@@ -37,7 +37,7 @@
 #    bounded wait expires and it says so, status 5, LED off (on after a
 #    good run);
 #  - what silicon would not survive fails with its reason: a damaged
-#    boot2 CRC, clk_peri left stopped (PICO_OMIT=clk_peri), and on small
+#    boot2 CRC, clk_peri left stopped (tests/pico_clk_peri_off.c), and on small
 #    images (tests/pico_fault.S) a block written in reset, a bkpt, a read
 #    of 0x40068000, a boot2 that leaves XIP unset; a mirrored
 #    MADCTL (the image differs), no INVON (inverted colours), a missing
@@ -344,7 +344,7 @@ done
 # wait, FIFOs, events, spinlocks, per-core SIO, a core-1 reset; and each
 # broken use fails with its reason
 core1_image() { # NAME [CASE]
-    arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os -ffreestanding -nostdlib -Wall -Wextra -Werror ${2:+-DCASE_$2} \
+    arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -Os -ffreestanding -nostdlib -Wall -Wextra -Werror -Iplatform/pico ${2:+-DCASE_$2} \
         -T tests/pico_core1.ld -o "$OUT/core1/$1.elf" tests/pico_core1.c "$boot2" -lgcc &&
         arm-none-eabi-objcopy -O binary "$OUT/core1/$1.elf" "$OUT/core1/$1.bin" &&
         node tools/emu/pico/uf2.mjs pack "$OUT/core1/$1.bin" "$OUT/core1/$1.uf2" >/dev/null
@@ -393,16 +393,21 @@ for f in "ONE_ZERO expected 0 (the second of 0, 0, 1).*received 0x00000001" \
     fi
 done
 
-# ... clk_peri left stopped
-if make -s -j2 firmware BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 PICO_OMIT=clk_peri >"$OUT/omit.build" 2>&1; then
-    msg=$(make -s board-run BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 PICO_OMIT=clk_peri RUN_OUT="$OUT/omit.png" RUN_RT="$RT" 2>&1); status=$?
+# ... clk_peri left stopped: a test build (its own build folder) whose
+# port_init is wrapped by tests/pico_clk_peri_off.c
+clk_peri_off() { # MAKE-ARGS...
+    make -s "$@" BOARD=pico SCENE=scenes/spd/tetra-1.nff SIZE=8x8 DEPTH=3 BOARD_TAG=-clk_peri_off \
+        BOARD_SRC="platform/pico/board.c tests/pico_clk_peri_off.c" BOARD_LDFLAGS=-Wl,--wrap=port_init
+}
+if clk_peri_off -j2 firmware >"$OUT/omit.build" 2>&1; then
+    msg=$(clk_peri_off board-run RUN_OUT="$OUT/omit.png" RUN_RT="$RT" 2>&1); status=$?
     if [ $status -ne 0 ] && echo "$msg" | grep -q 'clk_peri'; then
         ok "clk_peri left stopped: $(echo "$msg" | grep clk_peri | head -1)"
     else
         bad "clk_peri left stopped: status $status, '$(echo "$msg" | tail -2)'"
     fi
 else
-    bad "the PICO_OMIT=clk_peri build failed: $(tail -2 "$OUT/omit.build")"
+    bad "the clk_peri_off build failed: $(tail -2 "$OUT/omit.build")"
 fi
 
 # The panel's model, from the odd frames' SPI logs (pairs: flags, byte)

@@ -50,44 +50,14 @@
  */
 #include <stdint.h>
 
-#define REG(a) (*(volatile uint32_t *)(a))
-#define SET(a) REG((a) + 0x2000u)
-#define CLR(a) REG((a) + 0x3000u)
-
-#define SIO 0xd0000000u
-#define CPUID REG(SIO + 0x000u)
-#define FIFO_ST REG(SIO + 0x050u)
-#define FIFO_WR REG(SIO + 0x054u)
-#define FIFO_RD REG(SIO + 0x058u)
-#define DIV_UDIVIDEND REG(SIO + 0x060u)
-#define DIV_UDIVISOR REG(SIO + 0x064u)
-#define DIV_QUOTIENT REG(SIO + 0x070u)
-#define DIV_CSR REG(SIO + 0x078u)
-#define SPINLOCK_ST REG(SIO + 0x05cu)
-#define SPINLOCK(n) REG(SIO + 0x100u + 4u * (n))
-#define FIFO_VLD 1u
-#define FIFO_RDY 2u
+#include "rp2040.h"  /* platform/pico/: the registers the port uses too */
+#include "sio_div.h" /* the divider's registers */
 
 #define NVIC_ISER REG(0xe000e100u)
 #define NVIC_ICER REG(0xe000e180u)
 #define NVIC_ISPR REG(0xe000e200u)
-#define VTOR REG(0xe000ed08u)
 
-#define RESETS 0x4000c000u
-#define RESET_DONE REG(0x4000c008u)
-#define RESET_IO_BANK0 (1u << 5)
-#define RESET_PADS_BANK0 (1u << 8)
 #define RESET_TIMER (1u << 21)
-#define RESET_UART0 (1u << 22)
-#define CLK_PERI_CTRL REG(0x40008048u)
-#define CLK_PERI_ENABLE (1u << 11)
-#define GPIO0_CTRL REG(0x40014004u)
-#define UART0_DR REG(0x40034000u)
-#define UART0_FR REG(0x40034018u)
-#define UART0_IBRD REG(0x40034024u)
-#define UART0_FBRD REG(0x40034028u)
-#define UART0_LCR_H REG(0x4003402cu)
-#define UART0_CR REG(0x40034030u)
 #define PSM_FRCE_OFF 0x40010004u
 #define PSM_PROC1 (1u << 16)
 #define TIMER_ALARM0 REG(0x40054010u)
@@ -153,11 +123,11 @@ static void report(const char *key, uint32_t v)
 static void uart_up(void)
 {
     CLK_PERI_CTRL = CLK_PERI_ENABLE; /* from clk_sys (the ring oscillator) */
-    CLR(RESETS) = RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER;
-    while ((RESET_DONE & (RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER)) !=
+    CLR(RESETS_RESET) = RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER;
+    while ((RESETS_DONE & (RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER)) !=
            (RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER))
         ;
-    GPIO0_CTRL = 2u; /* UART0 TX */
+    GPIO_CTRL(0) = 2u; /* UART0 TX */
     UART0_IBRD = 3u; /* 115200 from 6.5 MHz */
     UART0_FBRD = 34u;
     UART0_LCR_H = 0x70u;
@@ -181,21 +151,21 @@ static void __attribute__((noreturn)) finish(uint32_t status)
 /* ---- the launch, as the datasheet's sender does it ------------------------ */
 static void drain(void)
 {
-    while (FIFO_ST & FIFO_VLD)
-        (void)FIFO_RD;
+    while (SIO_FIFO_ST & FIFO_VLD)
+        (void)SIO_FIFO_RD;
 }
 static void push(uint32_t v)
 {
-    while (!(FIFO_ST & FIFO_RDY))
+    while (!(SIO_FIFO_ST & FIFO_RDY))
         ;
-    FIFO_WR = v;
+    SIO_FIFO_WR = v;
     sev();
 }
 static uint32_t pop(void)
 {
-    while (!(FIFO_ST & FIFO_VLD))
+    while (!(SIO_FIFO_ST & FIFO_VLD))
         wfe();
-    return FIFO_RD;
+    return SIO_FIFO_RD;
 }
 /* 1 when every word came back as sent */
 static int launch(const uint32_t *seq, uint32_t n, int drains)
@@ -228,16 +198,16 @@ static void __attribute__((unused)) core1_reset(void)
 /* ---- core 1 ------------------------------------------------------------- */
 /* the runner's mark (run.mjs watches this function's address on each
  * core): both cores bracket their additions with it */
-__attribute__((noinline, used)) uint32_t port_cycles_read(void) { return CPUID; }
+__attribute__((noinline, used)) uint32_t port_cycles_read(void) { return SIO_CPUID; }
 
 static void add_counts(void)
 {
     (void)port_cycles_read();
     for (uint32_t i = 0; i < COUNT_ADDS; i++) {
-        while (!SPINLOCK(COUNT_LOCK))
+        while (!SIO_SPINLOCK(COUNT_LOCK))
             ;
         COUNT = COUNT + 1u;
-        SPINLOCK(COUNT_LOCK) = 0;
+        SIO_SPINLOCK(COUNT_LOCK) = 0;
     }
     (void)port_cycles_read();
 }
@@ -249,17 +219,17 @@ static void __attribute__((unused)) core1_unguarded(void)
 
 static void core1_main(void)
 {
-    SH->roe1 = FIFO_ST;
-    FIFO_ST = 0;
-    SH->cpuid1 = CPUID;
+    SH->roe1 = SIO_FIFO_ST;
+    SIO_FIFO_ST = 0;
+    SH->cpuid1 = SIO_CPUID;
     /* wait for core 0's divider operands, divide on our own */
     while (!SH->flag)
         wfe();
-    DIV_UDIVIDEND = 1000000u;
-    DIV_UDIVISOR = 7u;
-    while (!(DIV_CSR & 1u))
+    SIO_DIV_UDIVIDEND = 1000000u;
+    SIO_DIV_UDIVISOR = 7u;
+    while (!(SIO_DIV_CSR & 1u))
         ;
-    SH->div1 = DIV_QUOTIENT;
+    SH->div1 = SIO_DIV_QUOTIENT;
     add_counts();
     push(1);
     /* woken by core 0's SEV */
@@ -267,12 +237,12 @@ static void core1_main(void)
         wfe();
     SH->woke = 1;
     /* spinlock 5: held by core 0, then freed */
-    SH->held1 = SPINLOCK(5);
+    SH->held1 = SIO_SPINLOCK(5);
     push(2);
     while (SH->flag != 3)
         wfe();
-    SH->freed1 = SPINLOCK(5);
-    SPINLOCK(5) = 0;
+    SH->freed1 = SIO_SPINLOCK(5);
+    SIO_SPINLOCK(5) = 0;
     /* WFI: core 0's SEV leaves it asleep, a FIFO word (SIO_IRQ_PROC1) wakes it */
     NVIC_ISER = 1u << SIO_IRQ_PROC1;
     push(3);
@@ -285,9 +255,9 @@ static void core1_main(void)
 /* core 1's FIFO interrupt: the word, and the flags cleared */
 void sio_irq_proc1(void)
 {
-    while (FIFO_ST & FIFO_VLD)
-        SH->irq_word = FIFO_RD;
-    FIFO_ST = 0;
+    while (SIO_FIFO_ST & FIFO_VLD)
+        SH->irq_word = SIO_FIFO_RD;
+    SIO_FIFO_ST = 0;
 }
 
 static void __attribute__((unused)) core1_tie(void)
@@ -302,8 +272,8 @@ static void __attribute__((unused)) core1_tie(void)
 /* both cores: the same handler; its first load claims spinlock 7 */
 void timer_irq(void)
 {
-    uint32_t got = SPINLOCK(7);
-    SH->tie[CPUID] = got;
+    uint32_t got = SIO_SPINLOCK(7);
+    SH->tie[SIO_CPUID] = got;
     TIMER_INTR = 1u;
     NVIC_ICER = 1u << TIMER_IRQ_0;
 }
@@ -316,9 +286,9 @@ static void __attribute__((unused)) core1_busy(void)
 
 static void __attribute__((unused)) core1_div_early(void)
 {
-    DIV_UDIVIDEND = 100u;
-    DIV_UDIVISOR = 7u;
-    SH->div1 = DIV_QUOTIENT;
+    SIO_DIV_UDIVIDEND = 100u;
+    SIO_DIV_UDIVISOR = 7u;
+    SH->div1 = SIO_DIV_QUOTIENT;
 }
 
 /* ---- core 0 ------------------------------------------------------------- */
@@ -356,28 +326,28 @@ void reset(void)
     finish(0);
 #else
     /* core 1's stale 0, there before any launch */
-    report("stale_vld", FIFO_ST & FIFO_VLD);
-    report("stale_word", FIFO_RD);
+    report("stale_vld", SIO_FIFO_ST & FIFO_VLD);
+    report("stale_word", SIO_FIFO_RD);
     SH->flag = 0;
     COUNT = 0; /* (core 1 not launched yet: no lock needed) */
     const uint32_t seq[] = {0, 0, 1, vt, STACK1, (uint32_t)core1_main};
     report("launched", (uint32_t)launch(seq, 6, 1));
-    report("cpuid0", CPUID);
+    report("cpuid0", SIO_CPUID);
     /* our division in flight while core 1 does its own */
-    DIV_UDIVIDEND = 1000u;
-    DIV_UDIVISOR = 3u;
+    SIO_DIV_UDIVIDEND = 1000u;
+    SIO_DIV_UDIVISOR = 3u;
     SH->flag = 1;
     sev();
     add_counts(); /* while core 1 adds too */
     uint32_t a = pop();
     report("locked_count", COUNT);
-    while (!(DIV_CSR & 1u))
+    while (!(SIO_DIV_CSR & 1u))
         ;
-    report("div0", DIV_QUOTIENT);
+    report("div0", SIO_DIV_QUOTIENT);
     report("div1", SH->div1);
     report("core1_ack", a);
     /* spinlock 5, ours while core 1 tries it once */
-    uint32_t first = SPINLOCK(5), again = SPINLOCK(5), st = SPINLOCK_ST;
+    uint32_t first = SIO_SPINLOCK(5), again = SIO_SPINLOCK(5), st = SIO_SPINLOCK_ST;
     /* SEV wakes core 1's WFE */
     SH->flag = 2;
     sev();
@@ -390,7 +360,7 @@ void reset(void)
     report("lock_first", first);
     report("lock_again", again);
     report("lock_st", st);
-    SPINLOCK(5) = 0; /* freed, then core 1 may take it */
+    SIO_SPINLOCK(5) = 0; /* freed, then core 1 may take it */
     SH->woke_wfi = 0;
     SH->flag = 3;
     sev();
@@ -400,7 +370,7 @@ void reset(void)
     for (volatile int n = 0; n < 100; n++)
         ;
     report("wfi_after_sev", SH->woke_wfi);
-    FIFO_WR = 77u;
+    SIO_FIFO_WR = 77u;
     while (!SH->woke_wfi)
         ;
     report("wfi_irq_word", SH->irq_word);
@@ -410,20 +380,20 @@ void reset(void)
     report("roe_at_entry", SH->roe1);
     /* core 1 has returned (parked in the ROM's WFI): the FIFO to it fills */
     for (int i = 0; i < 9; i++)
-        FIFO_WR = 100u + (uint32_t)i;
-    report("fifo_full_st", FIFO_ST);
-    FIFO_ST = 0;
-    report("fifo_cleared_st", FIFO_ST);
-    report("fifo_empty_read", FIFO_RD);
-    report("fifo_roe_st", FIFO_ST);
+        SIO_FIFO_WR = 100u + (uint32_t)i;
+    report("fifo_full_st", SIO_FIFO_ST);
+    SIO_FIFO_ST = 0;
+    report("fifo_cleared_st", SIO_FIFO_ST);
+    report("fifo_empty_read", SIO_FIFO_RD);
+    report("fifo_roe_st", SIO_FIFO_ST);
     report("irq15_roe", (NVIC_ISPR >> 15) & 1u);
-    FIFO_ST = 0;
+    SIO_FIFO_ST = 0;
     report("irq15_clear", (NVIC_ISPR >> 15) & 1u);
     /* core 1 reset: it drains the 8 words, pushes its stale 0 */
     core1_reset();
     a = pop();
     report("reset_stale", a);
-    report("reset_more", FIFO_ST & FIFO_VLD);
+    report("reset_more", SIO_FIFO_ST & FIFO_VLD);
     /* launched again, to the tie */
     const uint32_t seq2[] = {0, 0, 1, vt, STACK1, (uint32_t)core1_tie};
     report("relaunched", (uint32_t)launch(seq2, 6, 1));

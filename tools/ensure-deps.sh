@@ -10,7 +10,7 @@
 #   host   the host build alone (make host-run)
 #   test   everything: every board's packages, the tests' and the
 #          benchmarks' tools (clang, valgrind, cppcheck, cmake, python3)
-#   (board and all: the old names of run and test)
+#   (board and all: the same as run and test)
 # A board whose emulator is an npm package (the Pico's, rp2040js, run by
 # Node.js) has its runner in tools/emu/<board>/, which pins the package
 # in its package.json and package-lock.json;

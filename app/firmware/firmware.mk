@@ -22,52 +22,63 @@
 #    are made of one list of choices (FW_CHOICES below), each named only
 #    when it is not its default: out/<scene>-<board>-<backend>[-choices].
 #
-# The port contract (platform/port.h): a board folder
-# platform/<BOARD>/ holds board.mk, which sets
-#   BOARD_ARCH      platform/arch/<arch>/ brings reset and exit (cortex-m, riscv)
-#   BOARD_CROSS     the cross toolchain's prefix (arm-none-eabi-)
-#   BOARD_CPU       compiler flags for the core (-mcpu=cortex-m3 -mthumb)
-#   BOARD_FPU       flags of a hard-float build (empty: no FPU)
-#   BOARD_QEMU      QEMU and its machine (qemu-system-arm -M mps2-an385);
-#                   a board run by another emulator names it here and
-#                   brings its own BOARD_RUN
-#   BOARD_ICOUNT    its -icount option, if not shift=0 (a board with two
-#                   cores: shift=0,sleep=off, which makes the run repeatable);
-#                   make board-run QEMU_ACCEL="-accel tcg,thread=multi" runs
-#                   without icount instead (cores in parallel; no counts)
-#   BOARD_PACKAGES  the Debian packages it needs (make run installs them)
-#   BOARD_CLOCK_HZ  the core's clock, for the time make run prints
-#   BOARD_TITLE     the board in a phrase, for make run's report
-#   BOARD_BACKENDS  what BACKEND may be (fixed, float, double)
-#   BOARD_SRC       its C files: port_init, port_write, port_icount_*
-#                   (and port_cycles_read, with BOARD_CYCLES := 1)
-#   BOARD_LD        its linker script (MEMORY, then INCLUDE sections.ld)
-# and may set BOARD_SINK (a display sink's C file instead of the UART
-# stream, sink.h) with BOARD_SINK_CALLBACKS (its begin, flush and end
-# functions, for make size's stack bound), BOARD_RUN (a run script instead
-# of run.sh), BOARD_CFLAGS (extra -D), FW_FORMAT (a pixel format the board
-# insists on), BOARD_TAG (a suffix of the build folder for the board's own
-# build choices), BOARD_CYCLES := 1 (the port counts cycles),
-# BOARD_LDFLAGS (extra linker flags, e.g. --defsym of its memory sizes),
-# BOARD_INSTR_COUNTER := 0 (the chip has no instruction counter: the
-# runner counts from outside, port.h), BOARD_ARCH_SKIP (files of
-# platform/arch/<arch>/ it replaces, by name without .c: semihost, for a
-# board that ends its run without a debugger), BOARD_RULES (a makefile
-# of its own build steps, included after these), BOARD_OBJS (objects those
-# steps make, linked into every image), BOARD_IMAGES (files those steps
-# make from $(FW_DIR)/<backend>.elf, built with it: what a user flashes;
-# make image copies them to out/) with BOARD_IMAGE_SHOW (a command that
-# prints what one holds) and BOARD_IMAGE_NOTE (how to flash them),
-# BOARD_FLASH (the command of make flash) with BOARD_FLASH_PACKAGE (the
-# Debian package that has its tool),
-# BOARD_BENCH_VARIANTS (make variables of builds make bench measures too,
-# one word each, commas for spaces), BOARD_SIZE (the frame unless SIZE is
-# given, instead of the scene's resolution), BOARD_PANEL (WxH of the panel
-# the frame goes to: a larger frame is a build error) with
-# BOARD_PANEL_NAME (how that error names it), BOARD_BAND_LINES (the
-# default of BAND_LINES, 4), BOARD_PROGRESSIVE := 1 (its sink is a panel
-# with frame memory of its own that takes any rectangle in whole-byte
-# pixels: the default of PROGRESSIVE).
+# The port contract (platform/port.h): a board folder platform/<BOARD>/
+# holds board.mk, which sets the variables below: the first ten always,
+# the others when the default does not fit (defaults are set just below,
+# before board.mk is included). docs/boards.md, "Adding a board", points here.
+#
+# variable             | meaning                                                          | default                    | example
+# ---------------------|------------------------------------------------------------------|----------------------------|-----------------------------------------------
+# BOARD_TITLE          | the board in a phrase, for make run's report                     | (required)                 | ARM MPS2 AN385, an FPGA board (QEMU's model), ...
+# BOARD_ARCH           | platform/arch/<arch>/: reset, fault handler and exit             | (required)                 | cortex-m, riscv
+# BOARD_CROSS          | the cross toolchain's prefix                                     | (required)                 | arm-none-eabi-
+# BOARD_CPU            | compiler flags for the core                                      | (required)                 | -mcpu=cortex-m3 -mthumb
+# BOARD_QEMU           | QEMU and its machine; empty for a board another emulator runs    | (required)                 | qemu-system-arm -M mps2-an385
+#                      | (it then brings its own BOARD_RUN)                               |                            |
+# BOARD_PACKAGES       | the Debian packages it needs (make run installs them)            | (required)                 | gcc-arm-none-eabi qemu-system-arm
+# BOARD_CLOCK_HZ       | the core's clock, for the time make run prints                   | (required)                 | 25000000
+# BOARD_BACKENDS       | what BACKEND may be                                              | (required)                 | fixed float double
+# BOARD_SRC            | its C files: port_init, port_write, port_icount_* (and           | (required)                 | platform/stm32f4/board.c platform/stm32f4/clock.c
+#                      | port_cycles_read with BOARD_CYCLES 1)                            |                            |
+# BOARD_LD             | its linker script: MEMORY, then INCLUDE sections.ld              | (required)                 | platform/mps2-an385/link.ld
+# BOARD_FPU            | flags of a hard-float build                                      | empty: no FPU              | -mfpu=fpv4-sp-d16 -mfloat-abi=hard
+# BOARD_ICOUNT         | QEMU's -icount option (two cores: sleep=off makes the run        | shift=0                    | shift=0,sleep=off
+#                      | repeatable); make board-run QEMU_ACCEL="-accel tcg,thread=multi" |                            |
+#                      | runs without it instead (cores in parallel, no counts)           |                            |
+# BOARD_CFLAGS         | extra -D (and -I) for every firmware file                        | empty                      | -DSINK_HOLDS_FRAME=1
+# BOARD_LDFLAGS        | extra linker flags                                               | empty                      | -Wl,--defsym=STM32_FLASH=1024K
+# BOARD_CORES          | cores that render (2: bands.c and port.h's multi-core part)      | 1                          | 2
+# BOARD_CYCLES         | 1: the port counts cycles (port_cycles_read)                     | 0                          | 1
+# BOARD_INSTR_COUNTER  | 0: the chip has no instruction counter, the runner counts from   | 1                          | 0
+#                      | outside (port.h)                                                 |                            |
+# BOARD_ARCH_SKIP      | files of platform/arch/<arch>/ it replaces, by name without .c   | empty                      | semihost
+#                      | (semihost: a board that ends its run without a debugger)         |                            |
+# BOARD_SINK           | the display sink's C file (sink.h)                               | app/firmware/sink_stream.c | platform/lm3s6965evb/oled.c
+# BOARD_SINK_CALLBACKS | the sink's begin, flush and end functions (make size's stack     | stream_begin,stream_flush, | oled_begin,oled_flush,oled_end
+#                      | bound)                                                           | stream_end                 |
+# BOARD_RUN            | the command that runs an ELF and writes its image and report     | tools/firmware/run.sh      | tools/emu/lm3s6965evb/run.sh
+# FW_FORMAT            | a pixel format the board insists on, whatever FORMAT says        | empty                      | l4
+# BOARD_SIZE           | the frame unless SIZE is given, instead of the scene's           | empty                      | 128x64
+#                      | resolution                                                       |                            |
+# BOARD_PANEL          | WxH of the panel the frame goes to: a larger frame is a build    | empty                      | 128x64
+#                      | error                                                            |                            |
+# BOARD_PANEL_NAME     | how that error names the panel                                   | $(BOARD_PANEL) panel       | 128x64 OLED
+# BOARD_BAND_LINES     | the default of BAND_LINES                                        | 4                          | 1
+# BOARD_PROGRESSIVE    | 1: its sink is a panel with frame memory of its own that takes   | 0                          | 1
+#                      | any rectangle in whole-byte pixels: the default of PROGRESSIVE   |                            |
+# BOARD_RUN_AA         | the default of AA (levels[,threshold])                           | 3                          | 0
+# BOARD_RUN_DITHER     | the default of DITHER                                            | 0                          | 1
+# BOARD_TAG            | a suffix of the build folder for the board's own choices         | empty                      | -nucleo64
+# BOARD_RULES          | a makefile of its own build steps, included after these          | empty                      | platform/pico/image.mk
+# BOARD_OBJS           | objects those steps make, linked into every image                | empty                      | build/board/pico/boot2/boot2_crc.o
+# BOARD_IMAGES         | files those steps make from $(FW_DIR)/<backend>.elf, built       | empty                      | $(FW_DIR)/$(BACKEND).uf2
+#                      | with it: what a user flashes (make image copies them to out/)    |                            |
+# BOARD_IMAGE_SHOW     | a command that prints what one image holds                       | empty (echo)               | ls -l
+# BOARD_IMAGE_NOTE     | how to flash them                                                | empty                      | copy it onto the RPI-RP2 drive ...
+# BOARD_FLASH          | the command of make flash                                        | empty: no make flash       | openocd -f interface/stlink.cfg ...
+# BOARD_FLASH_PACKAGE  | the Debian package that has BOARD_FLASH's tool                   | empty                      | openocd
+# BOARD_BENCH_VARIANTS | make variables of builds make bench measures too, one word       | empty                      | PICO_DIVIDER=0
+#                      | each, commas for spaces                                          |                            |
 #
 # Each build (scene and FW_CHOICES, below) gets its own folder: the scene
 # compiler turns the NFF into const tables in flash plus a header saying

@@ -1,12 +1,13 @@
 /*
  * bands.c - `rt --threads N`. One thread renders the frame (or viewport)
- * in one call of the core, as rt always did. With two or more, thread i
- * starts on the i-th of N equal runs of lines and renders it top down,
- * one line per step of one render context (rt_render_begin/_step, as its
- * own viewport), so in SPD mode each corner row is traced once within a
- * run. A thread whose run is done takes the lower half of what is left of
- * the longest other run, down to one line, and renders that the same way:
- * the threads stay busy to the end, and in SPD mode a frame costs one
+ * in one call of the core: nothing to split, so nothing traced twice.
+ * With two or more, thread i starts on the i-th of N equal runs of lines
+ * and renders it top down, one line per step of one render context
+ * (rt_render_begin/_step, as its own viewport), so in SPD mode each
+ * corner row is traced once within a run. A thread whose run is done
+ * takes the lower half of what is left of the longest other run, down
+ * to one line, and renders that the same way: the threads stay busy to
+ * the end, and in SPD mode a frame costs one
  * more row of corners per run start (N - 1 plus one per such split),
  * where fixed bands of 16 lines cost one per band (6% more eye rays at
  * 512 lines). Thread i is the core's worker i and has its own sink (one

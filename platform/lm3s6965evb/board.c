@@ -17,9 +17,8 @@
  * that the firmware stops with an error rather than report a wrong count
  * (QEMU takes minutes to get there; a 128x64 frame takes well under 1 G).
  */
+#include "../mmio.h"
 #include "port.h"
-
-#define REG(addr) (*(volatile uint32_t *)(addr))
 
 /* System control */
 #define SYSCTL_RIS REG(0x400FE050u) /* bit 6: PLL locked */

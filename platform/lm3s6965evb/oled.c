@@ -20,6 +20,7 @@
  * its power-up sequence (supply, contrast, multiplex, remap).
  */
 #include "../arch/cortex-m/pl022.h"
+#include "../mmio.h"
 #include "port.h"
 #include "sink.h"
 
@@ -32,8 +33,6 @@ _Static_assert(BOARD_WIDTH <= PANEL_WIDTH && BOARD_HEIGHT <= PANEL_HEIGHT, "the 
 #ifdef RT_FB_ONLY_FORMAT
 _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_L4, "the OLED takes l4 pixels (FW_FORMAT in board.mk)");
 #endif
-
-#define REG(addr) (*(volatile uint32_t *)(addr))
 
 #define SSI0 0x40008000u /* a PL022 */
 

@@ -2,9 +2,8 @@
  * board.c - the micro:bit's (nRF51822) side of the port contract
  * (port.h): the console is UART0, the instruction counter TIMER0.
  */
+#include "../mmio.h"
 #include "port.h"
-
-#define REG(addr) (*(volatile uint32_t *)(addr))
 
 /* UART0: only ENABLE = 4 and STARTTX matter to QEMU's model (no pins,
  * no baud rate); without STARTTX, TXDRDY never rises. */

@@ -8,13 +8,12 @@
  * (platform/arch/cortex-m/multicore.c).
  */
 #include "../arch/cortex-m/cmsdk.h" /* the MPS2 boards' UART and timer */
+#include "../mmio.h"
 #include "port.h"
 
 #if defined(__ARM_FP) || defined(__ARM_FEATURE_DSP)
 #error "mps2-an521: core 0 has no FPU and no DSP extension; build with -mcpu=cortex-m33+nofp+nodsp (board.mk)"
 #endif
-
-#define REG(addr) (*(volatile uint32_t *)(addr))
 
 #define UART0 0x50200000u
 /* Timer 0 counts down at 20 MHz; under qemu -icount shift=0 one guest

@@ -37,42 +37,16 @@
 #include "../arch/cortex-m/systick.h"
 #include "board.h"
 #include "port.h"
+#include "rp2040.h"
 #include "sink.h"
 
-#define REG(addr) (*(volatile uint32_t *)(addr))
-/* RP2040 atomic aliases of a register: +0x2000 sets bits, +0x3000 clears */
-#define SET(addr) REG((addr) + 0x2000u)
-#define CLR(addr) REG((addr) + 0x3000u)
-
-/* RESETS */
-#define RESETS_RESET 0x4000c000u
-#define RESETS_DONE REG(0x4000c008u)
-#define RESET_IO_BANK0 (1u << 5)
-#define RESET_PADS_BANK0 (1u << 8)
-#define RESET_PLL_SYS (1u << 12)
-#define RESET_UART0 (1u << 22)
-
-/* XOSC: the 1-15 MHz range, and its start-up delay in units of 256
- * crystal cycles: 1 ms at 12 MHz, rounded up (the datasheet's formula) */
-#define XOSC_CTRL REG(0x40024000u)
-#define XOSC_STATUS REG(0x40024004u)
-#define XOSC_STARTUP REG(0x4002400cu)
-#define XOSC_CTRL_1_15MHZ 0xaa0u
-#define XOSC_CTRL_ENABLE (0xfabu << 12)
-#define XOSC_STATUS_STABLE (1u << 31)
+/* XOSC: its start-up delay in units of 256 crystal cycles: 1 ms at
+ * 12 MHz, rounded up (the datasheet's formula) */
 #define XOSC_HZ 12000000u
 #define XOSC_STARTUP_DELAY ((XOSC_HZ / 1000u + 255u) / 256u)
 
 /* PLL_SYS: 12 MHz / REFDIV 1 * FBDIV 125 = VCO 1500 MHz (750..1600
  * allowed), / POSTDIV1 6 / POSTDIV2 2 = 125 MHz */
-#define PLL_SYS_CS REG(0x40028000u)
-#define PLL_SYS_PWR 0x40028004u
-#define PLL_SYS_FBDIV REG(0x40028008u)
-#define PLL_SYS_PRIM REG(0x4002800cu)
-#define PLL_CS_LOCK (1u << 31)
-#define PLL_PWR_PD (1u << 0)
-#define PLL_PWR_POSTDIVPD (1u << 3)
-#define PLL_PWR_VCOPD (1u << 5)
 #define PLL_FBDIV 125u
 #define PLL_POSTDIV1 6u
 #define PLL_POSTDIV2 2u
@@ -81,41 +55,12 @@ _Static_assert(XOSC_HZ / 1000u * PLL_FBDIV >= 750000u && XOSC_HZ / 1000u * PLL_F
 _Static_assert(XOSC_HZ / 1000u * PLL_FBDIV / (PLL_POSTDIV1 * PLL_POSTDIV2) * 1000u == CLK_SYS_HZ,
                "CLK_SYS_HZ (board.h) is what the PLL makes");
 
-/* CLOCKS: clk_ref's source 2 is the crystal; clk_sys's source 1 is its
- * auxiliary mux, whose source 0 is PLL_SYS; clk_peri's auxiliary source 0
- * is clk_sys. *_SELECTED has one bit per source, set once the glitchless
- * mux has switched. */
-#define CLK_REF_CTRL REG(0x40008030u)
-#define CLK_REF_SELECTED REG(0x40008038u)
-#define CLK_SYS_CTRL REG(0x4000803cu)
-#define CLK_SYS_DIV REG(0x40008040u)
-#define CLK_SYS_SELECTED REG(0x40008044u)
-#define CLK_PERI_CTRL REG(0x40008048u)
-#define CLK_REF_SRC_XOSC 2u
-#define CLK_SYS_SRC_AUX 1u
-#define CLK_PERI_ENABLE (1u << 11)
-
-/* IO_BANK0 and SIO */
-#define GPIO_CTRL(n) REG(0x40014004u + 8u * (n))
-#define FUNC_UART 2u
-#define FUNC_SIO 5u
-#define SIO_GPIO_OUT_SET REG(0xd0000014u)
-#define SIO_GPIO_OUT_CLR REG(0xd0000018u)
-#define SIO_GPIO_OUT_XOR REG(0xd000001cu)
-#define SIO_GPIO_OE_SET REG(0xd0000024u)
+/* pins */
 #define PIN_UART_TX 0u
 #define PIN_UART_RX 1u
 #define PIN_LED 25u
 
-/* UART0 (a PL011) */
-#define UART0_DR REG(0x40034000u)
-#define UART0_FR REG(0x40034018u)
-#define UART0_IBRD REG(0x40034024u)
-#define UART0_FBRD REG(0x40034028u)
-#define UART0_LCR_H REG(0x4003402cu)
-#define UART0_CR REG(0x40034030u)
-#define UART_FR_BUSY (1u << 3)
-#define UART_FR_TXFF (1u << 5)
+/* UART0 */
 #define UART_BAUD 115200u
 /* the PL011's divisor, clk_peri / (16 * baud), in 1/64ths, rounded */
 #define UART_DIV64(hz) ((8u * (hz) / UART_BAUD + 1u) / 2u)
@@ -128,10 +73,9 @@ _Static_assert(XOSC_HZ / 1000u * PLL_FBDIV / (PLL_POSTDIV1 * PLL_POSTDIV2) * 100
 #ifndef BOARD_CORES
 #define BOARD_CORES 1
 #endif
-#define SIO_CPUID REG(0xd0000000u) /* 0 on core 0, 1 on core 1 */
 /* The atomic add's lock (port_atomic_add): any of the 32 would do, as
  * the firmware takes no other. */
-#define SIO_SPINLOCK_ATOMIC REG(0xd0000100u + 4u * 31u)
+#define SIO_SPINLOCK_ATOMIC SIO_SPINLOCK(31u)
 
 static volatile uint32_t systick_wraps[BOARD_CORES]; /* each core's own SysTick */
 static const char *bringup_failed; /* the wait that expired, or 0 */
@@ -216,9 +160,7 @@ void port_init(void)
     /* clk_peri: from clk_sys, whatever clk_sys runs from (the crystal's
      * PLL, or the ring oscillator when the bring-up failed) */
     CLK_PERI_CTRL = 0;
-#ifndef PICO_OMIT_CLK_PERI /* (run.mjs's tests: an image that forgets it) */
     CLK_PERI_CTRL = CLK_PERI_ENABLE;
-#endif
     unreset(RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0, "bring-up: IO_BANK0, PADS_BANK0 or UART0 did not leave reset");
     uart_init(clocked ? CLK_SYS_HZ : RING_OSC_HZ);
     GPIO_CTRL(PIN_LED) = FUNC_SIO;
@@ -274,13 +216,6 @@ __attribute__((noinline, no_icf)) uint64_t port_cycles_read(void) { return board
 
 #if BOARD_CORES > 1
 /* ---- two cores -------------------------------------------------------------- */
-
-#define SIO_FIFO_ST REG(0xd0000050u)
-#define SIO_FIFO_WR REG(0xd0000054u)
-#define SIO_FIFO_RD REG(0xd0000058u)
-#define FIFO_VLD (1u << 0) /* this core's receive FIFO has a word */
-#define FIFO_RDY (1u << 1) /* this core's send FIFO has room */
-#define SCB_VTOR REG(0xe000ed08u)
 
 /* The launch: the ROM on core 1 echoes each word; a wrong echo starts the
  * sequence again. Each echo comes in microseconds; the wait for one is

@@ -10,10 +10,6 @@
 
 #define CLK_SYS_HZ 125000000u /* clk_sys and clk_peri, once port_init() is done */
 
-/* RESETS bits of the blocks the sink uses */
-#define RESET_DMA (1u << 2)
-#define RESET_SPI0 (1u << 16)
-
 /* Takes `blocks` out of reset and waits (bounded) until they are; on
  * expiry reports `what` and ends the run with status 5. */
 void board_unreset(uint32_t blocks, const char *what);

@@ -95,19 +95,11 @@ BOARD_CFLAGS   += -DRT_UDIV32_HEADER='"sio_div.h"' -DRT_UDIV32=sio_udiv32 -Iplat
 else ifneq ($(PICO_DIVIDER),0)
 $(error PICO_DIVIDER=$(PICO_DIVIDER): 1 or 0)
 endif
-# PICO_OMIT=clk_peri: for run.mjs's own tests only, an image that leaves
-# clk_peri stopped, as a chip would run it: the runner must fail it
-PICO_OMIT      ?=
-ifeq ($(PICO_OMIT),clk_peri)
-BOARD_CFLAGS   += -DPICO_OMIT_CLK_PERI=1
-else ifneq ($(PICO_OMIT),)
-$(error PICO_OMIT=$(PICO_OMIT): clk_peri or nothing)
-endif
 # make bench measures libgcc's division too (fixed backend: the divider
 # serves the fixed layer)
 BOARD_BENCH_VARIANTS := PICO_DIVIDER=0
 # the build folder's name says the choices that are not the defaults
-BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart,$(if $(filter-out 320x240,$(PANEL)),-panel$(PANEL))$(if $(filter 1,$(PANEL_FLIP)),-flip))$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)$(if $(PICO_OMIT),-omit_$(PICO_OMIT))
+BOARD_TAG      := $(if $(filter uart,$(PICO_DISPLAY)),-uart,$(if $(filter-out 320x240,$(PANEL)),-panel$(PANEL))$(if $(filter 1,$(PANEL_FLIP)),-flip))$(if $(filter 0,$(PICO_DIVIDER)),-nodiv)
 ifneq ($(filter profile,$(MAKECMDGOALS)),)
 $(error make profile traces under QEMU, which has no RP2040: BOARD=microbit profiles the same ARMv6-M code)
 endif

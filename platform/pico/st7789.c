@@ -67,6 +67,7 @@
 #include "../arch/cortex-m/pl022.h"
 #include "board.h"
 #include "port.h"
+#include "rp2040.h"
 #include "sink.h"
 
 #ifndef PANEL_WIDTH /* board.mk passes PANEL's */
@@ -111,32 +112,13 @@ static const char panel_info[] = PANEL_INFO;
 _Static_assert(RT_FB_ONLY_FORMAT == RT_FB_RGB565BE, "the ST7789 takes rgb565be pixels (FW_FORMAT in board.mk)");
 #endif
 
-#define REG(addr) (*(volatile uint32_t *)(addr))
-
-#define SPI0 0x4003c000u /* a PL022 */
-#define GPIO_CTRL(n) REG(0x40014004u + 8u * (n))
-#define FUNC_SPI 1u
-#define FUNC_SIO 5u
-#define SIO_GPIO_OUT_SET REG(0xd0000014u)
-#define SIO_GPIO_OUT_CLR REG(0xd0000018u)
-#define SIO_GPIO_OE_SET REG(0xd0000024u)
+/* the panel's pins */
 #define PIN_DC 16u
 #define PIN_CS 17u
 #define PIN_SCK 18u
 #define PIN_TX 19u
 #define PIN_BACKLIGHT 20u
 /* #define PIN_RESET n   -- a module whose reset pin is wired to GPIO n */
-
-/* DMA channel 0 */
-#define DMA_READ_ADDR REG(0x50000000u)
-#define DMA_WRITE_ADDR REG(0x50000004u)
-#define DMA_TRANS_COUNT REG(0x50000008u)
-#define DMA_CTRL_TRIG REG(0x5000000cu)
-#define DMA_EN (1u << 0)
-#define DMA_INCR_READ (1u << 4)
-#define DMA_CHAIN_TO_SELF (0u << 11) /* chaining to itself: none */
-#define DMA_TREQ_SPI0_TX (16u << 15)
-#define DMA_BUSY (1u << 24)
 
 /* ST7789 commands */
 #define ST_SWRESET 0x01u

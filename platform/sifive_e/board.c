@@ -3,9 +3,8 @@
  * (port.h): the console is UART0, the instruction counter the minstret
  * CSR.
  */
+#include "../mmio.h"
 #include "port.h"
-
-#define REG(addr) (*(volatile uint32_t *)(addr))
 
 #define UART0_TXDATA REG(0x10013000u) /* read: bit 31 = FIFO full; write: a byte */
 #define UART0_TXCTRL REG(0x10013008u) /* bit 0: transmit enable */

@@ -26,11 +26,10 @@
  *    would be a HardFault.
  */
 #include "../arch/cortex-m/systick.h"
+#include "../mmio.h"
 #include "clock.h"
 #include "port.h"
 #include "sink.h"
-
-#define REG(addr) STM32_REG(addr)
 
 #ifndef STM32_USART
 #define STM32_USART 1
@@ -197,6 +196,8 @@ int port_counts_cycles(void) { return cyccnt_runs; }
 int port_counts_instructions(void) { return !cyccnt_runs; }
 
 uint64_t port_cycles_read(void) { return fold_now(&cycles64, &DWT_CYCCNT); }
+/* TIM2 already runs (counters_init, from port_init) and the firmware only
+ * subtracts two reads of it, so there is nothing to start */
 void port_icount_start(void) {}
 uint64_t port_icount_read(void) { return fold_now(&instr64, &TIM2_CNT); }
 

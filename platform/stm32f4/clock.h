@@ -2,15 +2,18 @@
  * clock.h - the STM32F4's clock tree (clock.c) and the RCC registers
  * board.c shares with it. Apart from board.c so that a host test
  * (tests/stm32f4_clock_test.c) can run it against a model of RCC and
- * FLASH: STM32_REG, when defined, replaces the register access.
+ * FLASH: STM32_REG, when defined, replaces the register access (by
+ * default mmio.h's REG, as everywhere else).
  */
 #ifndef STM32F4_CLOCK_H
 #define STM32F4_CLOCK_H
 
 #include <stdint.h>
 
+#include "../mmio.h"
+
 #ifndef STM32_REG
-#define STM32_REG(addr) (*(volatile uint32_t *)(uintptr_t)(addr))
+#define STM32_REG(addr) REG(addr)
 #endif
 
 #ifndef STM32_SYSCLK_MHZ /* board.mk passes the variant's: 168 or 84 */

@@ -9,7 +9,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define CMSDK_REG(base, off) (*(volatile uint32_t *)((base) + (off)))
+#include "../../mmio.h"
+
+#define CMSDK_REG(base, off) REG((base) + (off))
 
 /* UART: DATA +0, STATE +4 (bit 0: TX full), CTRL +8 (bit 0: TX enable),
  * BAUDDIV +0x10 (at least 16 before enabling; QEMU ignores the rate). */

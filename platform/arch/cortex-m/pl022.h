@@ -8,7 +8,9 @@
 
 #include <stdint.h>
 
-#define PL022_REG(base, off) (*(volatile uint32_t *)((base) + (off)))
+#include "../../mmio.h"
+
+#define PL022_REG(base, off) REG((base) + (off))
 #define PL022_CR0(base) PL022_REG(base, 0x00)  /* SCR 15..8, SPH 7, SPO 6, frame format, data size - 1 */
 #define PL022_CR1(base) PL022_REG(base, 0x04)  /* bit 1: enable (master when bit 2 is 0) */
 #define PL022_DR(base) PL022_REG(base, 0x08)

@@ -9,9 +9,11 @@
 
 #include <stdint.h>
 
-#define SYST_CSR (*(volatile uint32_t *)0xe000e010u)
-#define SYST_RVR (*(volatile uint32_t *)0xe000e014u)
-#define SYST_CVR (*(volatile uint32_t *)0xe000e018u)
+#include "../../mmio.h"
+
+#define SYST_CSR REG(0xe000e010u)
+#define SYST_RVR REG(0xe000e014u)
+#define SYST_CVR REG(0xe000e018u)
 #define SYST_TOP 0xffffffu /* counts SYST_TOP + 1 clocks a wrap */
 
 /* From its top, interrupting at each wrap. */
