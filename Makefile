@@ -173,47 +173,42 @@ stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
-# The fixed-point unit test links the fixed scalar layer alone.
-build/asan/test_fx: tests/unit/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/lib/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests/lib -o $@ tests/unit/test_fx.c src/numeric/fx.c -lm
+# ---- unit tests (tests/unit/) ---------------------------------------------
+#
+# The one list of unit tests is tests/suites.list, whose $B/test_NAME lines
+# make test runs; each is built as build/asan/test_NAME. By default a test
+# links the whole core (every backend, as rt does): build/VARIANT/test_NAME
+# from tests/unit/test_NAME.c (host_rules above). A test that links only
+# the files it tests names them in test_NAME_SRC, its own source first,
+# with test_NAME_FLAGS (defines) and test_NAME_INC (include folders) if it
+# needs them; UNIT_FX_SRC is the fixed-point layer most of them link.
+UNIT_TESTS := $(patsubst $$B/%,%,$(filter $$B/test_%,$(file < tests/suites.list)))
+UNIT_FX_SRC = src/numeric/fx.c
 
-# The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
+# every fixed-point operation against double
+test_fx_SRC = tests/unit/test_fx.c $(UNIT_FX_SRC)
+# the same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
-# binary search.
-build/asan/test_fx_soft: tests/unit/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/lib/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests/lib -o $@ \
-	    tests/unit/test_fx.c src/numeric/fx.c -lm
+# binary search
+test_fx_soft_SRC = $(test_fx_SRC)
+test_fx_soft_FLAGS = -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0
+# the coarse sphere test of cores without a long multiply, against the
+# exact test (this build's sphere_hit_inline, which does not call it)
+test_sphere_coarse_SRC = tests/unit/test_sphere_coarse.c src/geometry/sphere.c $(UNIT_FX_SRC)
+# the sample boxes by which a flat scene's eye rays skip spheres, against
+# the exact test on every sample of random views
+test_eye_box_SRC = tests/unit/test_eye_box.c src/geometry/camera.c src/geometry/sphere.c $(UNIT_FX_SRC) src/rt_error.c
+# a filtered checker lookup inside one cell takes the point sample: the
+# shortcut against the whole filter, random footprints
+test_footprint_SRC = tests/unit/test_footprint.c src/tracer/texture.c $(UNIT_FX_SRC) src/rt_error.c
+test_footprint_INC = -Isrc/tracer
 
-# The coarse sphere test of cores without a long multiply, against the
-# exact test (this build's sphere_hit_inline, which does not call it).
-build/asan/test_sphere_coarse: tests/unit/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c src/numeric/fx.c \
-                               tests/lib/testlib.h Makefile
+UNIT_PARTS = $(foreach t,$(UNIT_TESTS),$(if $($(t)_SRC),$(t)))
+$(foreach t,$(UNIT_PARTS),$(eval build/asan/$(t): $($(t)_SRC)))
+$(UNIT_PARTS:%=build/asan/%): build/asan/%: $(CORE_H) tests/lib/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests/lib -o $@ tests/unit/test_sphere_coarse.c \
-	    src/geometry/sphere.c src/numeric/fx.c -lm
-
-# The sample boxes by which a flat scene's eye rays skip spheres, against
-# the exact test on every sample of random views.
-build/asan/test_eye_box: tests/unit/test_eye_box.c src/geometry/camera.c src/geometry/camera.h src/geometry/sphere.h \
-                         src/geometry/sphere.c src/numeric/fx.c src/rt_error.c tests/lib/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests/lib -o $@ tests/unit/test_eye_box.c \
-	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
-
-# A filtered checker lookup inside one cell takes the point sample: the
-# shortcut against the whole filter, random footprints.
-build/asan/test_footprint: tests/unit/test_footprint.c src/tracer/texture.c src/tracer/texture.h src/numeric/fx.c \
-                           src/rt_error.c tests/lib/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Isrc/tracer -Itests/lib -o $@ tests/unit/test_footprint.c \
-	    src/tracer/texture.c src/numeric/fx.c src/rt_error.c -lm
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) $($*_FLAGS) -Iinclude -Isrc $($*_INC) -Itests/lib -o $@ $($*_SRC) -lm
 
 # ---- make install --------------------------------------------------------
 #
@@ -354,7 +349,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_footprint build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt $(UNIT_TESTS:%=build/asan/%) build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
         build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
