@@ -25,6 +25,7 @@ run() {
 # words split after $B is put in, not globbed
 set -f
 while IFS= read -r suite <&3; do
+    suite=${suite#"${suite%%[![:space:]]*}"} # (leading blanks)
     case "$suite" in '' | '#'*) continue ;; esac
     eval "run $suite" 3<&-
 done 3<"$LIST"
