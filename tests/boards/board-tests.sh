@@ -7,8 +7,9 @@
 #    the benchmark scenes of scenes/bench likewise;
 #  - plane, texture and sky code is pruned from firmware that lacks them
 #    (the generic firmware, SPECIALISE=0: the default inlines them);
-#  - footprint budgets of the default scene (showpiece, 128x128, depth 5),
-#    built for its scene (the default) and generic;
+#  - the footprint budgets of tests/boards/budgets.sh on the default scene
+#    (showpiece, 128x128, depth 5), built for its scene (the default) and
+#    generic, and the code budget on balls-2;
 #  - a scene over a capacity fails to build with a clear message;
 #  - on the host, every byte the stream sink writes counts as output, not
 #    as the render's time (tests/boards/sink_stream_test.c);
@@ -24,6 +25,7 @@ RT=${1:-build/host/rt}
 OUT=build/test-board
 mkdir -p "$OUT"
 . tests/lib/check.sh
+. tests/boards/budgets.sh
 fwdir() { make -s print-fwdir SCENE="$(scene_file $1)" SIZE=$2 DEPTH=5 AA=0; }
 # fw NAME [make variables]: build the firmware (log in $OUT/NAME.build),
 # run it (image $OUT/NAME-board.png, report $OUT/NAME.report)
@@ -66,7 +68,6 @@ done
 
 # Compile-time pruning changes code size, never pixels: unpruned firmware
 # (every primitive kind and feature compiled in) must give the same image.
-code_of() { arm-none-eabi-size -A "$1" | awk '$1 == ".text" || $1 == ".vectors" || $1 == ".ARM.exidx" { c += $2 } END { print c }'; }
 for s in balls-1 rings-1 teapot-1 gears-1 tetra-1; do
     p=$(fwdir $s 64x64) u="$(fwdir $s 64x64)-noprune"
     if fw $s-noprune SCENE=scenes/spd/$s.nff SIZE=64x64 DEPTH=5 PRUNE=0 &&
@@ -94,10 +95,11 @@ else
     bad "pruning: balls-2 links '$none'; textures links '$all'"
 fi
 
-# Code budget of a firmware with the SPD features only (balls-2: spheres,
-# one polygon, shadows, reflection, specular), scene tables excluded.
+# The code budget on a firmware with the SPD features only (balls-2:
+# spheres, one polygon, shadows, reflection, specular), scene tables excluded.
 c=$(code_of "$(fwdir balls-2 64x64)/fixed.elf")
-[ "${c:-99999}" -le 16384 ] && ok "balls-2 firmware code $c bytes <= 16 KiB" || bad "balls-2 firmware code ${c:-?} bytes > 16 KiB"
+[ "${c:-0}" -gt 0 ] && [ "$c" -le $FW_CODE_MAX ] && ok "balls-2 firmware code $c bytes <= $FW_CODE_MAX" ||
+    bad "balls-2 firmware code ${c:-?} bytes > $FW_CODE_MAX"
 
 # The packed framebuffer formats on the board against the host's
 # (rgb565be: 16-bit byte-swapped; l4: two pixels per byte, and at an odd
@@ -144,7 +146,7 @@ arm-none-eabi-nm "$d/double.elf" | grep -q ' __aeabi_dmul$' &&
     ok "control: the soft-float build does link __aeabi_dmul" ||
     bad "control: the soft-float build shows no __aeabi_dmul (the symbol check proves nothing)"
 
-# Footprint budgets of the default scene at depth 5.
+# The footprint budgets on the default scene at depth 5.
 if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 RUN_OUT="$OUT/default.png" RUN_RT="$RT" >"$OUT/default.report" 2>&1; then
     eval "$(arm-none-eabi-size -A "$d/fixed.elf" | awk '
         $1 == ".vectors" || $1 == ".text" || $1 == ".ARM.exidx" { code += $2 }
@@ -154,15 +156,16 @@ if make -s board-run SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 RUN_OU
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/default.report")
     guard=$(awk '$1 == "stack_guard_intact" { print $2 }' "$OUT/default.report")
     # built for its scene (the default): the generic code and what the
-    # scene's constants unroll; the generic firmware within 20 KiB
+    # scene's constants unroll; the generic firmware too within the budget
     make -s -j2 firmware SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 SPECIALISE=0 >"$OUT/default-generic.build" 2>&1
     generic=$(code_of "$(make -s print-fwdir SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 AA=0 SPECIALISE=0)/fixed.elf")
-    [ "$code" -le 24576 ] && [ "${generic:-99999}" -le 20480 ] &&
-        ok "code $code bytes <= 24 KiB, generic (SPECIALISE=0) $generic bytes <= 20 KiB (scene tables excluded)" ||
-        bad "code $code bytes (limit 24 KiB), generic ${generic:-?} bytes (limit 20 KiB)"
-    [ $((ram - band)) -le 4096 ] && ok "RAM $((ram - band)) bytes + band $band bytes (<= 4 KiB + band)" ||
-        bad "RAM $((ram - band)) bytes (+ band $band) > 4 KiB"
-    [ "${hw:-99999}" -le 2048 ] && ok "stack high-water $hw bytes <= 2 KiB" || bad "stack high-water ${hw:-?} bytes > 2 KiB"
+    [ "$code" -gt 0 ] && [ "$code" -le $FW_CODE_MAX ] && [ "${generic:-99999}" -le $FW_CODE_MAX ] &&
+        ok "code $code bytes, generic (SPECIALISE=0) $generic bytes, each <= $FW_CODE_MAX (scene tables excluded)" ||
+        bad "code $code bytes, generic ${generic:-?} bytes (limit $FW_CODE_MAX each)"
+    [ "$ram" -gt 0 ] && [ $((ram - band)) -le $FW_RAM_MAX ] && ok "RAM $((ram - band)) bytes + band $band bytes (<= $FW_RAM_MAX + band)" ||
+        bad "RAM $((ram - band)) bytes (+ band $band) > $FW_RAM_MAX"
+    [ "${hw:-99999}" -le $FW_STACK_MAX ] && ok "stack high-water $hw bytes <= $FW_STACK_MAX" ||
+        bad "stack high-water ${hw:-?} bytes > $FW_STACK_MAX"
     [ "$guard" = 1 ] && ok "stack guard intact" || bad "stack guard overwritten"
 else
     bad "default scene board run failed: $(tail -3 "$OUT/default.report")"
@@ -191,8 +194,8 @@ if fw mirrors SCENE="$mir" SIZE=32x32 DEPTH=5 &&
    "$RT" "$mir" -o "$OUT/mirrors-host.png" --size 32x32 --depth 5 --quiet &&
    "$RT" compare "$OUT/mirrors-board.png" "$OUT/mirrors-host.png" --max-error 0 >/dev/null; then
     hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/mirrors.report")
-    [ "${hw:-99999}" -le 2048 ] && ok "facing mirrors at depth 5: board == host, stack high-water $hw bytes <= 2 KiB" ||
-        bad "facing mirrors: stack high-water ${hw:-?} bytes > 2 KiB"
+    [ "${hw:-99999}" -le $FW_STACK_MAX ] && ok "facing mirrors at depth 5: board == host, stack high-water $hw bytes <= $FW_STACK_MAX" ||
+        bad "facing mirrors: stack high-water ${hw:-?} bytes > $FW_STACK_MAX"
 else
     bad "facing mirrors at depth 5 failed on the board: $(tail -2 "$OUT/mirrors.report")"
 fi
