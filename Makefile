@@ -143,9 +143,9 @@ build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/testlib.h tests/probe_jump.h
+build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/lib/testlib.h tests/unit/probe_jump.h
 	$$(show) CC $$@
-	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests \
+	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests/lib \
 	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
 endef
 
@@ -162,7 +162,7 @@ CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
 $(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
 
-# ThreadSanitizer build of rt (tests/threads-tests.sh): renders on several
+# ThreadSanitizer build of rt (tests/host/threads-tests.sh): renders on several
 # threads share no written byte (and the saturation counter is atomic).
 tsan_CFLAGS = -O1 -g -fsanitize=thread -DFX_COUNT_SATURATIONS=1
 tsan_LDFLAGS = -fsanitize=thread
@@ -173,47 +173,42 @@ stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
-# The fixed-point unit test links the fixed scalar layer alone.
-build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
+# ---- unit tests (tests/unit/) ---------------------------------------------
+#
+# The one list of unit tests is tests/suites.list, whose $B/test_NAME lines
+# make test runs; each is built as build/asan/test_NAME. By default a test
+# links the whole core (every backend, as rt does): build/VARIANT/test_NAME
+# from tests/unit/test_NAME.c (host_rules above). A test that links only
+# the files it tests names them in test_NAME_SRC, its own source first,
+# with test_NAME_FLAGS (defines) and test_NAME_INC (include folders) if it
+# needs them; UNIT_FX_SRC is the fixed-point layer most of them link.
+UNIT_TESTS := $(patsubst $$B/%,%,$(filter $$B/test_%,$(file < tests/suites.list)))
+UNIT_FX_SRC = src/numeric/fx.c
 
-# The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
+# every fixed-point operation against double
+test_fx_SRC = tests/unit/test_fx.c $(UNIT_FX_SRC)
+# the same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
-# binary search.
-build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
-	    tests/test_fx.c src/numeric/fx.c -lm
+# binary search
+test_fx_soft_SRC = $(test_fx_SRC)
+test_fx_soft_FLAGS = -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0
+# the coarse sphere test of cores without a long multiply, against the
+# exact test (this build's sphere_hit_inline, which does not call it)
+test_sphere_coarse_SRC = tests/unit/test_sphere_coarse.c src/geometry/sphere.c $(UNIT_FX_SRC)
+# the sample boxes by which a flat scene's eye rays skip spheres, against
+# the exact test on every sample of random views
+test_eye_box_SRC = tests/unit/test_eye_box.c src/geometry/camera.c src/geometry/sphere.c $(UNIT_FX_SRC) src/rt_error.c
+# a filtered checker lookup inside one cell takes the point sample: the
+# shortcut against the whole filter, random footprints
+test_footprint_SRC = tests/unit/test_footprint.c src/tracer/texture.c $(UNIT_FX_SRC) src/rt_error.c
+test_footprint_INC = -Isrc/tracer
 
-# The coarse sphere test of cores without a long multiply, against the
-# exact test (this build's sphere_hit_inline, which does not call it).
-build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c src/numeric/fx.c \
-                               tests/testlib.h Makefile
+UNIT_PARTS = $(foreach t,$(UNIT_TESTS),$(if $($(t)_SRC),$(t)))
+$(foreach t,$(UNIT_PARTS),$(eval build/asan/$(t): $($(t)_SRC)))
+$(UNIT_PARTS:%=build/asan/%): build/asan/%: $(CORE_H) tests/lib/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
-	    src/geometry/sphere.c src/numeric/fx.c -lm
-
-# The sample boxes by which a flat scene's eye rays skip spheres, against
-# the exact test on every sample of random views.
-build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry/camera.h src/geometry/sphere.h \
-                         src/geometry/sphere.c src/numeric/fx.c src/rt_error.c tests/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
-	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
-
-# A filtered checker lookup inside one cell takes the point sample: the
-# shortcut against the whole filter, random footprints.
-build/asan/test_footprint: tests/test_footprint.c src/tracer/texture.c src/tracer/texture.h src/numeric/fx.c \
-                           src/rt_error.c tests/testlib.h Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Isrc/tracer -Itests -o $@ tests/test_footprint.c \
-	    src/tracer/texture.c src/numeric/fx.c src/rt_error.c -lm
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) $($*_FLAGS) -Iinclude -Isrc $($*_INC) -Itests/lib -o $@ $($*_SRC) -lm
 
 # ---- make install --------------------------------------------------------
 #
@@ -225,7 +220,7 @@ build/asan/test_footprint: tests/test_footprint.c src/tracer/texture.c src/trace
 #   $(includedir)/rt/internal/  the core's internal headers (src/'s *.h),
 #                             which the tables rt-scenec writes include
 #   $(libdir)/cmake/rt/       find_package(rt CONFIG): rt::core, rt_add_scene
-# (tests/install-tests.sh checks that both lay out the same files).
+# (tests/host/install-tests.sh checks that both lay out the same files).
 PREFIX     ?= /usr/local
 bindir     ?= $(PREFIX)/bin
 libdir     ?= $(PREFIX)/lib
@@ -354,7 +349,7 @@ bench-quick: deps
 
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
-TESTS = build/host/rt build/asan/test_fx build/asan/test_fx_soft build/asan/test_sphere_coarse build/asan/test_eye_box build/asan/test_footprint build/asan/test_geometry build/asan/test_tiles build/asan/test_bvh build/asan/test_hal build/asan/rt \
+TESTS = build/host/rt $(UNIT_TESTS:%=build/asan/%) build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
         build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
@@ -371,28 +366,28 @@ test: deps
 #   fuzz_scenec      the scene compiler: reader (board capacities) and emitters
 #   fuzz_scenec_float  the same for the float tables
 #   fuzz_receive     rt receive's UART stream decoder
-# Seeds: tests/fuzz-corpus (NFF), tests/fuzz-corpus-receive (streams); new
+# Seeds: tests/fuzz/corpus (NFF), tests/fuzz/corpus-receive (streams); new
 # inputs go to build/fuzz/corpus-NAME. make test runs FUZZ_SMOKE seconds
-# of each (tests/fuzz-smoke.sh); make fuzz FUZZER=NAME runs one longer.
+# of each (tests/fuzz/fuzz-smoke.sh); make fuzz FUZZER=NAME runs one longer.
 FUZZ_SECONDS ?= 300
 FUZZ_SMOKE ?= 15
 FUZZER ?= fuzz_nff
 FUZZ_FLAGS = -std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=undefined
-build/fuzz/fuzz_nff: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
+build/fuzz/fuzz_nff: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_double: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
+build/fuzz/fuzz_nff_double: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz_nff.c $(CORE_SRC)
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_float: tests/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
+build/fuzz/fuzz_nff_float: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
-	    tests/fuzz_nff.c $(CORE_SRC)
+	    tests/fuzz/fuzz_nff.c $(CORE_SRC)
 
 # $(1) backend id, $(2) its flags: one build of the core for the
 # differential harness, instrumented, exporting only rt_backend_<id>
@@ -410,42 +405,42 @@ $(eval $(call fuzz_core_rule,fixed,))
 $(eval $(call fuzz_core_rule,float,$(BACKEND_FLAGS_float)))
 $(eval $(call fuzz_core_rule,double,$(BACKEND_FLAGS_double)))
 
-build/fuzz/fuzz_readers: tests/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
+build/fuzz/fuzz_readers: tests/fuzz/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(HOST_INC) -o $@ $^ -lm
 
 # $(1) name, $(2) backend flags: the scene compiler with the firmware's
 # capacities, for the fixed tables and for the float ones (hex floats)
 define fuzz_scenec_rule
-build/fuzz/$(1): tests/fuzz_scenec.c tools/scenec.c app/rt/host_io.c \
+build/fuzz/$(1): tests/fuzz/fuzz_scenec.c tools/scenec.c app/rt/host_io.c \
                         $(wildcard app/rt/*.h) $(CORE_SRC) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -ffp-contract=off $(BOARD_CAPS) $(2) -Iinclude -Isrc \
-	    -Iapp/rt -o $$@ tests/fuzz_scenec.c app/rt/host_io.c $(CORE_SRC) -lm
+	    -Iapp/rt -o $$@ tests/fuzz/fuzz_scenec.c app/rt/host_io.c $(CORE_SRC) -lm
 endef
 $(eval $(call fuzz_scenec_rule,fuzz_scenec,))
 $(eval $(call fuzz_scenec_rule,fuzz_scenec_float,-DRT_BACKEND_FLOAT=1))
 
-build/fuzz/fuzz_receive: tests/fuzz_receive.c app/rt/uart_stream.c app/rt/uart_stream.h \
+build/fuzz/fuzz_receive: tests/fuzz/fuzz_receive.c app/rt/uart_stream.c app/rt/uart_stream.h \
                          app/rt/image.h include/rt_fb.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Iapp/rt -o $@ \
-	    tests/fuzz_receive.c app/rt/uart_stream.c -lz
+	    tests/fuzz/fuzz_receive.c app/rt/uart_stream.c -lz
 
 fuzz: deps build/fuzz/$(FUZZER)
 	@mkdir -p build/fuzz/corpus-$(FUZZER)
-	build/fuzz/$(FUZZER) build/fuzz/corpus-$(FUZZER) $(if $(filter fuzz_receive,$(FUZZER)),tests/fuzz-corpus-receive,tests/fuzz-corpus) \
+	build/fuzz/$(FUZZER) build/fuzz/corpus-$(FUZZER) $(if $(filter fuzz_receive,$(FUZZER)),tests/fuzz/corpus-receive,tests/fuzz/corpus) \
 	    -max_total_time=$(FUZZ_SECONDS) -timeout=10 -max_len=4096 -print_final_stats=1
 
 fuzz-coverage: deps
-	sh tests/fuzz-coverage.sh
+	sh tests/fuzz/fuzz-coverage.sh
 
-# Numerical stress suite (tests/stress.py); make test runs its quick subset.
+# Numerical stress suite (tests/host/stress.py); make test runs its quick subset.
 stress: deps
 	$(MAKE) build/stress/rt build/stress/test_rayfuzz
-	python3 tests/stress.py
+	python3 tests/host/stress.py
 
 clean:
 	rm -rf build out

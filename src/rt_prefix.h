@@ -6,7 +6,7 @@
  * zlib's Z_PREFIX does). real.h and fx.h, the roots of the internal
  * headers, include it; public headers do not, so a user's own names are
  * left alone. A new global function goes in this list: the symbol test
- * (tests/symbols.sh) fails on any global symbol without the prefix.
+ * (tests/static/symbols.sh) fails on any global symbol without the prefix.
  */
 #ifndef RT_PREFIX_H
 #define RT_PREFIX_H

@@ -24,7 +24,7 @@
 #                        sets it: "make run (BOARD=pico)"); default "make
 #                        run" or "make test" after the mode
 #   ENSURE_DEPS_DRY_RUN  1: print what would be installed, install nothing,
-#                        exit 0 (tests/deps-tests.sh)
+#                        exit 0 (tests/static/deps-tests.sh)
 #   ENSURE_DEPS_EMULATOR 0: the board's image only (make image): no npm ci
 #                        of an emulator package, even with nodejs named
 # A failure names the package, the command that needed it and apt's or
@@ -86,7 +86,7 @@ if [ "$mode" = test ]; then
     command -v python3 >/dev/null 2>&1 || need="$need python3"   # stress suite, benchmarks, make size
     command -v valgrind >/dev/null 2>&1 || need="$need valgrind"   # make bench: callgrind
     command -v cppcheck >/dev/null 2>&1 || need="$need cppcheck"
-    command -v cmake >/dev/null 2>&1 || need="$need cmake"   # tests/consumer-tests.sh
+    command -v cmake >/dev/null 2>&1 || need="$need cmake"   # tests/host/consumer-tests.sh
     # libFuzzer: clang and its runtime
     command -v clang >/dev/null 2>&1 || need="$need clang"
     ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a >/dev/null 2>&1 ||
@@ -95,7 +95,7 @@ if [ "$mode" = test ]; then
     if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=address,undefined -o /dev/null - >/dev/null 2>&1; then
         need="$need libasan8 libubsan1"
     fi
-    # ThreadSanitizer (build/tsan/rt, tests/threads-tests.sh): gcc's libtsan
+    # ThreadSanitizer (build/tsan/rt, tests/host/threads-tests.sh): gcc's libtsan
     if ! echo 'int main(void){return 0;}' | cc -x c -fsanitize=thread -o /dev/null - >/dev/null 2>&1; then
         need="$need libtsan2"
     fi

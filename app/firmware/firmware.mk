@@ -11,7 +11,7 @@
 #  - SIZE: the frame, unless given: the board's BOARD_SIZE if it sets one
 #    (the OLED's panel), else the scene's `resolution` (every scene has
 #    one: the reader requires it in the viewpoint), read by
-#    scene-size.awk (tests/board-tests.sh checks it against rt for every
+#    scene-size.awk (tests/boards/board-tests.sh checks it against rt for every
 #    scene of scenes/). A board with a panel (BOARD_PANEL) refuses a larger
 #    frame at build time, naming both sizes.
 #  - AA, SPP, DITHER: unless given, the board's BOARD_RUN_AA (3 levels, or
@@ -372,7 +372,7 @@ PRIMS_OBJS = $(filter-out $(FW_DIR)/fixed/main.o,$(FW_OBJS_fixed)) $(FW_DIR)/fix
 
 # libc and libm only for what a soft-float build needs (newlib's sqrt; a
 # hard-float build inlines vsqrt and links none of them; the fixed build
-# neither: tests/ports-tests.sh checks).
+# neither: tests/boards/ports-tests.sh checks).
 define firmware_elf
 $(FW_DIR)/$(1).elf: $$(FW_OBJS_$(1)) $(BOARD_LD) app/firmware/sections.ld
 	$$(show) LD $$@

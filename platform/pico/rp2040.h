@@ -1,6 +1,6 @@
 /*
  * rp2040.h - the RP2040's registers the Pico's port uses (board.c,
- * st7789.c) and the runner's test images use (tests/pico_core1.c):
+ * st7789.c) and the runner's test images use (tests/boards/pico_core1.c):
  * addresses and bit fields from the datasheet, one definition each. What
  * the board chooses (clocks, pins, baud rate) stays in its files; the
  * divider's registers are sio_div.h's.

@@ -1,7 +1,7 @@
 /*
  * clock.h - the STM32F4's clock tree (clock.c) and the RCC registers
  * board.c shares with it. Apart from board.c so that a host test
- * (tests/stm32f4_clock_test.c) can run it against a model of RCC and
+ * (tests/boards/stm32f4_clock_test.c) can run it against a model of RCC and
  * FLASH: STM32_REG, when defined, replaces the register access (by
  * default mmio.h's REG, as everywhere else).
  */

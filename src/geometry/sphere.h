@@ -44,7 +44,7 @@ bool ray_hit_sphere(const sphere_t *s, const ray_t *r, real_t tmin, real_t *t, b
  *  - the line misses when |p| > lim = ceil(r 2^8) + G: a component past
  *    lim says so at once, else each |p_i| <= lim < 2^14.1 (r <= 2^6, G <
  *    530) and the squares' sum < 2^31. */
-#define SPHERE_COARSE FX_MUL64_PARTIAL /* where it pays; tests/test_sphere_coarse.c checks it on the host */
+#define SPHERE_COARSE FX_MUL64_PARTIAL /* where it pays; tests/unit/test_sphere_coarse.c checks it on the host */
 static RT_INLINE bool sphere_coarse_miss(const sphere_t *s, const ray_t *r, real_t tmin, real_t t)
 {
     if (s->radius > ((fx_t)64 << FX_FRAC_BITS))

@@ -6,7 +6,7 @@
  * to nearest and saturates to +-FX_MAX (never wraps). FX_ON_SATURATE() is
  * called on each saturation so a debug build can count them.
  *
- * Accuracy (measured by tests/test_fx.c over dense input sweeps; "ulp" is
+ * Accuracy (measured by tests/unit/test_fx.c over dense input sweeps; "ulp" is
  * one unit of the last place, 2^-F):
  *   fx_mul, fx_div        correctly rounded (<= 0.5 ulp)
  *   fx_recip              correctly rounded (<= 0.5 ulp)
@@ -136,7 +136,7 @@ static inline int64_t fx_round_shift(int64_t v, unsigned shift)
  * inline assembly on ARMv6-M with GCC or clang (fewer instructions than
  * the C, which has no add-with-carry), and elsewhere (a host forcing the
  * path to test it) fx_mul64_partial / fx_umul64_partial, the same
- * arithmetic in C, which tests/test_fx.c checks against the plain product.
+ * arithmetic in C, which tests/unit/test_fx.c checks against the plain product.
  */
 #ifndef FX_MUL64_PARTIAL
 #if defined(__ARM_ARCH_6M__)

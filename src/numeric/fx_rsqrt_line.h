@@ -2,7 +2,7 @@
  * fx_rsqrt_line.h - the seed of the reciprocal square root (fx.c): for x
  * in [2^30, 2^32), 48 lines under 2^31 / sqrt(x / 2^30), one per 2^26 of
  * x. Entry i is line i's value at the start of its interval, whose low 11
- * bits are its drop per unit of x's bits 25..10. tests/test_fx.c holds
+ * bits are its drop per unit of x's bits 25..10. tests/unit/test_fx.c holds
  * every line under the function and within 2^-11.4 of it.
  */
 #ifndef FX_RSQRT_LINE_H

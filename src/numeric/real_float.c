@@ -33,7 +33,7 @@
  * results are within 0.76 2^-149 of x^s; beyond the float range, +inf.
  * The exception: s = 4, 8, 16, 32, 64 take k squarings instead (s = 2 is
  * one, correctly rounded), within 2^k 2^-24 relative.
- * tests/test_geometry.c asserts 6.2e-8 on a sparser sweep.
+ * tests/unit/test_geometry.c asserts 6.2e-8 on a sparser sweep.
  */
 #include "real.h"
 

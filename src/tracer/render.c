@@ -430,7 +430,7 @@ static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t
 /* The progressive passes (rt_render.h), in order: the first sample's
  * offset in each 8x8 tile, the spacing of the samples, the block each
  * one paints. One list: the passes' lattices nest, and together they
- * hold each pixel of a tile once (tests/progressive-tests.sh checks the
+ * hold each pixel of a tile once (tests/host/progressive-tests.sh checks the
  * pictures against the rule, render.c's counts against a frame's). */
 typedef struct {
     uint8_t ox, oy, sx, sy, bw, bh;

@@ -3,7 +3,7 @@
 # tokens, '#' to the end of the line a comment, the two whole numbers after
 # the viewpoint's `resolution` keyword (32.0 and 3.2e1 are 32 too). Prints
 # nothing when there is none or they are not whole numbers: the reader
-# then says what is wrong. tests/board-tests.sh checks it against rt for
+# then says what is wrong. tests/boards/board-tests.sh checks it against rt for
 # every scene of scenes/.
 function whole(t) {
     return t ~ /^[+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][+-]?[0-9]+)?$/ && t + 0 >= 1 && t + 0 == int(t + 0)
