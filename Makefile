@@ -351,11 +351,11 @@ FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_flo
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt $(UNIT_TESTS:%=build/asan/%) build/asan/rt \
         build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
-        build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
+        build/scenec-float/rt-scenec build/scenec-double/rt-scenec build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
 test: deps
 	$(Q)$(MAKE) -j2 $(TESTS)
-	@FUZZ_SMOKE=$(FUZZ_SMOKE) tests/run-all.sh build/asan
+	@FUZZ_SMOKE=$(FUZZ_SMOKE) python3 tests/run-all.py build/asan
 
 # Fuzzing (clang's libFuzzer) under ASan and UBSan:
 #   fuzz_nff         the reader and a tiny render, fixed build, default capacities

@@ -70,7 +70,7 @@
 # BOARD_RUN_DITHER     | the default of DITHER                                            | 0                          | 1
 # BOARD_TAG            | a suffix of the build folder for the board's own choices         | empty                      | -nucleo64
 # BOARD_RULES          | a makefile of its own build steps, included after these          | empty                      | platform/pico/image.mk
-# BOARD_OBJS           | objects those steps make, linked into every image                | empty                      | build/board/pico/boot2/boot2_crc.o
+# BOARD_OBJS           | objects those steps make, linked into every image                | empty                      | $(FW_ROOT)/pico/boot2/boot2_crc.o
 # BOARD_IMAGES         | files those steps make from $(FW_DIR)/<backend>.elf, built       | empty                      | $(FW_DIR)/$(BACKEND).uf2
 #                      | with it: what a user flashes (make image copies them to out/)    |                            |
 # BOARD_IMAGE_SHOW     | a command that prints what one image holds                       | empty (echo)               | ls -l
@@ -98,6 +98,10 @@ BOARD_ARCH_SKIP :=
 BOARD_RULES :=
 BOARD_LDFLAGS :=
 BOARD_OBJS :=
+# Where firmware is built and run (FW_DIR below): build/board, unless the
+# caller gives another, as tests/run-all.py gives each suite its own so
+# that suites run side by side never build into one folder.
+FW_ROOT ?= build/board
 BOARD_IMAGES :=
 BOARD_IMAGE_NOTE :=
 BOARD_IMAGE_SHOW :=
@@ -258,7 +262,7 @@ FW_CHOICES := $(SIZE)/$(DEFAULT_SIZE) d$(DEPTH)/d5 $(FORMAT)/$(or $(FW_FORMAT),r
 empty :=
 space := $(empty) $(empty)
 FW_TAGS := $(subst $(space),,$(foreach c,$(FW_CHOICES),$(if $(filter-out $(lastword $(subst /, ,$(c))),$(firstword $(subst /, ,$(c)))),-$(firstword $(subst /, ,$(c))))))$(BOARD_TAG)
-FW_DIR := build/board/$(BOARD)/$(NAME)$(FW_TAGS)
+FW_DIR := $(FW_ROOT)/$(BOARD)/$(NAME)$(FW_TAGS)
 FW_ELF := $(FW_DIR)/$(BACKEND).elf
 SCENEC_DIR := build/scenec$(if $(filter-out q20,$(CONFIG)),-$(CONFIG))
 

@@ -42,7 +42,7 @@ BOARD_CORES    := 2
 BOARD_CFLAGS   += -DBOARD_LED=1
 # boot2 with its CRC, and the UF2 to copy onto the RPI-RP2 drive
 BOARD_RULES    := platform/pico/image.mk
-BOARD_OBJS     := build/board/pico/boot2/boot2_crc.o
+BOARD_OBJS     := $(FW_ROOT)/pico/boot2/boot2_crc.o
 BOARD_IMAGES    = $(FW_DIR)/$(BACKEND).uf2
 BOARD_IMAGE_SHOW := node tools/emu/pico/uf2.mjs check
 BOARD_IMAGE_NOTE = copy it onto the RPI-RP2 drive (hold BOOTSEL while plugging the Pico in): docs/boards.md, On a real Pico

@@ -9,7 +9,7 @@
 #    the panel, that it draws the frame make built it for on that panel;
 #  - make uf2, the same as make image: that file copied to out/, as
 #    make run does, and checked.
-PICO_BOOT2 := build/board/pico/boot2
+PICO_BOOT2 := $(FW_ROOT)/pico/boot2
 
 $(PICO_BOOT2)/boot2.elf: platform/pico/boot2.S platform/pico/image.mk
 	@mkdir -p $(@D)

@@ -316,7 +316,7 @@ fault_image() { # NAME BOOT2-OBJECT: $OUT/fault/NAME.elf and .uf2
         node tools/emu/pico/uf2.mjs pack "$OUT/fault/$1.bin" "$OUT/fault/$1.uf2"
 }
 mkdir -p "$OUT/fault"
-boot2=build/board/pico/boot2/boot2_crc.o
+boot2=${FW_ROOT:-build/board}/pico/boot2/boot2_crc.o
 arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles -e start -DFAULT_BOOT2 -Wl,-Ttext=0x20041f00 \
     -o "$OUT/fault/boot2.elf" tests/boards/pico_fault.S && arm-none-eabi-objcopy -O binary "$OUT/fault/boot2.elf" "$OUT/fault/boot2.bin" &&
     node tools/emu/pico/uf2.mjs boot2 "$OUT/fault/boot2.bin" "$OUT/fault/boot2.S" &&

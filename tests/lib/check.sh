@@ -11,7 +11,7 @@
 #   log NAME COMMAND...    run the command quietly into $out/NAME.log and
 #                          show the log's tail when it fails;
 #   summary NAME           the suite's last line, "NAME: N passed, M
-#                          failed" (what tests/run-all.sh reads), and its
+#                          failed" (what tests/run-all.py reads), and its
 #                          exit status: 0 only when nothing failed.
 # (the functions' own variables start with _ so that no caller's is changed)
 pass=0 fail=0

@@ -20,7 +20,7 @@ static int tl_passed, tl_failed;
         printf("\n");                                                      \
     } while (0)
 
-/* Prints "<name>: N passed, M failed" (collected by tests/run-all.sh). */
+/* Prints "<name>: N passed, M failed" (collected by tests/run-all.py). */
 static inline int tl_summary(const char *name)
 {
     printf("%s: %d passed, %d failed\n", name, tl_passed, tl_failed);
