@@ -173,47 +173,52 @@ stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
+# The fixed scalar layer's files (fx.h and those beside it) and the Phong
+# power built on it (src/tracer/shine.c): what the unit tests below link.
+FX_SRC = $(wildcard src/numeric/fx*.c) src/tracer/shine.c
+FX_H   = $(wildcard src/numeric/fx*.h) src/tracer/shine.h
+
 # The fixed-point unit test links the fixed scalar layer alone.
-build/asan/test_fx: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
+build/asan/test_fx: tests/test_fx.c $(FX_SRC) $(FX_H) tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
-	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c src/numeric/fx.c -lm
+	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_fx.c $(FX_SRC) -lm
 
 # The same with fx.c on the ARMv6-M path (no long multiply, no divide, no
 # CLZ): 16x16 partial products, the reciprocal's seed table, fx_clz32's
 # binary search.
-build/asan/test_fx_soft: tests/test_fx.c src/numeric/fx.c src/numeric/fx.h src/numeric/fx_rsqrt_line.h tests/testlib.h Makefile
+build/asan/test_fx_soft: tests/test_fx.c $(FX_SRC) $(FX_H) tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -DFX_MUL64_PARTIAL=1 -DFX_RECIP_TABLE=1 -DFX_CLZ_BUILTIN=0 -Iinclude -Isrc -Itests -o $@ \
-	    tests/test_fx.c src/numeric/fx.c -lm
+	    tests/test_fx.c $(FX_SRC) -lm
 
 # The coarse sphere test of cores without a long multiply, against the
 # exact test (this build's sphere_hit_inline, which does not call it).
-build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c src/numeric/fx.c \
+build/asan/test_sphere_coarse: tests/test_sphere_coarse.c src/geometry/sphere.h src/geometry/sphere.c $(FX_SRC) \
                                tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_sphere_coarse.c \
-	    src/geometry/sphere.c src/numeric/fx.c -lm
+	    src/geometry/sphere.c $(FX_SRC) -lm
 
 # The sample boxes by which a flat scene's eye rays skip spheres, against
 # the exact test on every sample of random views.
 build/asan/test_eye_box: tests/test_eye_box.c src/geometry/camera.c src/geometry/camera.h src/geometry/sphere.h \
-                         src/geometry/sphere.c src/numeric/fx.c src/rt_error.c tests/testlib.h Makefile
+                         src/geometry/sphere.c $(FX_SRC) src/rt_error.c tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Itests -o $@ tests/test_eye_box.c \
-	    src/geometry/camera.c src/geometry/sphere.c src/numeric/fx.c src/rt_error.c -lm
+	    src/geometry/camera.c src/geometry/sphere.c $(FX_SRC) src/rt_error.c -lm
 
 # A filtered checker lookup inside one cell takes the point sample: the
 # shortcut against the whole filter, random footprints.
-build/asan/test_footprint: tests/test_footprint.c src/tracer/texture.c src/tracer/texture.h src/numeric/fx.c \
+build/asan/test_footprint: tests/test_footprint.c src/tracer/texture.c src/tracer/texture.h $(FX_SRC) \
                            src/rt_error.c tests/testlib.h Makefile
 	@mkdir -p $(@D)
 	$(show) CC $@
 	$(Q)$(CC) $(WARN) $(asan_CFLAGS) $(asan_LDFLAGS) -Iinclude -Isrc -Isrc/tracer -Itests -o $@ tests/test_footprint.c \
-	    src/tracer/texture.c src/numeric/fx.c src/rt_error.c -lm
+	    src/tracer/texture.c $(FX_SRC) src/rt_error.c -lm
 
 # ---- make install --------------------------------------------------------
 #
