@@ -173,10 +173,10 @@ stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
 $(eval $(call host_rules,stress))
 
-# The fixed scalar layer's files (fx.h and those beside it) and the Phong
-# power built on it (src/tracer/shine.c): what the unit tests below link.
-FX_SRC = $(wildcard src/numeric/fx*.c) src/tracer/shine.c
-FX_H   = $(wildcard src/numeric/fx*.h) src/tracer/shine.h
+# The fixed scalar layer (fx.h and the files beside it), which the unit
+# tests below link.
+FX_SRC = $(wildcard src/numeric/fx*.c)
+FX_H   = $(wildcard src/numeric/fx*.h)
 
 # The fixed-point unit test links the fixed scalar layer alone.
 build/asan/test_fx: tests/test_fx.c $(FX_SRC) $(FX_H) tests/testlib.h Makefile

@@ -1,7 +1,7 @@
 /*
  * test_fx.c - every fixed-point operation against double over dense or
- * random input sweeps. Each check asserts the accuracy its header (fx.h and
- * the headers beside it, tracer/shine.h) documents and
+ * random input sweeps. Each check asserts the accuracy its header (fx.h or
+ * one beside it) documents and
  * prints the measured worst case in ulps (1 ulp = 2^-FX_FRAC_BITS). The
  * exact operations (fx_div, fx_recip, fx_sqrt, fx_wsqrt) are also held to
  * the exact answer, bit for bit, from plain integer arithmetic here, and
@@ -20,7 +20,6 @@
 #include "numeric/fx_rsqrt_line.h"
 #include "numeric/real.h"
 #include "testlib.h"
-#include "tracer/shine.h"
 
 static const double ULP = 1.0 / FX_ONE;
 static const double RANGE = (double)FX_MAX / FX_ONE; /* largest fx_t value */
@@ -340,7 +339,7 @@ static void test_sqrt_exact(void)
  * made with (tests/image-tests.sh), so a change to them shows here. */
 static uint32_t ref_rsqrt_q31(uint32_t x)
 {
-    static const uint32_t line[FX_RSQRT_LINES] = FX_RSQRT_LINE_INIT; /* fx_root.c's seed; test_rsqrt_line checks it */
+    static const uint32_t line[FX_RSQRT_LINES] = FX_RSQRT_LINE_INIT; /* fx.c's seed; test_rsqrt_line checks it */
     uint64_t c = line[(x >> 26) - 16];
     uint64_t y = c - (c & 0x7FF) * ((x >> 10) & 0xFFFF);
     uint64_t y2 = (y * y) >> 31; /* one step: y (3 - x y^2) / 2 */
@@ -374,7 +373,7 @@ static void ref_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
         out[i] = (fx_t)((v[i] * r + ((int64_t)1 << (shift - 1))) >> shift);
 }
 
-/* The seed lines of fx_root.c's reciprocal square root, against the function
+/* The seed lines of fx.c's reciprocal square root, against the function
  * they stand for: under it, within 2^-11.3, at every 997th x and at both
  * ends of each line's interval. */
 static void test_rsqrt_line(void)

@@ -3,10 +3,13 @@
  * the format, saturation, and the general operations. The rest of the
  * fixed layer is split by idea:
  *   fx_wide.h     the 32x32 -> 64 products (included here)
+ *   fx_bounded.h  products that rely on a bound their callers keep
  *   fx_div.h      quotients of wide values, reciprocals for the BVH
  *   fx_root.h     square roots and unit vectors
- *   fx_bounded.h  products that rely on a bound their callers keep
+ *   fx_pow.h      x^s for x in [0, 1] (the Phong highlight's)
  *   fx_setup.h    trigonometry and decimal conversion, for set-up only
+ * fx.c holds the operations that run while rendering, fx_setup.c the
+ * set-up maths.
  *
  * Default F = 20 (rt_config.h): range +-2047.999999, resolution 2^-20 = 9.5e-7.
  * Products keep a 64-bit intermediate; every conversion back to fx_t rounds
@@ -127,8 +130,8 @@ static inline fx_t fx_from_wide(fx_wide_t w) { return fx_sat64(fx_round_shift(w,
 
 static inline fx_wide_t fx_to_wide(fx_t a) { return (int64_t)a * FX_ONE; }
 
-fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a (fx_div.c) */
-fx_t fx_recip(fx_t b);                /* 1 / b (fx_div.c) */
+fx_t fx_div(fx_t a, fx_t b);          /* b == 0 saturates by the sign of a */
+fx_t fx_recip(fx_t b);                /* 1 / b */
 
 /* a + b as fx_sat64 of the 64-bit sum, from the 32-bit sum and its
  * overflow flag (the M3's ADDS and BVS: 4 instructions instead of 10 when

@@ -1,5 +1,5 @@
 /*
- * fx_div.h - quotients (fx_div.c): of wide values, the BVH's reciprocals,
+ * fx_div.h - quotients (fx.c): of wide values, the BVH's reciprocals,
  * and 64-bit long division for set-up code. fx_div and fx_recip, the
  * general quotient and reciprocal, are declared in fx.h.
  *

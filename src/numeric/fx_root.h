@@ -1,5 +1,5 @@
 /*
- * fx_root.h - square roots and unit vectors of the fixed layer (fx_root.c).
+ * fx_root.h - square roots and unit vectors of the fixed layer (fx.c).
  *
  * Accuracy (tests/test_fx.c; ulp = 2^-F):
  *   fx_sqrt, fx_wsqrt     correctly rounded (<= 0.5 ulp); within 0.76 ulp

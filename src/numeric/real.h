@@ -203,15 +203,16 @@ static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
 #include "fx.h"
 #include "fx_bounded.h"
 #include "fx_div.h"
+#include "fx_pow.h"
 #include "fx_root.h"
 #include "fx_setup.h"
 
 typedef fx_t real_t;
 typedef fx_wide_t real_wide_t;
-/* a Phong exponent (the material's and the sky's), unsigned Q20.12: up
- * to ~5e5 (the reader's limit), in steps of 2^-12 */
+/* a Phong exponent (the material's and the sky's): fx_pow_unit's, unsigned
+ * Q20.12, up to ~5e5 (the reader's limit) in steps of 2^-12 */
 typedef uint32_t shine_t;
-#define R_SHINE_FRAC_BITS 12
+#define R_SHINE_FRAC_BITS FX_POW_FRAC_BITS
 
 #define R_RATIO(n, d) FX_RATIO(n, d)
 #define R_ONE FX_ONE
