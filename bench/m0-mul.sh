@@ -1,7 +1,7 @@
 #!/bin/sh
 # m0-mul.sh: the fixed layer's wide products on a Cortex-M0 (QEMU microbit,
 # nRF51), with the plain C product (__aeabi_lmul) against the 16x16
-# partial products of fx.h (FX_MUL64_PARTIAL=1 inline, =2 out of line).
+# partial products of fx_wide.h (FX_MUL64_PARTIAL=1 inline, =2 out of line).
 #
 #   sh bench/m0-mul.sh            (from the repository root; 1 to 3 minutes)
 #
