@@ -35,13 +35,20 @@ int64_t fx_mul64_call(int32_t a, int32_t b) { return fx_mul64_parts(a, b); }
 uint64_t fx_umul64_call(uint32_t a, uint32_t b) { return fx_umul64_parts(a, b); }
 #endif
 
+/* Leading zero bits of a non-zero value: fx_clz32 (fx.h), and for 64 bits */
+static int clz64(uint64_t v)
+{
+    uint32_t hi = (uint32_t)(v >> 32);
+    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
+}
+
 /* The binary long division of fx_div64, from n's top bit, up to 64
  * steps; the wide quotients of intersection tests (fx_wdiv, fx_wdiv_fx)
  * have their own digit division below. */
 static uint64_t udiv64(uint64_t n, uint64_t d)
 {
     uint64_t q = 0, r = 0;
-    for (int i = n ? 63 - fx_clz64(n) : -1; i >= 0; i--) {
+    for (int i = n ? 63 - clz64(n) : -1; i >= 0; i--) {
         r = (r << 1) | ((n >> i) & 1u); /* r < d <= 2^63: no overflow */
         q <<= 1;
         if (r >= d) {
@@ -310,7 +317,7 @@ fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
     const int lim_bits = 62 - FX_FRAC_BITS;
     uint64_t n = abs_u64(a), d = abs_u64(b);
     if (n >> lim_bits) {
-        int k = 64 - lim_bits - fx_clz64(n);
+        int k = 64 - lim_bits - clz64(n);
         n >>= k;
         d >>= k;
     }
@@ -451,7 +458,7 @@ void fx_unit3(int64_t x, int64_t y, int64_t z, fx_t out[3])
     }
     /* Bring the largest component to 28 bits (the OR of the magnitudes
      * has the same bit length as the largest). */
-    int n = 64 - fx_clz64(m) - 28;
+    int n = 64 - clz64(m) - 28;
     if (n <= 0)
         unit3_scaled((int32_t)x * ((int32_t)1 << -n), (int32_t)y * ((int32_t)1 << -n), (int32_t)z * ((int32_t)1 << -n),
                      out);

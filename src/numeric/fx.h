@@ -108,13 +108,6 @@ static inline int64_t fx_round_shift(int64_t v, unsigned shift)
     return (v + ((int64_t)1 << (shift - 1))) >> shift;
 }
 
-/* The same for a non-zero 64-bit value */
-static inline int fx_clz64(uint64_t v)
-{
-    uint32_t hi = (uint32_t)(v >> 32);
-    return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
-}
-
 #include "fx_wide.h"
 
 static inline fx_t fx_from_int(int32_t i) { return fx_sat64((int64_t)i * FX_ONE); }
