@@ -183,7 +183,7 @@ $(eval $(call host_rules,stress))
 # with test_NAME_FLAGS (defines) and test_NAME_INC (include folders) if it
 # needs them; UNIT_FX_SRC is the fixed-point layer most of them link.
 UNIT_TESTS := $(patsubst $$B/%,%,$(filter $$B/test_%,$(file < tests/suites.list)))
-UNIT_FX_SRC = src/numeric/fx.c
+UNIT_FX_SRC = $(wildcard src/numeric/fx*.c)
 
 # every fixed-point operation against double
 test_fx_SRC = tests/unit/test_fx.c $(UNIT_FX_SRC)

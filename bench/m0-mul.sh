@@ -1,7 +1,7 @@
 #!/bin/sh
 # m0-mul.sh: the fixed layer's wide products on a Cortex-M0 (QEMU microbit,
 # nRF51), with the plain C product (__aeabi_lmul) against the 16x16
-# partial products of fx.h (FX_MUL64_PARTIAL=1 inline, =2 out of line).
+# partial products of fx_wide.h (FX_MUL64_PARTIAL=1 inline, =2 out of line).
 #
 #   sh bench/m0-mul.sh            (from the repository root; 1 to 3 minutes)
 #
@@ -172,7 +172,7 @@ fx_t op_div(fx_t a, fx_t b);
 fx_t op_sqrt(fx_t a);
 fx_t op_length(const vec3_t *a);
 void op_unit(const vec3_t *a, vec3_t *out);
-fx_t op_pow(fx_t x, fx_shine_t s);
+fx_t op_pow(fx_t x, shine_t s);
 int op_edge(const vec3_t *d, const vec3_t *a, const vec3_t *b);
 /* ref.c: always the plain C product (__aeabi_lmul on the M0) */
 int64_t ref_mul64(int32_t a, int32_t b);
@@ -194,7 +194,7 @@ fx_t op_div(fx_t a, fx_t b) { return fx_div(a, b); }
 fx_t op_sqrt(fx_t a) { return fx_sqrt(a); }
 fx_t op_length(const vec3_t *a) { return v3_length(*a); }
 void op_unit(const vec3_t *a, vec3_t *out) { *out = v3_unit(*a); }
-fx_t op_pow(fx_t x, fx_shine_t s) { return fx_pow_unit(x, s); }
+fx_t op_pow(fx_t x, shine_t s) { return fx_pow_unit(x, s); }
 /* polygon.c's edge test: the sign of d . (a x b), the cross product wide */
 int op_edge(const vec3_t *d, const vec3_t *a, const vec3_t *b)
 {
@@ -346,7 +346,7 @@ int main(void)
     TIME("fx_sqrt", op_sqrt(xa[k] < 0 ? -xa[k] : xa[k]));
     TIME("v3_length", op_length(&va[k]));
     TIME("v3_unit", (op_unit(&va[k], &u), u.x));
-    TIME("fx_pow_unit", op_pow(vc[k].x < 0 ? -vc[k].x : vc[k].x, 50u << FX_SHINE_FRAC_BITS));
+    TIME("fx_pow_unit", op_pow(vc[k].x < 0 ? -vc[k].x : vc[k].x, 50u << R_SHINE_FRAC_BITS));
     TIME("edge_side", op_edge(&vc[k], &va[k], &vb[k]));
     board_puts("acc ");
     board_puthex(acc);

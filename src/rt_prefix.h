@@ -27,6 +27,7 @@
 #define decimal_exp2_bound       rt_decimal_exp2_bound
 #define decimal_recip_scaled     rt_decimal_recip_scaled
 #define fx_div                   rt_fx_div
+#define fx_div64                 rt_fx_div64
 #define fx_from_decimal          rt_fx_from_decimal
 #define fx_mul64_call            rt_fx_mul64_call
 #define fx_pow_unit              rt_fx_pow_unit
@@ -34,7 +35,6 @@
 #define fx_recip_q31             rt_fx_recip_q31
 #define fx_sincos_deg            rt_fx_sincos_deg
 #define fx_sqrt                  rt_fx_sqrt
-#define fx_tan_deg_wide          rt_fx_tan_deg_wide
 #define fx_umul64_call           rt_fx_umul64_call
 #define fx_unit3                 rt_fx_unit3
 #define fx_unit3_narrow          rt_fx_unit3_narrow
@@ -43,6 +43,7 @@
 #define fx_wdiv_fx               rt_fx_wdiv_fx
 #define fx_wdiv_int              rt_fx_wdiv_int
 #define fx_wsqrt                 rt_fx_wsqrt
+#define fx_wtan_deg              rt_fx_wtan_deg
 #define lex_count                rt_lex_count
 #define lex_direction            rt_lex_direction
 #define lex_direction_grid       rt_lex_direction_grid

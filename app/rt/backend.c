@@ -7,6 +7,7 @@
 #include "reader/nff.h"
 #include "geometry/prims.h"
 #include "geometry/scene_hit.h"
+#include "tracer/shine.h"
 #include "tracer/texture.h"
 #include "tracer/trace.h"
 
@@ -201,7 +202,7 @@ static bool eye_dir(int32_t nx, int32_t ny, int32_t i, int32_t j, double dir[3])
 static double pow_unit(double x, double s)
 {
 #if RT_BACKEND_FIXED
-    shine_t sh = (shine_t)(s * (1 << FX_SHINE_FRAC_BITS) + 0.5);
+    shine_t sh = (shine_t)(s * (1 << R_SHINE_FRAC_BITS) + 0.5);
 #else
     shine_t sh = (shine_t)s;
 #endif

@@ -1,6 +1,6 @@
 # board.mk - BBC micro:bit (nRF51822) under QEMU: a Cortex-M0 at 16 MHz,
 # 256 KiB flash, 16 KiB RAM, no FPU and no 32x32->64 multiply (the fixed
-# layer's ARMv6-M path, src/numeric/fx.h). Variables: app/firmware/firmware.mk.
+# layer's ARMv6-M path, src/numeric/fx_wide.h). Variables: app/firmware/firmware.mk.
 # the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
 BOARD_TITLE    := BBC micro:bit (nRF51822) with a Cortex-M0, no FPU and 16 KiB of RAM
 BOARD_ARCH     := cortex-m

@@ -154,7 +154,7 @@ RT_NOINLINE static int edge_side(const ray_t *r, const vec3_t *p, const vec3_t *
 
 /* A value rounded from a wide one, which GCC would otherwise keep in 64
  * bits and multiply 64x64 (five instructions for one SMULL); the empty
- * barrier of fx_sub_sat. */
+ * barrier of fx_mul64_hi. */
 static inline real_t narrow(real_t x)
 {
 #if RT_BACKEND_FIXED && defined(__GNUC__)
@@ -171,8 +171,8 @@ static inline real_t narrow(real_t x)
  * D . n = H 2^32 + L for H = sum d_k h_k and L = sum d_k l_k, where
  * d_k l_k = d_k (l_k - 2^31) + d_k 2^31 makes L three SMLALs from
  * bias = 2^31 sum d_k (inside_ring's), so top = H + (L >> 32) is
- * floor(D . n / 2^32) exactly. fx_wsign_dot's shift moves D . n by less
- * than sum |d_k| 2^s <= 2^46 (|d_k| <= 2, s <= 23): where
+ * floor(D . n / 2^32) exactly. fx_wdot3_sign_short's shift moves D . n by
+ * less than sum |d_k| 2^s <= 2^46 (|d_k| <= 2, s <= 23): where
  * |D . n| >= 2^46 it gives this sign. */
 static inline int edge_side_sure(const ray_t *r, vec3_t a, vec3_t b, int64_t bias)
 {

@@ -1,5 +1,17 @@
-/* fx.c - the out-of-line fixed-point operations (see fx.h for accuracy). */
-#include "fx.h"
+/*
+ * fx.c - the fixed layer's operations that run while rendering: the
+ * quotients (fx_div.h), the square roots and unit vectors (fx_root.h) and
+ * the power (fx_pow.h), and the saturation count (fx.h). Set-up maths is
+ * in fx_setup.c.
+ *
+ * They are one file because they share the wide products (fx_wide.h),
+ * whose inlining a whole-program build decides file by file: split by
+ * idea, the Cortex-M0 firmware inlines its reciprocal and power
+ * differently (more instructions a ray on the micro:bit and the Pico).
+ */
+#include "fx_div.h"
+#include "fx_pow.h"
+#include "fx_root.h"
 #include "fx_rsqrt_line.h"
 
 #if FX_COUNT_SATURATIONS
@@ -7,9 +19,9 @@ volatile uint32_t fx_saturations;
 #endif
 
 /* FX_FAST_MATH trades exactness for instructions: no exact last-unit fix
- * of square roots (within 0.76 ulp), and
- * 16 instead of 24 log2 bits and a degree-6 exp2 in powers. Quotients
- * are exact either way: their fix costs next to nothing. */
+ * of square roots (within 0.76 ulp), and 16 instead of 24 log2 bits and a
+ * degree-6 exp2 in powers. Quotients are exact either way: their fix
+ * costs next to nothing. */
 #if FX_FAST_MATH
 #define POW_LOG_BITS 16
 #define EXP2_DEGREE 6
@@ -19,17 +31,8 @@ volatile uint32_t fx_saturations;
 #endif
 
 #if FX_MUL64_PARTIAL == 2
-int64_t fx_mul64_call(int32_t a, int32_t b) { return fx_mul64_inline(a, b); }
-uint64_t fx_umul64_call(uint32_t a, uint32_t b) { return fx_umul64_inline(a, b); }
-#endif
-
-/* Signed products of 64-bit operands through fx_umul64x: where the signed
- * product is defined, its bits are the same. (The plain path is a macro so
- * that its code stays exactly the product written out.) */
-#if FX_MUL64_PARTIAL
-static inline int64_t smul64(int64_t a, int64_t b) { return (int64_t)fx_umul64x((uint64_t)a, (uint64_t)b); }
-#else
-#define smul64(a, b) ((int64_t)(a) * (b))
+int64_t fx_mul64_call(int32_t a, int32_t b) { return fx_mul64_parts(a, b); }
+uint64_t fx_umul64_call(uint32_t a, uint32_t b) { return fx_umul64_parts(a, b); }
 #endif
 
 /* Leading zero bits of a non-zero value: fx_clz32 (fx.h), and for 64 bits */
@@ -39,11 +42,9 @@ static int clz64(uint64_t v)
     return hi ? fx_clz32(hi) : 32 + fx_clz32((uint32_t)v);
 }
 
-/* n / d (d != 0), truncated like C's: binary long division from n's top
- * bit, up to 64 steps. A few dozen bytes where libgcc's 64-bit division
- * is 700 on the M3, for set-up code (camera, sines, tangents); the wide
- * quotients of intersection tests (fx_wdiv, fx_wdiv_fx) have their own
- * digit division below. */
+/* The binary long division of fx_div64, from n's top bit, up to 64
+ * steps; the wide quotients of intersection tests (fx_wdiv, fx_wdiv_fx)
+ * have their own digit division below. */
 static uint64_t udiv64(uint64_t n, uint64_t d)
 {
     uint64_t q = 0, r = 0;
@@ -58,7 +59,7 @@ static uint64_t udiv64(uint64_t n, uint64_t d)
     return q;
 }
 
-static int64_t sdiv64(int64_t n, int64_t d)
+int64_t fx_div64(int64_t n, int64_t d)
 {
     uint64_t q = udiv64(n < 0 ? 0 - (uint64_t)n : (uint64_t)n, d < 0 ? 0 - (uint64_t)d : (uint64_t)d);
     uint64_t sgn = 0u - (uint64_t)((n < 0) != (d < 0));
@@ -146,7 +147,7 @@ static inline uint32_t isqrt_round(uint64_t v)
 }
 
 /* 2^63 / d for d in [2^31, 2^32), never above it and less than 2^-27.4
- * relative under it (both checked for every d): fx_recip_q63_div (fx.h)
+ * relative under it (both checked for every d): fx_recip_q63_div (fx_div.h)
  * or, without a divide, fx_recip_step from a line per 64th of [1, 2)
  * under the curve, packed as in rsqrt_q31_sqrt (drop per unit of d's
  * bits 24..9). */
@@ -310,9 +311,9 @@ static RT_INLINE uint64_t div_62_31(uint32_t nt, uint32_t x, uint32_t d)
 fx_t fx_wdiv(fx_wide_t a, fx_wide_t b)
 {
     /* a / b = (a 2^F + b/2) / b rounded half away from zero, on the
-     * magnitudes, with |a| first below 2^(62-F): halving a and b with C's
-     * truncation until it is, as this always did, is shifting the
-     * magnitudes right by the excess bits at once. */
+     * magnitudes, with |a| first below 2^(62-F) so that a 2^F fits: both
+     * magnitudes shifted right by the excess bits at once (the same bits
+     * as halving a and b with C's truncation until it is). */
     const int lim_bits = 62 - FX_FRAC_BITS;
     uint64_t n = abs_u64(a), d = abs_u64(b);
     if (n >> lim_bits) {
@@ -362,9 +363,10 @@ RT_COLD RT_NOINLINE static fx_wide_t wdiv_fx_rare(fx_wide_t w, fx_t a)
         return w > 0 ? INT64_MAX : w < 0 ? -INT64_MAX : 0;
     }
     if (abs_u64(w) >> (62 - FX_FRAC_BITS) == 0)
-        return sdiv64(w * FX_ONE, a);
-    return (fx_wide_t)((uint64_t)sdiv64(w, a) << FX_FRAC_BITS); /* wraps, as C's product here did */
+        return fx_div64(w * FX_ONE, a);
+    return (fx_wide_t)((uint64_t)fx_div64(w, a) << FX_FRAC_BITS); /* wraps: (w / a) 2^F modulo 2^64, as C's product */
 }
+
 
 /* w 2^F / a, truncated, while |w| < 2^(62-F) (else (w / a) 2^F) */
 fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
@@ -378,10 +380,10 @@ fx_wide_t fx_wdiv_fx(fx_wide_t w, fx_t a)
     return (fx_wide_t)((q ^ sgn) - sgn);
 }
 
-/* fx_wsqrt where w < 0 or w >= 2^60 (a root of 2^30 or more, rare) */
-/* fx_wsqrt for w >= 2^60: w < 0 gives 0, roots that round to 2^31 or
- * more saturate, else r (twice the root of w / 4, within 2 of the root)
- * fixed with e = w - r^2 both ways ((r +- 1/2)^2 = r^2 +- r + 1/4). */
+/* fx_wsqrt for w < 0 or w >= 2^60 (a root of 2^30 or more, rare): w < 0
+ * gives 0, roots that round to 2^31 or more saturate, else r (twice the
+ * root of w / 4, within 2 of the root) fixed with e = w - r^2 both ways
+ * ((r +- 1/2)^2 = r^2 +- r + 1/4). */
 RT_COLD RT_NOINLINE static fx_t wsqrt_big(fx_wide_t w, uint32_t r)
 {
     if (w < 0)
@@ -406,7 +408,7 @@ fx_t fx_wsqrt(fx_wide_t w)
     return big ? wsqrt_big(w, 2 * r) : (fx_t)r;
 }
 
-fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return sdiv64(w, n); }
+fx_wide_t fx_wdiv_int(fx_wide_t w, int32_t n) { return fx_div64(w, n); }
 
 fx_t fx_sqrt(fx_t a) { return a <= 0 ? 0 : fx_wsqrt((fx_wide_t)a << FX_FRAC_BITS); }
 
@@ -524,18 +526,18 @@ static uint32_t exp2_frac_q30(int32_t f_q24)
     return p;
 }
 
-fx_t fx_pow_unit(fx_t x, fx_shine_t s)
+fx_t fx_pow_unit(fx_t x, uint32_t s)
 {
     if (x <= 0)
         return 0;
     if (x >= FX_ONE || s == 0)
         return FX_ONE;
     /* s an integer, 1 <= s <= 128: a tenth of the general path's
-     * instructions, for the exponents scenes pick by hand (fx.h) */
+     * instructions, for the exponents scenes pick by hand (fx_pow.h) */
     if (fx_pow_unit_int_path(x, s))
         return fx_pow_unit_int(x, s);
     /* y = s * log2(x) in Q.24; below -(F+2) the result rounds to 0. */
-    int64_t y = smul64(s, log2_q24(x)) / ((int64_t)1 << FX_SHINE_FRAC_BITS);
+    int64_t y = fx_mul64xx(s, log2_q24(x)) / ((int64_t)1 << FX_POW_FRAC_BITS);
     if (y <= -(int64_t)(FX_FRAC_BITS + 2) * (1 << 24))
         return 0;
     int32_t yi = (int32_t)y;
@@ -545,135 +547,4 @@ fx_t fx_pow_unit(fx_t x, fx_shine_t s)
     uint64_t p = exp2_frac_q30(f);      /* Q.30, in [1, 2) */
     unsigned shift = (unsigned)(30 - FX_FRAC_BITS + n);
     return (fx_t)((p + ((uint64_t)1 << (shift - 1))) >> shift);
-}
-
-/* Q.30 sin and cos of x in [0, pi/2] (Q.30), by nested Taylor series
- * to x^15 / x^16; truncation error below 1e-11. */
-static int64_t mul_q30(int64_t a, int64_t b) { return smul64(a, b) / ((int64_t)1 << 30); }
-
-static int64_t sin_q30(int64_t x)
-{
-    static const int32_t den[] = { 210, 156, 110, 72, 42, 20, 6 };
-    int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
-    for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
-        t = ((int64_t)1 << 30) - sdiv64(mul_q30(x2, t), den[i]);
-    return mul_q30(x, t);
-}
-
-static int64_t cos_q30(int64_t x)
-{
-    static const int32_t den[] = { 240, 182, 132, 90, 56, 30, 12, 2 };
-    int64_t x2 = mul_q30(x, x), t = (int64_t)1 << 30;
-    for (unsigned i = 0; i < sizeof den / sizeof den[0]; i++)
-        t = ((int64_t)1 << 30) - sdiv64(mul_q30(x2, t), den[i]);
-    return t;
-}
-
-/* deg (Q.F, |deg| < 2^31) times pi/180 in Q.40 (19190098069, 35 bits),
- * to radians in Q.30, truncated towards zero: the product takes up to
- * 66 bits, so it is formed in two parts that each fit. floor((a 2^20 + b) /
- * 2^(F+10)) = floor((a + floor(b / 2^20)) / 2^(F-10)), so the bits are
- * the single product's wherever that fitted. */
-static int64_t deg_to_rad_q30(int64_t deg)
-{
-    const uint64_t k = 19190098069u, k_hi = k >> 20, k_lo = k & 0xFFFFFu;
-    uint64_t m = deg < 0 ? 0 - (uint64_t)deg : (uint64_t)deg;
-#if FX_FRAC_BITS >= 10
-    uint64_t q = (m * k_hi + ((m * k_lo) >> 20)) >> (FX_FRAC_BITS - 10);
-#else
-    uint64_t q = (m * k_hi << (10 - FX_FRAC_BITS)) + ((m * k_lo) >> (FX_FRAC_BITS + 10));
-#endif
-    return deg < 0 ? -(int64_t)q : (int64_t)q;
-}
-
-fx_wide_t fx_tan_deg_wide(fx_t deg)
-{
-    int64_t rad = deg_to_rad_q30(deg);
-    int64_t s = sin_q30(rad), c = cos_q30(rad);
-    if (c <= 0)
-        return INT64_MAX;
-    int64_t t30 = sdiv64(s * ((int64_t)1 << 30), c); /* tan in Q.30 (s < 2^30, fits) */
-#if 2 * FX_FRAC_BITS >= 30
-    return t30 * ((int64_t)1 << (2 * FX_FRAC_BITS - 30));
-#else
-    return fx_round_shift(t30, 30 - 2 * FX_FRAC_BITS);
-#endif
-}
-
-void fx_sincos_deg(fx_t deg, fx_t *sin_out, fx_t *cos_out)
-{
-    /* reduce to [0, 360) degrees, then to a quadrant [0, 90] */
-    int64_t full = (int64_t)360 * FX_ONE;
-    int64_t a = deg - sdiv64(deg, full) * full;
-    if (a < 0)
-        a += full;
-    int quadrant = (int)sdiv64(a, (int64_t)90 * FX_ONE);
-    int64_t r = a - quadrant * (int64_t)90 * FX_ONE;
-    int64_t rad = deg_to_rad_q30(r);
-    int64_t s = sin_q30(rad), c = cos_q30(rad);
-    for (int q = 0; q < quadrant; q++) { /* rotate by 90 degrees */
-        int64_t t = s;
-        s = c;
-        c = -t;
-    }
-    *sin_out = fx_sat64(fx_round_shift(s, 30 - FX_FRAC_BITS));
-    *cos_out = fx_sat64(fx_round_shift(c, 30 - FX_FRAC_BITS));
-}
-
-bool fx_from_decimal(bool neg, uint64_t mant, int32_t exp10, int32_t frac_bits, uint32_t max, int32_t *out)
-{
-    uint64_t result;
-    /* frac_bits < 0 (down to -24): multiples of 2^drop, found as the
-     * multiples of 1 and then rounded at bit drop */
-    uint32_t drop = frac_bits < 0 ? (uint32_t)-frac_bits : 0;
-    uint32_t frac = frac_bits < 0 ? 0 : (uint32_t)frac_bits;
-    uint64_t whole_max = ((uint64_t)max << drop | (((uint64_t)1 << drop) - 1)) >> frac;
-    if (mant == 0) {
-        *out = 0;
-        return true;
-    }
-    if (exp10 >= 0) {
-        /* An integer: scale up with an overflow check at every step. */
-        uint64_t v = mant;
-        for (int32_t i = 0; i < exp10; i++) {
-            if (v > whole_max)
-                return false;
-            v *= 10;
-        }
-        if (v > whole_max)
-            return false;
-        result = drop ? (v + ((uint64_t)1 << (drop - 1))) >> drop : v << frac;
-    } else {
-        /* mant / 10^k by long division into binary fraction bits. */
-        uint32_t k = (uint32_t)-exp10;
-        while (k > 18) { /* keeps 10^k and r << 1 inside 64 bits */
-            mant /= 10;
-            k--;
-        }
-        uint64_t d = 1;
-        for (uint32_t i = 0; i < k; i++)
-            d *= 10;
-        uint64_t q = mant / d, r = mant % d;
-        if (q > whole_max)
-            return false;
-        if (drop) { /* the bits below 2^drop hold at least a half iff bit drop - 1 is set */
-            result = (q >> drop) + (q >> (drop - 1) & 1u);
-        } else {
-            result = q << frac;
-            for (int bit = (int)frac - 1; bit >= 0; bit--) {
-                r <<= 1;
-                if (r >= d) {
-                    r -= d;
-                    result |= (uint64_t)1 << bit;
-                }
-            }
-            /* Round to nearest; an exact half goes away from zero. */
-            if (2 * r >= d)
-                result++;
-        }
-    }
-    if (result > max)
-        return false;
-    *out = neg ? -(int32_t)result : (int32_t)result;
-    return true;
 }

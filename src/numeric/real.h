@@ -136,19 +136,6 @@ static inline float r_pow_float_int(float x, float s)
     }
     return p;
 }
-/* x^s for x in [0, 1] as a shading weight: r_pow_float's value, but for
- * an integer s a result below 2^-100 (a factor may have been subnormal)
- * is taken as it came, within 2^-100 of x^s (r_pow_float takes its
- * general path there): a weight that small adds nothing to any colour.
- * Inline, so a highlight with such an s calls nothing. */
-static inline real_t r_pow_unit(real_t x, shine_t s)
-{
-    if (x <= 0) /* as r_pow_float (a highlight facing away) */
-        return 0;
-    return r_pow_float_small_int(s) ? r_pow_float_int(x, s) : r_pow_float(x, s);
-}
-#else
-static inline real_t r_pow_unit(real_t x, shine_t s) { return x <= 0 ? 0 : R_FN(pow)(x, s); }
 #endif
 static inline real_wide_t r_tan_deg_wide(real_t deg)
 {
@@ -179,8 +166,8 @@ static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t o
 #endif
 }
 static inline void r_unit3_narrow(real_t x, real_t y, real_t z, real_t out[3]) { r_unit3(x, y, z, out); }
-/* the unit vector and the length as (x, y, z) . unit, as the reference
- * has always measured it (the fixed build has the length at hand) */
+/* the unit vector and the length as (x, y, z) . unit: the reference's
+ * measure (the fixed build has the length at hand) */
 static inline void r_unit3_narrow_len(real_t x, real_t y, real_t z, real_t out[3], real_t *len)
 {
     r_unit3(x, y, z, out);
@@ -214,10 +201,18 @@ static inline bool r_ldexp(real_t v, int32_t k, real_t *out)
 #else /* fixed point */
 
 #include "fx.h"
+#include "fx_bounded.h"
+#include "fx_div.h"
+#include "fx_pow.h"
+#include "fx_root.h"
+#include "fx_setup.h"
 
 typedef fx_t real_t;
 typedef fx_wide_t real_wide_t;
-typedef fx_shine_t shine_t;
+/* a Phong exponent (the material's and the sky's): fx_pow_unit's, unsigned
+ * Q20.12, up to ~5e5 (the reader's limit) in steps of 2^-12 */
+typedef uint32_t shine_t;
+#define R_SHINE_FRAC_BITS FX_POW_FRAC_BITS
 
 #define R_RATIO(n, d) FX_RATIO(n, d)
 #define R_ONE FX_ONE
@@ -240,18 +235,18 @@ static inline real_t r_mul_weight(real_t c, real_t w) { return fx_mul_weight(c, 
 static inline bool r_is_weight(real_t k) { return k >= 0 && k <= R_ONE; }
 /* a e for |a| <= 2 and |e| <= 2^-10 (a correction): fx_mul_small */
 static inline real_t r_mul_small(real_t a, real_t e) { return fx_mul_small(a, e); }
-/* whether a . b < 0 for |a_k|, |b_k| <= 2: fx_dot3_negative */
+/* whether a . b < 0 for |a_k|, |b_k| <= 2: fx_dot3_negative_short */
 static inline bool r_dot3_negative(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
 {
-    return fx_dot3_negative(ax, ay, az, bx, by, bz);
+    return fx_dot3_negative_short(ax, ay, az, bx, by, bz);
 }
-/* a . b of unit vectors to 2^-13, for shading weights: fx_cos3 */
+/* a . b of unit vectors to 2^-13, for shading weights: fx_dot3_unit */
 static inline real_t r_cos3(real_t ax, real_t ay, real_t az, real_t bx, real_t by, real_t bz)
 {
-    return fx_cos3(ax, ay, az, bx, by, bz);
+    return fx_dot3_unit(ax, ay, az, bx, by, bz);
 }
-/* |a|^2 for |a| <= 2, rounded once: fx_norm2 */
-static inline real_t r_norm2(real_t ax, real_t ay, real_t az) { return fx_norm2(ax, ay, az); }
+/* |a|^2 for |a| <= 2, rounded once: fx_norm2_short */
+static inline real_t r_norm2(real_t ax, real_t ay, real_t az) { return fx_norm2_short(ax, ay, az); }
 static inline real_t r_div(real_t a, real_t b) { return fx_div(a, b); }
 static inline real_t r_recip(real_t b) { return fx_recip(b); }
 /* BVH slab distances (scene_hit.c) in 32 bits: t = (bound - o) / d is the
@@ -293,13 +288,13 @@ static inline int r_slab_inverse(const real_t d[3], unsigned skip, real_t inv[3]
  * difference stays below 2^30. */
 static inline real_slab_t r_slab_dist(real_t bound, real_t o, real_t inv)
 {
-    return fx_mul_hi(bound - o, inv);
+    return fx_mul64_hi(bound - o, inv);
 }
 static inline real_slab_t r_slab_from_t_down(real_t t, int shift) { return t >> shift; }
 static inline real_slab_t r_slab_from_t_up(real_t t, int shift) { return -((-t) >> shift); }
 static inline int r_wsign_dot(real_t dx, real_t dy, real_t dz, real_wide_t nx, real_wide_t ny, real_wide_t nz)
 {
-    return fx_wsign_dot(dx, dy, dz, nx, ny, nz);
+    return fx_wdot3_sign_short(dx, dy, dz, nx, ny, nz);
 }
 static inline real_t r_sqrt(real_t a) { return fx_sqrt(a); }
 static inline real_wide_t r_wmul(real_t a, real_t b) { return fx_wmul(a, b); }
@@ -309,7 +304,7 @@ static inline real_t r_wsqrt(real_wide_t w) { return fx_wsqrt(w); }
 static inline real_t r_wdiv(real_wide_t a, real_wide_t b) { return fx_wdiv(a, b); }
 static inline real_wide_t r_wdiv_real(real_wide_t w, real_t a) { return fx_wdiv_fx(w, a); }
 static inline real_wide_t r_wdiv_int(real_wide_t w, int32_t n) { return fx_wdiv_int(w, n); }
-static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fx(w, a); }
+static inline real_wide_t r_wmul_real(real_wide_t w, real_t a) { return fx_wmul_fits(w, a); }
 static inline int32_t r_floor_int(real_t a) { return a >> FX_FRAC_BITS; /* arithmetic shift */ }
 static inline int32_t r_wsplit(real_wide_t w, real_t *frac)
 {
@@ -327,9 +322,7 @@ static inline real_t r_mul_bounded(real_t a, real_t b, real_t lim)
 }
 static inline real_t r_add_bounded(real_t a, real_t b, real_t lim) { return r_bound_wide((int64_t)a + b, lim); }
 static inline real_t r_next_up(real_t a) { return a < FX_MAX ? a + 1 : a; }
-/* (the integer path inline where the code has room: RT_INLINE_HOT) */
-static inline real_t r_pow_unit(real_t x, shine_t s) { return RT_INLINE_HOT ? fx_pow_unit_fast(x, s) : fx_pow_unit(x, s); }
-static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_tan_deg_wide(deg); }
+static inline real_wide_t r_tan_deg_wide(real_t deg) { return fx_wtan_deg(deg); }
 static inline void r_unit3(real_wide_t x, real_wide_t y, real_wide_t z, real_t out[3])
 {
     fx_unit3(x, y, z, out);
@@ -376,7 +369,7 @@ static inline bool r_from_decimal_scaled(bool neg, uint64_t mant, int32_t exp10,
 static inline bool shine_from_decimal(bool neg, uint64_t mant, int32_t exp10, shine_t *out)
 {
     int32_t v;
-    if (neg || !fx_from_decimal(false, mant, exp10, FX_SHINE_FRAC_BITS, (uint32_t)INT32_MAX, &v))
+    if (neg || !fx_from_decimal(false, mant, exp10, R_SHINE_FRAC_BITS, (uint32_t)INT32_MAX, &v))
         return false;
     *out = (shine_t)v;
     return true;

@@ -10,7 +10,7 @@
  */
 #include "nff_lex.h"
 
-#include "numeric/fx.h"
+#include "numeric/fx_setup.h"
 
 void lex_start(lexer_t *lx, const char *text, size_t len, rt_error_t *err)
 {

@@ -76,7 +76,7 @@ bool lex_direction_grid(lexer_t *lx, const char *what, vec3_t *v, bool *zero, in
 #define RT_SHINE_MAX 524287u
 #define RT_SHINE_MIN_LOG2 (-12)
 #if !RT_BACKEND_DOUBLE && !RT_BACKEND_FLOAT
-_Static_assert(RT_SHINE_MIN_LOG2 == -FX_SHINE_FRAC_BITS && RT_SHINE_MAX == (INT32_MAX >> FX_SHINE_FRAC_BITS),
+_Static_assert(RT_SHINE_MIN_LOG2 == -R_SHINE_FRAC_BITS && RT_SHINE_MAX == (INT32_MAX >> R_SHINE_FRAC_BITS),
                "the exponents' limits are the fixed format's");
 #endif
 bool lex_shine(lexer_t *lx, const char *msg, bool positive, shine_t *out);

@@ -5,7 +5,7 @@
  */
 #include "nff_scene.h"
 
-#include "numeric/fx.h"
+#include "numeric/fx_setup.h"
 
 block_t *rd_top_block(reader_t *r)
 {

@@ -1,6 +1,8 @@
 /* texture.c - checker and marble textures, the sky gradient. */
 #include "texture.h"
 
+#include "shine.h"
+
 #if RT_USE_TEXTURES
 /* a + (b - a) k: the texture's colour at weight k of b */
 static colour_t blend(const texture_t *tx, real_t k) { return v3_madd(tx->a, k, v3_sub(tx->b, tx->a)); }

@@ -3,6 +3,7 @@
 
 #include "geometry/prims.h"
 #include "geometry/scene_hit.h"
+#include "shine.h"
 #include "texture.h"
 
 typedef struct {

@@ -24,7 +24,7 @@ int main(void)
         view.at = v3(q(tl_uniform(-4, 4)), q(tl_uniform(-4, 4)), q(tl_uniform(-4, 4)));
         view.up = v3(q(tl_uniform(-1, 1)), q(tl_uniform(-1, 1)), FX_ONE);
         view.angle = q(tl_uniform(10, 150));
-        view.tan_half = fx_tan_deg_wide(view.angle / 2);
+        view.tan_half = fx_wtan_deg(view.angle / 2);
         int32_t w = 8 + (int32_t)(tl_rand() % 90), h = 8 + (int32_t)(tl_rand() % 70);
         int32_t sub = 1 << (tl_rand() % 3);
         camera_t cam;

@@ -1,6 +1,7 @@
 /*
  * test_fx.c - every fixed-point operation against double over dense or
- * random input sweeps. Each check asserts the accuracy fx.h documents and
+ * random input sweeps. Each check asserts the accuracy its header (fx.h or
+ * one beside it) documents and
  * prints the measured worst case in ulps (1 ulp = 2^-FX_FRAC_BITS). The
  * exact operations (fx_div, fx_recip, fx_sqrt, fx_wsqrt) are also held to
  * the exact answer, bit for bit, from plain integer arithmetic here, and
@@ -11,8 +12,9 @@
 
 /* The board's wide-product path on the host: this file's inline fixed
  * layer (fx_mul, fx_wmul, ...) computes its products from 16x16->32
- * partial products (fx.h, FX_MUL64_PARTIAL), while fx.c, built without
- * the macro, and the reference products below are the plain C product. */
+ * partial products (fx_wide.h, FX_MUL64_PARTIAL), while the fixed layer's
+ * .c files, built without the macro, and the reference products below
+ * are the plain C product. */
 #define FX_MUL64_PARTIAL 1
 #include "numeric/fx.h"
 #include "numeric/fx_rsqrt_line.h"
@@ -87,7 +89,7 @@ static void test_sqrt(void)
           worst_w / ULP);
 }
 
-/* ---- exact answers by plain integer arithmetic (nothing shared with fx.c) */
+/* ---- exact answers by plain integer arithmetic (nothing shared with the fixed layer) */
 
 /* round(a 2^F / b), half away from zero, saturated to +-FX_MAX (b != 0) */
 static fx_t ref_div(fx_t a, fx_t b)
@@ -458,8 +460,8 @@ static void test_pow(void)
 {
     static const double shines[] = { 1, 3.0827, 4.81884, 10, 100, 1000, 10000, 100000, 2, 4, 8, 16, 32, 64, 128 };
     for (unsigned k = 0; k < sizeof shines / sizeof shines[0]; k++) {
-        fx_shine_t s = (fx_shine_t)llround(shines[k] * (1 << FX_SHINE_FRAC_BITS));
-        double sd = (double)s / (1 << FX_SHINE_FRAC_BITS);
+        shine_t s = (shine_t)llround(shines[k] * (1 << R_SHINE_FRAC_BITS));
+        double sd = (double)s / (1 << R_SHINE_FRAC_BITS);
         double worst = 0, bound = 2 * ULP;
         for (fx_t x = 0; x <= FX_ONE; x += (k < 4 ? 1 : 3)) {
             double exact = pow(d(x), sd);
@@ -480,11 +482,11 @@ static void test_tan(void)
     double worst = 0;
     for (fx_t deg = FX_ONE / 2; deg <= 89 * FX_ONE; deg += 97) {
         double exact = tan(d(deg) * 3.14159265358979323846 / 180);
-        double got = (double)fx_tan_deg_wide(deg) / ((double)FX_ONE * FX_ONE);
+        double got = (double)fx_wtan_deg(deg) / ((double)FX_ONE * FX_ONE);
         double e = fabs(got - exact) / exact;
         worst = e > worst ? e : worst;
     }
-    CHECK(worst < 3e-7, "fx_tan_deg_wide: max relative error %.2e over 0.5..89 degrees (bound 3e-7)", worst);
+    CHECK(worst < 3e-7, "fx_wtan_deg: max relative error %.2e over 0.5..89 degrees (bound 3e-7)", worst);
 }
 
 static void test_decimal(void)
@@ -594,37 +596,33 @@ static void test_mul64(void)
     long bad = 0;
     n = 0;
     for (long i = 0; i < 1000000; i++) {
-        int32_t a = rnd_word(), b = rnd_word(), c = rnd_word();
-        fx_t dx = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE; /* |d| <= 2, as fx_wsign_dot wants */
+        int32_t a = rnd_word(), b = rnd_word();
+        fx_t dx = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE; /* |d| <= 2, as fx_wdot3_sign_short wants */
         fx_t dy = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE;
         fx_t dz = (fx_t)(tl_rand() % (4u * FX_ONE + 1)) - 2 * FX_ONE;
         fx_wide_t nx = (int64_t)tl_rand() >> (tl_rand() & 63), ny = (int64_t)tl_rand() >> (tl_rand() & 63);
         fx_wide_t nz = (int64_t)tl_rand() >> (tl_rand() & 63);
         bad += fx_mul(a, b) != fx_sat64(fx_round_shift(plain_mul64(a, b), FX_FRAC_BITS));
         bad += fx_wmul(a, b) != plain_mul64(a, b);
-        int64_t diff = (int64_t)a - b;
-        /* as its GNUC branch: saturated only outside int32 (INT32_MIN stays) */
-        int32_t dsat = diff > INT32_MAX ? FX_MAX : diff < INT32_MIN ? FX_MIN : (int32_t)diff;
-        bad += fx_wmul_diff(a, b, c) != plain_mul64(dsat, c);
-        /* fx_wsign_dot with the plain products (n shifted as it does) */
+        /* fx_wdot3_sign_short with the plain products (n shifted as it does) */
         uint64_t m = (uint64_t)(nx < 0 ? -nx : nx) | (uint64_t)(ny < 0 ? -ny : ny) | (uint64_t)(nz < 0 ? -nz : nz);
         int s = 0;
         while ((m >> s) >= ((uint64_t)1 << 40))
             s++;
         int64_t v = (int64_t)dx * (nx >> s) + (int64_t)dy * (ny >> s) + (int64_t)dz * (nz >> s);
-        bad += fx_wsign_dot(dx, dy, dz, nx, ny, nz) != (v > 0) - (v < 0);
-        /* fx_wmul_fx inside its range: |w| < 2^(31+F), |w a| < 2^(63-F) */
+        bad += fx_wdot3_sign_short(dx, dy, dz, nx, ny, nz) != (v > 0) - (v < 0);
+        /* fx_wmul_fits inside its range: |w| < 2^(31+F), |w a| < 2^(63-F) */
         int wl = (int)(tl_rand() % (uint64_t)(62 - FX_FRAC_BITS < 30 + FX_FRAC_BITS ? 63 - FX_FRAC_BITS
                                                                                       : 31 + FX_FRAC_BITS));
         int fl = 62 - FX_FRAC_BITS - wl > 30 ? 30 : 62 - FX_FRAC_BITS - wl;
         fx_wide_t w = (int64_t)tl_rand() >> (63 - wl); /* |w| <= 2^wl */
         fx_t f = (fx_t)((int64_t)tl_rand() >> (63 - fl)); /* |f| <= 2^fl */
         int64_t whi = w >> FX_FRAC_BITS, wlo = (int64_t)((uint64_t)w & (uint64_t)(FX_ONE - 1));
-        bad += fx_wmul_fx(w, f) != whi * f + fx_round_shift(wlo * f, FX_FRAC_BITS);
+        bad += fx_wmul_fits(w, f) != whi * f + fx_round_shift(wlo * f, FX_FRAC_BITS);
         n++;
     }
-    CHECK(bad == 0, "fx_mul, fx_wmul, fx_wmul_diff, fx_wsign_dot, fx_wmul_fx on the partial products: %ld of %ld "
-          "random cases differ from the plain product", bad, 5 * n);
+    CHECK(bad == 0, "fx_mul, fx_wmul, fx_wdot3_sign_short, fx_wmul_fits on the partial products: %ld of %ld "
+          "random cases differ from the plain product", bad, 4 * n);
 
     bad = 0;
     for (fx_t c = -2; c <= FX_ONE + 2; c++)
@@ -683,14 +681,14 @@ static void test_weight(void)
                 b[k] -= (fx_t)llround(ab / aa * a[k] * (i % 3 ? 1 : 1 - 1e-4));
         }
         int64_t v = (int64_t)a[0] * b[0] + (int64_t)a[1] * b[1] + (int64_t)a[2] * b[2];
-        bad += fx_dot3_negative(a[0], a[1], a[2], b[0], b[1], b[2]) != (v < 0);
+        bad += fx_dot3_negative_short(a[0], a[1], a[2], b[0], b[1], b[2]) != (v < 0);
         near += llabs(v) < ((int64_t)1 << (2 * FX_FRAC_BITS - 9));
         n++;
     }
-    CHECK(bad == 0 && near > n / 4, "fx_dot3_negative (the 32-bit filter) is the exact sign's: %ld of %ld differ (%ld near "
+    CHECK(bad == 0 && near > n / 4, "fx_dot3_negative_short (the 32-bit filter) is the exact sign's: %ld of %ld differ (%ld near "
           "perpendicular)", bad, n, near);
 
-    /* fx_norm2 the rounded 64-bit |a|^2 (|a| <= 2); fx_cos3 within 2^-13
+    /* fx_norm2_short the rounded 64-bit |a|^2 (|a| <= 2); fx_dot3_unit within 2^-13
      * of a . b for unit a, b */
     long bad_n = 0, bad_c = 0;
     double worst_c = 0;
@@ -707,16 +705,16 @@ static void test_weight(void)
             b[k] = (fx_t)llround(w[k] * sw * FX_ONE);
         }
         int64_t n2_bits = (int64_t)a[0] * a[0] + (int64_t)a[1] * a[1] + (int64_t)a[2] * a[2];
-        bad_n += fx_norm2(a[0], a[1], a[2]) != (fx_t)((n2_bits + FX_HALF) >> FX_FRAC_BITS);
+        bad_n += fx_norm2_short(a[0], a[1], a[2]) != (fx_t)((n2_bits + FX_HALF) >> FX_FRAC_BITS);
         if (i & 1) {
             double c = d(a[0]) * d(b[0]) + d(a[1]) * d(b[1]) + d(a[2]) * d(b[2]);
-            double e = fabs(d(fx_cos3(a[0], a[1], a[2], b[0], b[1], b[2])) - c);
+            double e = fabs(d(fx_dot3_unit(a[0], a[1], a[2], b[0], b[1], b[2])) - c);
             bad_c += e > 1.0 / 8192;
             worst_c = fmax(worst_c, e);
         }
     }
-    CHECK(bad_n == 0, "fx_norm2 (32-bit halves) is the rounded 64-bit |a|^2 (|a| <= 2): %ld of 400000 differ", bad_n);
-    CHECK(bad_c == 0, "fx_cos3 within 2^-13 of a . b for unit vectors: %ld of 200000 over (worst 2^%.1f)", bad_c,
+    CHECK(bad_n == 0, "fx_norm2_short (32-bit halves) is the rounded 64-bit |a|^2 (|a| <= 2): %ld of 400000 differ", bad_n);
+    CHECK(bad_c == 0, "fx_dot3_unit within 2^-13 of a . b for unit vectors: %ld of 200000 over (worst 2^%.1f)", bad_c,
           log2(worst_c));
 }
 
