@@ -265,7 +265,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # camera makes an eye ray a pixel: -Os in the fixed build, which walks T
 # by additions (no slower for 56 bytes less), -O2 in the float build,
 # whose products -Os would slow (the card +1%).
-FW_SIZE_FILES = render rt_error stats sink_stream xform shape csg object
+FW_SIZE_FILES = render aa rt_error stats sink_stream xform shape csg object
 FW_SIZE_FILES_fixed = camera
 FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 
