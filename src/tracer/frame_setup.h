@@ -1,49 +1,15 @@
-/* frame_setup.h - a frame set up, step by step: the options checked (in
- * the order their errors are reported), the scratch carved into corner
- * rows, the camera and the tracer made, the sink begun. Each step is
- * inline, and render.c inlines the whole into rt_render_begin and
- * rt_render: a build that only calls rt_render (the board) links one
- * function, as small as a single loop. */
+/* frame_setup.h - a frame set up: the options checked (in the order
+ * their errors are reported), the scratch carved into corner rows, the
+ * camera and the tracer made, the sink begun. One inline function, which
+ * render.c inlines into rt_render_begin and rt_render: a build that only
+ * calls rt_render (the board) links one function, as small as a single
+ * loop. (Cut into inline steps, GCC allocates its registers otherwise:
+ * an instruction a frame and 4 bytes apart in the firmware.) */
 #ifndef FRAME_SETUP_H
 #define FRAME_SETUP_H
 
 #include "frame.h"
 #include "pixel.h"
-
-/* What the steps pass on: the frame's size and depth, its viewport, and
- * the worker it is rendered by. */
-typedef struct {
-    uint16_t w, h;
-    int depth;
-    const rt_viewport_t *vp;
-    struct rt_worker *wk;
-} frame_t;
-
-/* The sink's lines: its format packed by this build, a band buffer of at
- * least one line of the viewport. */
-static RT_INLINE int check_lines(rt_render_ctx_t *ctx, const frame_t *f,
-                                    const rt_fb_sink_t *sink, rt_error_t *err)
-{
-    size_t line_bytes = RT_FB_LINE_BYTES(PIXEL_FORMAT(sink->format), f->vp->w);
-#ifdef RT_FB_ONLY_FORMAT
-    if (sink->format != RT_FB_ONLY_FORMAT) /* the one format packed (line_bytes is not 0) */
-#else
-    if (line_bytes == 0) /* not a format */
-#endif
-    {
-        rt_error_set(err, 0, "pixel format not built in");
-        return -1;
-    }
-    size_t pitch = sink->pitch ? sink->pitch : line_bytes;
-    size_t band_lines = sink->band_bytes / pitch;
-    if (pitch < line_bytes || band_lines == 0 || sink->band[0] == 0) {
-        rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
-        return -1;
-    }
-    ctx->pitch = pitch;
-    ctx->band_lines = band_lines;
-    return 0;
-}
 
 /* Whether the options record or replay split decisions (RT_AA_REPLAY). */
 #if RT_AA_REPLAY
@@ -54,201 +20,19 @@ static RT_INLINE int check_lines(rt_render_ctx_t *ctx, const frame_t *f,
 
 #define TILE 8 /* the progressive lattice's period: a viewport's edges lie on it */
 
-/* The modes this build has, and progressive display's passes (checked
- * against the other options and the viewport). */
-static RT_INLINE int check_modes(rt_render_ctx_t *ctx, const frame_t *f, const rt_render_opts_t *opts,
-                                 const rt_fb_sink_t *sink, rt_error_t *err)
-{
-    /* modes left out of this build (one message: a board leaves them out together) */
-    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1 || SPLITS_ASKED(opts))) ||
-        (!RT_USE_PROGRESSIVE && opts->progressive)) {
-        rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA, RT_USE_PROGRESSIVE)");
-        return -1;
-    }
-#if RT_USE_PROGRESSIVE
-    rt_viewport_t vp = *f->vp;
-    ctx->pass = ctx->last_pass = 0;
-    if (opts->progressive) {
-        const char *why = 0;
-        bool all = opts->progressive == RT_PROGRESSIVE_ALL;
-        if (!all && opts->progressive > RT_PROGRESSIVE_PASSES)
-            why = "progressive: a pass from 1 to 7, or RT_PROGRESSIVE_ALL";
-        else if (opts->spd || opts->aa_levels)
-            why = "progressive display needs one sample a pixel or uniform anti-aliasing (spp), not SPD mode or "
-                  "adaptive anti-aliasing (aa_levels 0)";
-        else if (rt_fb_bits(PIXEL_FORMAT(sink->format)) % 8u)
-            why = "progressive display needs whole bytes a pixel (not l4)";
-        else if (vp.x % TILE || vp.y % TILE || ((vp.x + vp.w) % TILE && vp.x + vp.w != f->w) ||
-                 ((vp.y + vp.h) % TILE && vp.y + vp.h != f->h))
-            why = "progressive display needs a viewport on the 8-pixel grid (each edge a multiple of 8 or the frame's)";
-        if (why) {
-            rt_error_set(err, 0, why);
-            return -1;
-        }
-        ctx->pass = all ? 1 : opts->progressive;
-        ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
-    }
-#else
-    (void)ctx, (void)f, (void)sink;
-#endif
-    return 0;
-}
+/* What render.c begins the sink and the walk with: the frame's size, its
+ * viewport, and the worker that renders it. */
+typedef struct {
+    uint16_t w, h;
+    rt_viewport_t vp;
+    struct rt_worker *wk;
+} frame_t;
 
-/* Anti-aliasing's options checked, its corner rows and one pixel's cell
- * corners carved from the scratch, its threshold and scale, the split
- * decisions' words. */
-static RT_INLINE int set_up_aa(rt_render_ctx_t *ctx, const frame_t *f, const rt_render_opts_t *opts, rt_error_t *err)
-{
-#if !RT_USE_AA
-#if RT_USE_PROGRESSIVE
-    ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
-#endif
-    (void)ctx, (void)f, (void)opts, (void)err;
-#else
-    struct rt_worker *wk = f->wk;
-    ctx->aa_levels = opts->aa_levels;
-    ctx->spp = opts->spp > 1 ? opts->spp : 0;
-    if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
-        rt_error_set(err, 0, "choose one of SPD mode, adaptive and uniform anti-aliasing");
-        return -1;
-    }
-    if (ctx->aa_levels > RT_AA_MAX_LEVELS || ctx->spp > RT_AA_MAX_SPP) {
-        rt_error_set(err, 0, ctx->spp ? "anti-aliasing samples exceed RT_AA_MAX_SPP = "
-                                      : "anti-aliasing levels exceed RT_AA_MAX_LEVELS = ");
-        rt_error_append_int(err, ctx->spp ? RT_AA_MAX_SPP : RT_AA_MAX_LEVELS);
-        return -1;
-    }
-    if (ctx->aa_levels) {
-        size_t row = ((size_t)f->vp->w << ctx->aa_levels) + 1;
-        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_AA_SCRATCH(f->vp->w, ctx->aa_levels)) {
-            rt_error_set(err, 0, "anti-aliasing needs a scratch buffer of RT_RENDER_AA_SCRATCH(width, levels) bytes");
-            return -1;
-        }
-        ctx->rows[0] = opts->scratch;
-        ctx->rows[1] = (colour_t *)ctx->rows[0] + row;
-        ctx->cells = (colour_t *)ctx->rows[1] + row;
-        uint32_t t = opts->aa_threshold ? opts->aa_threshold : RT_AA_THRESHOLD;
-        wk->aa_threshold = r_div(r_from_int((int32_t)t), r_from_int(255));
-        wk->aa_scale = R_RATIO(1, (int32_t)4 << (2 * ctx->aa_levels));
-    } else if (ctx->spp) {
-        wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
-    }
-#if RT_AA_REPLAY
-    wk->splits = 0;
-    if (opts->aa_splits_mode) {
-        if (opts->aa_splits_mode > RT_AA_SPLITS_REPLAY || !ctx->aa_levels) {
-            rt_error_set(err, 0, "recorded splits (aa_splits) need adaptive anti-aliasing and a mode");
-            return -1;
-        }
-        if (opts->aa_splits == 0 || opts->aa_splits_words < RT_AA_SPLITS_WORDS(f->w, f->h, ctx->aa_levels)) {
-            rt_error_set(err, 0, "recorded splits need RT_AA_SPLITS_WORDS(width, height, levels) words");
-            return -1;
-        }
-        wk->splits = opts->aa_splits;
-        wk->split_words = RT_AA_SPLIT_WORDS(ctx->aa_levels);
-        wk->splits_line = (size_t)f->w * wk->split_words;
-        wk->splits_replay = opts->aa_splits_mode == RT_AA_SPLITS_REPLAY;
-    }
-#endif
-#endif
-    return 0;
-}
-
-/* SPD mode's two rows of corner colours, carved from the scratch. */
-static RT_INLINE int set_up_spd(rt_render_ctx_t *ctx, const frame_t *f, const rt_render_opts_t *opts, rt_error_t *err)
-{
-#if RT_USE_SPD
-    ctx->spd = opts->spd;
-    if (opts->spd) {
-        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(f->vp->w)) {
-            rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
-            return -1;
-        }
-        ctx->rows[0] = opts->scratch;
-        ctx->rows[1] = (colour_t *)ctx->rows[0] + f->vp->w + 1;
-    }
-#else
-    (void)ctx, (void)f, (void)opts, (void)err;
-#endif
-    return 0;
-}
-
-/* The camera's samples: one a pixel, a grid of pixel corners (SPD), or
- * cells of a pixel (anti-aliasing). */
-static RT_INLINE int set_up_camera(const rt_render_ctx_t *ctx, const frame_t *f, const scene_t *sc,
-                                   const rt_render_opts_t *opts, rt_error_t *err)
-{
-    struct rt_worker *wk = f->wk;
-    int32_t nx = f->w, ny = f->h;
-#if RT_USE_SPD
-    if (opts->spd) { /* a grid of corners, one more each way */
-        nx++;
-        ny++;
-    }
-#endif
-    /* another viewpoint: rt_camera_from_view made it a view_t */
-    const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
-    const char *why;
-#if RT_USE_AA
-    if (ctx->aa_levels || ctx->spp) /* cells a pixel side: 2^levels, or 2 spp (samples at their centres) */
-        why = camera_init_cells(&wk->cam, view, f->w, f->h,
-                                ctx->aa_levels ? (int32_t)1 << ctx->aa_levels : 2 * ctx->spp);
-    else
-#else
-    (void)ctx;
-#endif
-        why = camera_init(&wk->cam, view, nx, ny);
-    if (why) {
-        rt_error_set(err, 0, why);
-        return -1;
-    }
-    return 0;
-}
-
-/* The eye rays' cones, and where their search starts: the flat search's
- * culling set up, the BVH's box. */
-static RT_INLINE void set_up_eye_rays(const rt_render_ctx_t *ctx, const frame_t *f, const scene_t *sc,
-                                      const rt_render_opts_t *opts)
-{
-    struct rt_worker *wk = f->wk;
-    (void)ctx, (void)opts;
-#if RT_RAY_CONES
-    if (opts->point_textures) /* cones of no width: every texture at the hit point */
-        wk->cam.spread = 0;
-#if RT_USE_AA
-    /* adaptive: a corner stands for the squares around it, which a pixel
-     * weighs by their mean, so its cone spreads half its spacing */
-    if (ctx->aa_levels)
-        wk->cam.spread /= 2;
-#endif
-#endif
-    scene_eye_setup(sc, &wk->cam, &wk->scratch);
-    /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
-    if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
-        camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
-}
-
-/* The worker's tracer: its depth and rules, each light's last blocker
- * and each depth's material terms cleared, its counts zero. */
-static RT_INLINE void set_up_tracer(rt_render_ctx_t *ctx, const frame_t *f, const scene_t *sc,
-                                    const rt_render_opts_t *opts, rt_stats_t *stats)
-{
-    struct rt_worker *wk = f->wk;
-    wk->tr = (tracer_t){ sc, f->depth, &wk->scratch, opts->spd,
-                         r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)), wk->last_blocker, wk->terms };
-    for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
-        wk->last_blocker[i] = PRIM_NONE;
-    for (uint32_t i = 0; i < RT_MAX_DEPTH; i++)
-        wk->terms[i].material = 0;
-    wk->scratch.stats = (rt_stats_t){ 0 };
-    ctx->worker = wk;
-    ctx->stats = stats;
-}
-
-/* The frame set up for worker opts->worker of `workers` and the sink
- * begun, ctx at the viewport's first line: 0, -1 with err set, or the
- * sink's failure. */
-static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, struct rt_worker *workers, const scene_t *sc,
+/* The frame checked and set up for worker opts->worker of `workers`
+ * (*f), in steps: its size and depth, the viewport and the sink's lines,
+ * the modes built in, anti-aliasing's and SPD mode's scratch, the camera,
+ * the eye rays' start, the tracer. 0, or -1 with err set. */
+static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_worker *workers, const scene_t *sc,
                                  const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     uint16_t w = opts->width ? opts->width : sc->width;
@@ -287,32 +71,159 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, struct rt_worker *workers
         rt_error_set(err, 0, "viewport outside the frame");
         return -1;
     }
-    const frame_t f = { w, h, depth, &vp, wk };
-    if (check_lines(ctx, &f, sink, err) != 0)
-        return -1;
-    if (check_modes(ctx, &f, opts, sink, err) != 0)
-        return -1;
-    if (set_up_aa(ctx, &f, opts, err) != 0)
-        return -1;
-    if (set_up_spd(ctx, &f, opts, err) != 0)
-        return -1;
-    if (set_up_camera(ctx, &f, sc, opts, err) != 0)
-        return -1;
-    set_up_eye_rays(ctx, &f, sc, opts);
-    set_up_tracer(ctx, &f, sc, opts, stats);
-
-    sink->flushing = false;
-    int status = sink->begin ? sink->begin(sink, f.w, f.h) : 0;
-    if (status != 0)
-        return status;
-    ctx->x0 = vp.x;
-    ctx->w = vp.w;
-    ctx->y = ctx->band_y = vp.y;
-    ctx->y_end = (uint16_t)(vp.y + vp.h);
-#if RT_USE_PROGRESSIVE
-    ctx->y0 = vp.y;
+    size_t line_bytes = RT_FB_LINE_BYTES(PIXEL_FORMAT(sink->format), vp.w);
+#ifdef RT_FB_ONLY_FORMAT
+    if (sink->format != RT_FB_ONLY_FORMAT) /* the one format packed (line_bytes is not 0) */
+#else
+    if (line_bytes == 0) /* not a format */
 #endif
-    ctx->cur = 0;
+    {
+        rt_error_set(err, 0, "pixel format not built in");
+        return -1;
+    }
+    size_t pitch = sink->pitch ? sink->pitch : line_bytes;
+    size_t band_lines = sink->band_bytes / pitch;
+    if (pitch < line_bytes || band_lines == 0 || sink->band[0] == 0) {
+        rt_error_set(err, 0, "framebuffer band buffer is smaller than one line");
+        return -1;
+    }
+    ctx->pitch = pitch;
+    ctx->band_lines = band_lines;
+    /* modes left out of this build (one message: a board leaves them out together) */
+    if ((!RT_USE_SPD && opts->spd) || (!RT_USE_AA && (opts->aa_levels || opts->spp > 1 || SPLITS_ASKED(opts))) ||
+        (!RT_USE_PROGRESSIVE && opts->progressive)) {
+        rt_error_set(err, 0, "mode not compiled in (RT_USE_SPD, RT_USE_AA, RT_USE_PROGRESSIVE)");
+        return -1;
+    }
+#if RT_USE_PROGRESSIVE
+    ctx->pass = ctx->last_pass = 0;
+    if (opts->progressive) {
+        const char *why = 0;
+        bool all = opts->progressive == RT_PROGRESSIVE_ALL;
+        if (!all && opts->progressive > RT_PROGRESSIVE_PASSES)
+            why = "progressive: a pass from 1 to 7, or RT_PROGRESSIVE_ALL";
+        else if (opts->spd || opts->aa_levels)
+            why = "progressive display needs one sample a pixel or uniform anti-aliasing (spp), not SPD mode or "
+                  "adaptive anti-aliasing (aa_levels 0)";
+        else if (rt_fb_bits(PIXEL_FORMAT(sink->format)) % 8u)
+            why = "progressive display needs whole bytes a pixel (not l4)";
+        else if (vp.x % TILE || vp.y % TILE || ((vp.x + vp.w) % TILE && vp.x + vp.w != w) ||
+                 ((vp.y + vp.h) % TILE && vp.y + vp.h != h))
+            why = "progressive display needs a viewport on the 8-pixel grid (each edge a multiple of 8 or the frame's)";
+        if (why) {
+            rt_error_set(err, 0, why);
+            return -1;
+        }
+        ctx->pass = all ? 1 : opts->progressive;
+        ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
+    }
+#endif
+#if !RT_USE_AA
+#if RT_USE_PROGRESSIVE
+    ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
+#endif
+#else
+    ctx->aa_levels = opts->aa_levels;
+    ctx->spp = opts->spp > 1 ? opts->spp : 0;
+    if ((ctx->aa_levels || ctx->spp) && (opts->spd || (ctx->aa_levels && ctx->spp))) {
+        rt_error_set(err, 0, "choose one of SPD mode, adaptive and uniform anti-aliasing");
+        return -1;
+    }
+    if (ctx->aa_levels > RT_AA_MAX_LEVELS || ctx->spp > RT_AA_MAX_SPP) {
+        rt_error_set(err, 0, ctx->spp ? "anti-aliasing samples exceed RT_AA_MAX_SPP = "
+                                      : "anti-aliasing levels exceed RT_AA_MAX_LEVELS = ");
+        rt_error_append_int(err, ctx->spp ? RT_AA_MAX_SPP : RT_AA_MAX_LEVELS);
+        return -1;
+    }
+    if (ctx->aa_levels) {
+        size_t row = ((size_t)vp.w << ctx->aa_levels) + 1;
+        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_AA_SCRATCH(vp.w, ctx->aa_levels)) {
+            rt_error_set(err, 0, "anti-aliasing needs a scratch buffer of RT_RENDER_AA_SCRATCH(width, levels) bytes");
+            return -1;
+        }
+        ctx->rows[0] = opts->scratch;
+        ctx->rows[1] = (colour_t *)ctx->rows[0] + row;
+        ctx->cells = (colour_t *)ctx->rows[1] + row;
+        uint32_t t = opts->aa_threshold ? opts->aa_threshold : RT_AA_THRESHOLD;
+        wk->aa_threshold = r_div(r_from_int((int32_t)t), r_from_int(255));
+        wk->aa_scale = R_RATIO(1, (int32_t)4 << (2 * ctx->aa_levels));
+    } else if (ctx->spp) {
+        wk->aa_scale = R_RATIO(1, ctx->spp * ctx->spp);
+    }
+#if RT_AA_REPLAY
+    wk->splits = 0;
+    if (opts->aa_splits_mode) {
+        if (opts->aa_splits_mode > RT_AA_SPLITS_REPLAY || !ctx->aa_levels) {
+            rt_error_set(err, 0, "recorded splits (aa_splits) need adaptive anti-aliasing and a mode");
+            return -1;
+        }
+        if (opts->aa_splits == 0 || opts->aa_splits_words < RT_AA_SPLITS_WORDS(w, h, ctx->aa_levels)) {
+            rt_error_set(err, 0, "recorded splits need RT_AA_SPLITS_WORDS(width, height, levels) words");
+            return -1;
+        }
+        wk->splits = opts->aa_splits;
+        wk->split_words = RT_AA_SPLIT_WORDS(ctx->aa_levels);
+        wk->splits_line = (size_t)w * wk->split_words;
+        wk->splits_replay = opts->aa_splits_mode == RT_AA_SPLITS_REPLAY;
+    }
+#endif
+#endif
+#if RT_USE_SPD
+    ctx->spd = opts->spd;
+    if (opts->spd) {
+        if (opts->scratch == 0 || opts->scratch_bytes < RT_RENDER_SPD_SCRATCH(vp.w)) {
+            rt_error_set(err, 0, "SPD mode needs a scratch buffer of two rows of corner colours");
+            return -1;
+        }
+        ctx->rows[0] = opts->scratch;
+        ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
+    }
+#endif
+    int32_t nx = w, ny = h;
+#if RT_USE_SPD
+    if (opts->spd) { /* a grid of corners, one more each way */
+        nx++;
+        ny++;
+    }
+#endif
+    /* another viewpoint: rt_camera_from_view made it a view_t */
+    const view_t *view = opts->camera ? (const view_t *)(const void *)opts->camera : &sc->view;
+    const char *why;
+#if RT_USE_AA
+    if (ctx->aa_levels || ctx->spp) /* cells a pixel side: 2^levels, or 2 spp (samples at their centres) */
+        why = camera_init_cells(&wk->cam, view, w, h, ctx->aa_levels ? (int32_t)1 << ctx->aa_levels : 2 * ctx->spp);
+    else
+#endif
+        why = camera_init(&wk->cam, view, nx, ny);
+    if (why) {
+        rt_error_set(err, 0, why);
+        return -1;
+    }
+#if RT_RAY_CONES
+    if (opts->point_textures) /* cones of no width: every texture at the hit point */
+        wk->cam.spread = 0;
+#if RT_USE_AA
+    /* adaptive: a corner stands for the squares around it, which a pixel
+     * weighs by their mean, so its cone spreads half its spacing */
+    if (ctx->aa_levels)
+        wk->cam.spread /= 2;
+#endif
+#endif
+    scene_eye_setup(sc, &wk->cam, &wk->scratch);
+    /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
+    if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
+        camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
+    wk->tr = (tracer_t){ sc, depth, &wk->scratch, opts->spd,
+                         r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)), wk->last_blocker, wk->terms };
+    for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)
+        wk->last_blocker[i] = PRIM_NONE;
+    for (uint32_t i = 0; i < RT_MAX_DEPTH; i++)
+        wk->terms[i].material = 0;
+    wk->scratch.stats = (rt_stats_t){ 0 };
+    ctx->worker = wk;
+    ctx->stats = stats;
+
+    *f = (frame_t){ w, h, vp, wk };
     return 0;
 }
 

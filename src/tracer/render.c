@@ -275,23 +275,37 @@ static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts,
                                   rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
-    int status = frame_setup(ctx, workers, sc, opts, sink, stats, err);
+    frame_t f;
+    if (frame_setup(ctx, &f, workers, sc, opts, sink, stats, err) != 0)
+        return -1;
+    sink->flushing = false;
+    int status = sink->begin ? sink->begin(sink, f.w, f.h) : 0;
+    if (status != 0)
+        return status;
+    ctx->x0 = f.vp.x;
+    ctx->w = f.vp.w;
+    ctx->y = ctx->band_y = f.vp.y;
+    ctx->y_end = (uint16_t)(f.vp.y + f.vp.h);
 #if RT_USE_PROGRESSIVE
-    if (status == 0 && ctx->pass) {
-        ctx->x = (uint16_t)(ctx->x0 + passes[ctx->pass - 1].ox);
-        progressive_next(ctx, (uint32_t)ctx->y0 + passes[ctx->pass - 1].oy);
+    ctx->y0 = f.vp.y;
+#endif
+    ctx->cur = 0;
+#if RT_USE_PROGRESSIVE
+    if (ctx->pass) {
+        ctx->x = (uint16_t)(f.vp.x + passes[ctx->pass - 1].ox);
+        progressive_next(ctx, (uint32_t)f.vp.y + passes[ctx->pass - 1].oy);
         return 0;
     }
 #endif
 #if RT_USE_SPD
-    if (status == 0 && opts->spd)
-        corner_row(ctx->worker, ctx->y, ctx->x0, ctx->w, ctx->rows[0]);
+    if (opts->spd)
+        corner_row(f.wk, f.vp.y, f.vp.x, f.vp.w, ctx->rows[0]);
 #endif
 #if RT_USE_AA
-    if (status == 0 && ctx->aa_levels)
-        aa_corner_row(ctx->worker, (int32_t)ctx->y << ctx->aa_levels, ctx->x0, ctx->w, ctx->aa_levels, ctx->rows[0]);
+    if (ctx->aa_levels)
+        aa_corner_row(f.wk, (int32_t)f.vp.y << ctx->aa_levels, f.vp.x, f.vp.w, ctx->aa_levels, ctx->rows[0]);
 #endif
-    return status;
+    return 0;
 }
 
 /* The worker's counts so far into the caller's stats. */
