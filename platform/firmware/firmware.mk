@@ -257,7 +257,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(PROGRESSIVE_FLAGS) $(TEXTURE_FILTER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
 # Sources compiled with -Os instead of -O2, where bytes count more than
-# instructions: the frame (render.c: set-up and once per pixel), errors and
+# instructions: the frame (render.c, aa.c: set-up and once per pixel), errors and
 # counters, the UART sink, and the solids' object-space code (xform,
 # shape, csg, object), linked only for scenes with solids. Measured on
 # mps2-an385: the default scene's code 22473 -> 20301 bytes (the 20 KiB

@@ -1,10 +1,11 @@
 /* frame_setup.h - a frame set up: the options checked (in the order
  * their errors are reported), the scratch carved into corner rows, the
- * camera and the tracer made, the sink begun. One inline function, which
- * render.c inlines into rt_render_begin and rt_render: a build that only
- * calls rt_render (the board) links one function, as small as a single
- * loop. (Cut into inline steps, GCC allocates its registers otherwise:
- * an instruction a frame and 4 bytes apart in the firmware.) */
+ * camera and the tracer made. One inline function, which render.c inlines
+ * into rt_render_begin and rt_render (a build that only calls rt_render,
+ * the board, links one function, as small as a single loop); its steps
+ * are marked in it. (Cut into inline functions of their own, the steps
+ * change GCC's layout of the anti-aliased firmware's set-up: 8 bytes and
+ * a different block order; one function keeps the code as it was.) */
 #ifndef FRAME_SETUP_H
 #define FRAME_SETUP_H
 
@@ -63,6 +64,7 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
         rt_error_append_int(err, RT_MAX_DEPTH);
         return -1;
     }
+    /* the viewport in the frame, and the sink's lines */
     struct rt_worker *wk = &workers[opts->worker];
     rt_viewport_t vp = opts->viewport;
     if (vp.w == 0 && vp.h == 0)
@@ -118,6 +120,7 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
         ctx->last_pass = all ? RT_PROGRESSIVE_PASSES : opts->progressive;
     }
 #endif
+    /* anti-aliasing: its options, its scratch, threshold and scale, the split decisions' words */
 #if !RT_USE_AA
 #if RT_USE_PROGRESSIVE
     ctx->aa_levels = ctx->spp = 0; /* (read by the progressive passes) */
@@ -168,6 +171,7 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
     }
 #endif
 #endif
+    /* SPD mode's two rows of corner colours */
 #if RT_USE_SPD
     ctx->spd = opts->spd;
     if (opts->spd) {
@@ -179,6 +183,7 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
         ctx->rows[1] = (colour_t *)ctx->rows[0] + vp.w + 1;
     }
 #endif
+    /* the camera, the eye rays' cones and where their search starts */
     int32_t nx = w, ny = h;
 #if RT_USE_SPD
     if (opts->spd) { /* a grid of corners, one more each way */
@@ -213,6 +218,7 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
     /* eye rays start at the BVH's box unless an unbounded plane may be nearer */
     if (sc->n_bvh_nodes > 0 && sc->n_planes == 0)
         camera_start_at_bounds(&wk->cam, sc->bvh_nodes[0].min, sc->bvh_nodes[0].max);
+    /* the tracer */
     wk->tr = (tracer_t){ sc, depth, &wk->scratch, opts->spd,
                          r_div(r_from_int(opts->adaptive_milli), r_from_int(1000)), wk->last_blocker, wk->terms };
     for (uint32_t i = 0; i < RT_MAX_LIGHTS; i++)

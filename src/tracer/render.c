@@ -35,6 +35,7 @@ static RT_INLINE int flush_band(rt_render_ctx_t *ctx, uint16_t y2)
     return 0;
 }
 
+/* One worker a core or thread (frame.h): rt_render's context is its own. */
 static struct rt_worker workers[RT_MAX_WORKERS];
 
 #if RT_USE_SPD
@@ -269,9 +270,9 @@ static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 
 /* The bodies of rt_render_begin, _step and _end, inlined into them and
  * into rt_render: a build that only calls rt_render (the board) links one
- * function, as small as a single loop. Begun: the frame set up, then the
- * first pass's first step (progressive) or the corners above the first
- * line (SPD, adaptive anti-aliasing). */
+ * function, as small as a single loop. Begun: the frame set up, the
+ * sink begun, then the first pass's first step (progressive) or the
+ * corners above the first line (SPD, adaptive anti-aliasing). */
 static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts,
                                   rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
