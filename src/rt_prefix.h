@@ -11,10 +11,6 @@
 #ifndef RT_PREFIX_H
 #define RT_PREFIX_H
 
-#define aa_adaptive_line         rt_aa_adaptive_line
-#define aa_corner_row            rt_aa_corner_row
-#define aa_uniform_line          rt_aa_uniform_line
-#define aa_uniform_pixel         rt_aa_uniform_pixel
 #define bvh_build                rt_bvh_build
 #define bvh_tree_stats           rt_bvh_tree_stats
 #define camera_column            rt_camera_column

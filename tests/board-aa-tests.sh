@@ -8,7 +8,7 @@
 #  - mps2-an521, both cores (bands of 4 lines with AA: each traces its
 #    top row of corners again): AA=3 byte-identical to the host and to one
 #    core, the critical path at most 0.56 of one core's instructions;
-#  - pruning: firmware without AA links none of it (aa.c's sampler
+#  - pruning: firmware without AA links none of it (aa.h's sampler
 #    aa_sample is absent), with AA it does;
 #  - firmware without AA: code within 0.5% of what it was before;
 #  - the cost at 128x128 (instructions per pixel under -icount shift=0,

@@ -25,8 +25,8 @@ check "src/ (double)" -Iinclude -Isrc $DOUBLE src/
 check "src/ (float)" -Iinclude -Isrc $FLOAT src/
 check "src/ (double, fixed tolerances)" -Iinclude -Isrc $DOUBLE -DRT_TOLERANCES_FIXED=1 src/
 # the host's builds also record and replay split decisions (RT_AA_REPLAY)
-check "src/tracer/render.c, aa.c (fixed; RT_AA_REPLAY)" -Iinclude -Isrc -DRT_AA_REPLAY=1 src/tracer/render.c src/tracer/aa.c
-check "src/tracer/render.c, aa.c (double; RT_AA_REPLAY)" -Iinclude -Isrc $DOUBLE -DRT_AA_REPLAY=1 src/tracer/render.c src/tracer/aa.c
+check "src/tracer/render.c (fixed; RT_AA_REPLAY)" -Iinclude -Isrc -DRT_AA_REPLAY=1 src/tracer/render.c
+check "src/tracer/render.c (double; RT_AA_REPLAY)" -Iinclude -Isrc $DOUBLE -DRT_AA_REPLAY=1 src/tracer/render.c
 
 # The hosted CLI and the scene compiler; backend.c is built once per backend.
 HOSTED="-Iinclude -Isrc -Iplatform/hosted -D_POSIX_C_SOURCE=200809L -DRT_AA_REPLAY=1"

@@ -257,7 +257,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
             -DBOARD_FORMAT=$(FMT_MACRO) -DBOARD_BAND_LINES=$(BAND_LINES) -DBOARD_CORES=$(CORES) -DBOARD_CYCLES=$(BOARD_CYCLES) -DBOARD_INSTR_COUNTER=$(BOARD_INSTR_COUNTER) -DRT_MAX_WORKERS=$(CORES) -DRT_FB_ONLY_FORMAT=$(FMT_MACRO) -DSCENE_PRUNE=$(PRUNE) -DRT_USE_SPD=0 $(AA_FLAGS) $(DITHER_FLAGS) $(PROGRESSIVE_FLAGS) $(TEXTURE_FILTER_FLAGS) \
             $(CFG_FLAGS) $(BOARD_CFLAGS) -include $(FW_DIR)/scene_data.h -Iinclude -Isrc -Iplatform/firmware -I$(FW_DIR) $(SPEC_CFLAGS)
 # Sources compiled with -Os instead of -O2, where bytes count more than
-# instructions: the frame (render.c, aa.c: set-up and once per pixel), errors and
+# instructions: the frame (render.c: set-up and once per pixel), errors and
 # counters, the UART sink, and the solids' object-space code (xform,
 # shape, csg, object), linked only for scenes with solids. Measured on
 # mps2-an385: the default scene's code 22473 -> 20301 bytes (the 20 KiB
@@ -265,7 +265,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # camera makes an eye ray a pixel: -Os in the fixed build, which walks T
 # by additions (no slower for 56 bytes less), -O2 in the float build,
 # whose products -Os would slow (the card +1%).
-FW_SIZE_FILES = render aa rt_error stats sink_stream xform shape csg object
+FW_SIZE_FILES = render rt_error stats sink_stream xform shape csg object
 FW_SIZE_FILES_fixed = camera
 FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lplatform/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 

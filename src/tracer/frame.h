@@ -1,7 +1,6 @@
-/* frame.h - what the files of a frame share: the worker that a render
- * writes (render.c owns one per core), the eye sample the flat search
- * culls by, and the anti-aliased frame's entries (aa.c) that render.c's
- * row walk and set-up call. */
+/* frame.h - what the parts of render.c's unit share (frame_setup.h,
+ * aa.h): the worker that a render writes (render.c owns one per core),
+ * and the eye sample the flat search culls by. */
 #ifndef FRAME_H
 #define FRAME_H
 
@@ -44,15 +43,5 @@ static RT_INLINE void eye_sample(struct rt_worker *wk, int32_t k, int32_t m)
     (void)wk, (void)k, (void)m;
 #endif
 }
-
-#if RT_USE_AA
-/* Anti-aliasing (aa.c): row j of cell corners of an adaptive frame (its
- * pixel corners traced), a frame pixel and a line of a uniform frame, a
- * line of an adaptive one. */
-void aa_corner_row(struct rt_worker *wk, int32_t j, uint16_t x0, uint16_t w, unsigned levels, colour_t *row);
-colour_t aa_uniform_pixel(const rt_render_ctx_t *ctx, uint32_t x, uint32_t y);
-void aa_uniform_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line);
-void aa_adaptive_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line);
-#endif
 
 #endif

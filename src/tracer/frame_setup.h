@@ -1,16 +1,21 @@
-/* frame_setup.h - a frame set up: the options checked (in the order
- * their errors are reported), the scratch carved into corner rows, the
- * camera and the tracer made. One inline function, which render.c inlines
- * into rt_render_begin and rt_render (a build that only calls rt_render,
- * the board, links one function, as small as a single loop); its steps
- * are marked in it. (Cut into inline functions of their own, the steps
- * change GCC's layout of the anti-aliased firmware's set-up: 8 bytes and
- * a different block order; one function keeps the code as it was.) */
+/* frame_setup.h - a frame begun: the options checked (in the order their
+ * errors are reported), the scratch carved into corner rows, the camera
+ * and the tracer made, the sink begun, then the first pass's first step
+ * (progressive) or the corners above the first line (SPD, adaptive
+ * anti-aliasing). Part of render.c's unit, included after the row walks
+ * it starts: render_begin is inlined into rt_render_begin and rt_render,
+ * so a build that only calls rt_render (the board) links one function, as
+ * small as a single loop. (Cut into functions of its own or moved out of
+ * the unit, its steps change GCC's code for the firmware: the two-core
+ * builds' rt_render 68 to 104 bytes apart, the anti-aliased set-up's
+ * blocks in another order; its steps are marked in it instead.) */
 #ifndef FRAME_SETUP_H
 #define FRAME_SETUP_H
 
 #include "frame.h"
 #include "pixel.h"
+
+#define TILE 8 /* the progressive lattice's period: a viewport's edges lie on it */
 
 /* Whether the options record or replay split decisions (RT_AA_REPLAY). */
 #if RT_AA_REPLAY
@@ -19,22 +24,10 @@
 #define SPLITS_ASKED(opts) false
 #endif
 
-#define TILE 8 /* the progressive lattice's period: a viewport's edges lie on it */
-
-/* What render.c begins the sink and the walk with: the frame's size, its
- * viewport, and the worker that renders it. */
-typedef struct {
-    uint16_t w, h;
-    rt_viewport_t vp;
-    struct rt_worker *wk;
-} frame_t;
-
-/* The frame checked and set up for worker opts->worker of `workers`
- * (*f), in steps: its size and depth, the viewport and the sink's lines,
- * the modes built in, anti-aliasing's and SPD mode's scratch, the camera,
- * the eye rays' start, the tracer. 0, or -1 with err set. */
-static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_worker *workers, const scene_t *sc,
-                                 const rt_render_opts_t *opts, rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
+/* The body of rt_render_begin, inlined into it and into rt_render (with
+ * render.c's render_step and render_end). */
+static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts,
+                                  rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
 {
     uint16_t w = opts->width ? opts->width : sc->width;
     uint16_t h = opts->height ? opts->height : sc->height;
@@ -229,7 +222,35 @@ static RT_INLINE int frame_setup(rt_render_ctx_t *ctx, frame_t *f, struct rt_wor
     ctx->worker = wk;
     ctx->stats = stats;
 
-    *f = (frame_t){ w, h, vp, wk };
+    /* the sink begun, the walk at the viewport's first line */
+    sink->flushing = false;
+    int status = sink->begin ? sink->begin(sink, w, h) : 0;
+    if (status != 0)
+        return status;
+    ctx->x0 = vp.x;
+    ctx->w = vp.w;
+    ctx->y = ctx->band_y = vp.y;
+    ctx->y_end = (uint16_t)(vp.y + vp.h);
+#if RT_USE_PROGRESSIVE
+    ctx->y0 = vp.y;
+#endif
+    ctx->cur = 0;
+    /* the first step */
+#if RT_USE_PROGRESSIVE
+    if (ctx->pass) {
+        ctx->x = (uint16_t)(vp.x + passes[ctx->pass - 1].ox);
+        progressive_next(ctx, (uint32_t)vp.y + passes[ctx->pass - 1].oy);
+        return 0;
+    }
+#endif
+#if RT_USE_SPD
+    if (opts->spd)
+        corner_row(wk, vp.y, vp.x, vp.w, ctx->rows[0]);
+#endif
+#if RT_USE_AA
+    if (ctx->aa_levels)
+        aa_corner_row(wk, (int32_t)vp.y << ctx->aa_levels, vp.x, vp.w, ctx->aa_levels, ctx->rows[0]);
+#endif
     return 0;
 }
 

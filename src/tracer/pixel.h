@@ -1,6 +1,6 @@
 /* pixel.h - a colour packed into a line of the sink's pixel format, rounded
  * to nearest or dithered (rt_fb.h's formats). Inline: the per-pixel step
- * of every frame walk (render.c, aa.c), where a format fixed at build time
+ * of every frame walk (render.c, aa.h), where a format fixed at build time
  * folds the packer to one case. */
 #ifndef PIXEL_H
 #define PIXEL_H

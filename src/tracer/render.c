@@ -1,9 +1,10 @@
 /* render.c - the frame walk: eye rays a line at a time in scanline order
- * (one sample a pixel, SPD corners, or anti-aliasing's lines: aa.c) or in
+ * (one sample a pixel, SPD corners, or anti-aliasing's lines: aa.h) or in
  * progressive passes, each line packed (pixel.h) into the band buffer and
- * the bands flushed to the sink; the frame set up by frame_setup.h. */
+ * the bands flushed to the sink; the frame begun by frame_setup.h. The
+ * three headers are parts of this one unit, each included where its code
+ * always stood: the firmware's code stays as it was. */
 #include "frame.h"
-#include "frame_setup.h"
 #include "pixel.h"
 
 static void wait_flushed(rt_fb_sink_t *sink)
@@ -66,6 +67,8 @@ static void spd_line(rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
     ctx->rows[0] = below;
 }
 #endif
+
+#include "aa.h"
 
 /* Line y of a normal frame: one eye ray per pixel. */
 static RT_INLINE void plain_line(const rt_render_ctx_t *ctx, uint16_t y, uint8_t *line)
@@ -268,46 +271,7 @@ static void progressive_next(rt_render_ctx_t *ctx, uint32_t y)
 #endif
 
 
-/* The bodies of rt_render_begin, _step and _end, inlined into them and
- * into rt_render: a build that only calls rt_render (the board) links one
- * function, as small as a single loop. Begun: the frame set up, the
- * sink begun, then the first pass's first step (progressive) or the
- * corners above the first line (SPD, adaptive anti-aliasing). */
-static RT_INLINE int render_begin(rt_render_ctx_t *ctx, const scene_t *sc, const rt_render_opts_t *opts,
-                                  rt_fb_sink_t *sink, rt_stats_t *stats, rt_error_t *err)
-{
-    frame_t f;
-    if (frame_setup(ctx, &f, workers, sc, opts, sink, stats, err) != 0)
-        return -1;
-    sink->flushing = false;
-    int status = sink->begin ? sink->begin(sink, f.w, f.h) : 0;
-    if (status != 0)
-        return status;
-    ctx->x0 = f.vp.x;
-    ctx->w = f.vp.w;
-    ctx->y = ctx->band_y = f.vp.y;
-    ctx->y_end = (uint16_t)(f.vp.y + f.vp.h);
-#if RT_USE_PROGRESSIVE
-    ctx->y0 = f.vp.y;
-#endif
-    ctx->cur = 0;
-#if RT_USE_PROGRESSIVE
-    if (ctx->pass) {
-        ctx->x = (uint16_t)(f.vp.x + passes[ctx->pass - 1].ox);
-        progressive_next(ctx, (uint32_t)f.vp.y + passes[ctx->pass - 1].oy);
-        return 0;
-    }
-#endif
-#if RT_USE_SPD
-    if (opts->spd)
-        corner_row(f.wk, f.vp.y, f.vp.x, f.vp.w, ctx->rows[0]);
-#endif
-#if RT_USE_AA
-    if (ctx->aa_levels)
-        aa_corner_row(f.wk, (int32_t)f.vp.y << ctx->aa_levels, f.vp.x, f.vp.w, ctx->aa_levels, ctx->rows[0]);
-#endif
-    return 0;
-}
+#include "frame_setup.h"
 
 /* The worker's counts so far into the caller's stats. */
 static void add_stats(rt_render_ctx_t *ctx)
