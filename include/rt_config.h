@@ -151,7 +151,7 @@
 /* Renders that may run at once, one per core or thread, each naming its
  * own worker (rt_render_opts_t.worker): a worker is the camera, tracer
  * caches, traversal stacks and counters one render writes, in static
- * storage (render.c; on the M3, 904 bytes each for SPD balls-2, 1,656
+ * storage (render.c, frame.h; on the M3, 904 bytes each for SPD balls-2, 1,656
  * with the default scene's solids). */
 #ifndef RT_MAX_WORKERS
 #define RT_MAX_WORKERS 1

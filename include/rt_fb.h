@@ -10,7 +10,7 @@
  * one while the other is being flushed.
  *
  * Pixel formats: one list, RT_FB_FORMATS below; the core packs them
- * (render.c), rt_fb_expand() turns any of them back into 8-bit R, G, B
+ * (src/tracer/pixel.h), rt_fb_expand() turns any of them back into 8-bit R, G, B
  * (the host's image writer and UART stream decoder use it).
  */
 #ifndef RT_FB_H

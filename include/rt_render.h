@@ -198,7 +198,7 @@ typedef struct {
     uint8_t aa_levels, spp;    /* anti-aliasing: as the options say */
     void *rows[2];             /* SPD or AA corner rows (in the scratch) */
     void *cells;               /* AA: one pixel's cell corners (in the scratch) */
-    struct rt_worker *worker;  /* the core's state for this render (render.c) */
+    struct rt_worker *worker;  /* the core's state for this render (frame.h) */
     rt_stats_t *stats;         /* the caller's, or NULL */
 } rt_render_ctx_t;
 

@@ -63,9 +63,9 @@ typedef struct ray_scratch {
 #if RT_USE_FLAT
     bool flat;                                 /* the scene is searched flat (scene_eye_setup) */
     /* eye_ray and shadow_light are set by trace_ray only, whose caller
-     * (render.c) has set the frame up (scene_eye_setup) */
+     * (render.c) has set the frame up (frame_setup.h: scene_eye_setup) */
     bool eye_ray;                              /* the ray searched now is an eye ray (trace.c) */
-    int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (render.c) */
+    int32_t eye_k, eye_m;                      /* its sample: 2i - cx, 2j - cy (frame.h) */
     int32_t row_m;                             /* row_mask is for this m */
     uint32_t row_mask;                         /* bit i: sphere i's box holds row m */
     uint32_t n_eye_spheres;                    /* set up: min(spheres, RT_FLAT_EYE_SPHERES) */

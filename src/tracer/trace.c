@@ -88,14 +88,12 @@ RT_HOT static colour_t colour_scale(colour_t c, real_t k)
 {
     return r_is_weight(k) ? c3_scale_weight(c, k) : v3_scale(c, k);
 }
-#if RT_USE_REFLECTION || RT_USE_REFRACTION
 /* a + b k, the sum saturated (a weight's product inline, the rare
  * reflectance over 1 by colour_scale) */
 RT_HOT static colour_t colour_add_scaled(colour_t a, colour_t b, real_t k)
 {
     return c3_add(a, r_is_weight(k) ? c3_scale_weight(b, k) : colour_scale(b, k));
 }
-#endif
 
 #if RT_USE_SHADOWS
 /* c + I (Kd C (N.L) + Ks spec) Lc: the share of light l, whose shadow ray
@@ -192,7 +190,6 @@ static inline colour_t direct_light(const tracer_t *tr, const surface_t *s, cons
     return c;
 }
 
-#if RT_USE_SPECULAR || RT_USE_REFLECTION
 /* D mirrored about N, made once for the highlights and the reflection
  * ray. D and N are unit (a sphere's N within 2^-15: sphere_normal), so M
  * is within 2^-12 of unit before v3_renorm. */
@@ -200,7 +197,6 @@ static inline vec3_t mirror_dir(vec3_t d, vec3_t n)
 {
     return v3_renorm(v3_madd_in_range(d, -2 * v3_dot_in_range(d, n), n));
 }
-#endif
 
 #if RT_USE_REFLECTION || RT_USE_REFRACTION /* (the child rays) */
 /* Whether the child ray of a ray of this weight, whose colour counts
@@ -209,6 +205,7 @@ static inline bool worth_tracing(const tracer_t *tr, real_t weight, real_t facto
 {
     return tr->min_weight == 0 || r_mul(weight, factor) >= tr->min_weight;
 }
+#endif
 
 /* That child's weight; in the fixed build only where worth_tracing reads
  * it (a saturating product costs more than the test, a float one less). */
@@ -216,7 +213,6 @@ static inline real_t child_weight(const tracer_t *tr, real_t weight, real_t fact
 {
     return RT_BACKEND_FIXED && tr->min_weight == 0 ? weight : r_mul(weight, factor);
 }
-#endif
 
 /* The nearest surface along the ray, if any. */
 static inline bool find_surface(const tracer_t *tr, const ray_t *ray, surface_t *s)
@@ -351,6 +347,40 @@ typedef struct {
 #endif
 } path_level_t;
 
+/* A level's children as the walk sees them, whatever the build traces:
+ * with reflection or refraction left out (rt_config.h), its factor is a
+ * constant 0 and its predicates false, so the walk's branches for it
+ * fold away and the level holds no fields for it. (Macros: the walk
+ * compiles as if it read the fields itself.) */
+#if RT_USE_REFLECTION
+#define MIRROR_FACTOR(lv) ((lv)->ks)
+#else
+#define MIRROR_FACTOR(lv) ((void)(lv), (real_t)0)
+#endif
+#if RT_USE_REFRACTION
+#define REFRACTION_FACTOR(lv) ((lv)->t)
+#define REFRACTING(lv) ((lv)->refracting)            /* the refracted child is the one being traced */
+#define REFRACTION_LEFT(lv) ((lv)->t > 0 && !(lv)->refracting) /* it is still to trace */
+#define REFRACTED_CHILD(lv) (&(lv)->refr)
+#define START_REFRACTION(lv) ((lv)->refracting = true)
+#define NO_CHILDREN(lv) ((lv)->t = 0, (lv)->refracting = false) /* none traced or to trace yet */
+#else
+#define REFRACTION_FACTOR(lv) ((void)(lv), (real_t)0)
+#define REFRACTING(lv) ((void)(lv), false)
+#define REFRACTION_LEFT(lv) ((void)(lv), false)
+#define REFRACTED_CHILD(lv) ((void)(lv), (const ray_t *)0)
+#define START_REFRACTION(lv) ((void)(lv))
+#define NO_CHILDREN(lv) ((void)(lv))
+#endif
+
+/* Marks the ray about to be searched as an eye ray or not, for the flat
+ * search's culling (scene_eye_setup). */
+#if RT_USE_FLAT
+#define MARK_EYE_RAY(tr, eye) ((tr)->scratch->eye_ray = (eye))
+#else
+#define MARK_EYE_RAY(tr, eye) ((void)(tr), (void)(eye))
+#endif
+
 /* The profile (bench/profile.py) tells a path's rays apart by the entries
  * of trace_segment and of these counters, so they stay out of line in the
  * generic firmware and where make profile keeps the frames (RT_KEEP_FRAMES).
@@ -370,12 +400,8 @@ typedef struct {
 #define PATH_STEP RT_NOINLINE static
 #endif
 
-#if RT_USE_REFLECTION
 PATH_STEP void count_reflect_ray(const tracer_t *tr) { tr->scratch->stats.reflect_rays++; }
-#endif
-#if RT_USE_REFRACTION
 PATH_STEP void count_refract_ray(const tracer_t *tr) { tr->scratch->stats.refract_rays++; }
-#endif
 
 /* Traces `ray` at `depth` into lv: its colour without its children, and
  * the children to trace: true when its mirror ray is in *mirror (the
@@ -383,17 +409,10 @@ PATH_STEP void count_refract_ray(const tracer_t *tr) { tr->scratch->stats.refrac
 PATH_STEP bool trace_segment(const tracer_t *tr, const ray_t *ray, int depth, path_level_t *lv, ray_t *mirror)
 {
     surface_t s;
-#if RT_USE_FLAT
-    tr->scratch->eye_ray = depth == 1; /* it passes the eye (scene_eye_setup) */
+    MARK_EYE_RAY(tr, depth == 1); /* it passes the eye */
     bool found = find_surface(tr, ray, &s);
-    tr->scratch->eye_ray = false;
-#else
-    bool found = find_surface(tr, ray, &s);
-#endif
-#if RT_USE_REFRACTION
-    lv->t = 0;
-    lv->refracting = false;
-#endif
+    MARK_EYE_RAY(tr, false);
+    NO_CHILDREN(lv);
     (void)mirror;
     if (!found) {
         lv->c = background(TRACER_SCENE(tr), ray);
@@ -407,10 +426,8 @@ PATH_STEP bool trace_segment(const tracer_t *tr, const ray_t *ray, int depth, pa
     bool mirrors = m->ks > 0 || (tr->spd_rules && m->t > 0);
     (void)mirrors;
     vec3_t mdir = { 0, 0, 0 };
-#if RT_USE_SPECULAR || RT_USE_REFLECTION
-    if (mirrors)
+    if ((RT_USE_SPECULAR || RT_USE_REFLECTION) && mirrors) /* (the highlights' and the mirror ray's) */
         mdir = mirror_dir(ray->dir, s.n);
-#endif
     lv->c = direct_light(tr, &s, ray, depth, &mdir);
     if (depth >= tr->max_depth)
         return false;
@@ -451,47 +468,35 @@ RT_FRAME colour_t trace_ray(const tracer_t *tr, const ray_t *eye, int depth, rea
     lv[0].weight = weight;
     for (;;) {
         bool down = trace_segment(tr, ray, depth + k, &lv[k], &rays[next]);
-#if RT_USE_REFLECTION
-        if (down) { /* the mirror child next */
+        if (RT_USE_REFLECTION && down) { /* the mirror child next */
             count_reflect_ray(tr);
             ray = &rays[next];
             next ^= 1u;
-            lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].ks);
+            lv[k + 1].weight = child_weight(tr, lv[k].weight, MIRROR_FACTOR(&lv[k]));
             k++;
             continue;
         }
-#else
-        (void)down;
-#endif
         /* lv[k] is done but for its refracted child: up to the next level
          * with a child left to trace */
         for (;;) {
-#if RT_USE_REFRACTION
-            if (lv[k].t > 0 && !lv[k].refracting) {
-                lv[k].refracting = true;
+            if (REFRACTION_LEFT(&lv[k])) {
+                START_REFRACTION(&lv[k]);
                 count_refract_ray(tr);
-                ray = &lv[k].refr;
-                lv[k + 1].weight = child_weight(tr, lv[k].weight, lv[k].t);
+                ray = REFRACTED_CHILD(&lv[k]);
+                lv[k + 1].weight = child_weight(tr, lv[k].weight, REFRACTION_FACTOR(&lv[k]));
                 k++;
                 break;
             }
-#endif
             if (k == 0)
                 return lv[0].c;
             colour_t child = lv[k].c;
             k--;
-#if RT_USE_REFRACTION
-            if (lv[k].refracting) {
-                lv[k].c = colour_add_scaled(lv[k].c, child, lv[k].t);
+            if (REFRACTING(&lv[k])) {
+                lv[k].c = colour_add_scaled(lv[k].c, child, REFRACTION_FACTOR(&lv[k]));
                 continue;
             }
-#endif
-#if RT_USE_REFLECTION
-            if (lv[k].ks > 0)
-                lv[k].c = colour_add_scaled(lv[k].c, child, lv[k].ks);
-#else
-            (void)child;
-#endif
+            if (MIRROR_FACTOR(&lv[k]) > 0)
+                lv[k].c = colour_add_scaled(lv[k].c, child, MIRROR_FACTOR(&lv[k]));
         }
     }
 }

@@ -9,7 +9,7 @@
 #  - mps2-an521, both cores (bands of 4 lines with AA: each traces its
 #    top row of corners again): AA=3 byte-identical to the host and to one
 #    core, the critical path at most 0.56 of one core's instructions;
-#  - pruning: firmware without AA links none of it (render.c's sampler
+#  - pruning: firmware without AA links none of it (aa.h's sampler
 #    aa_sample is absent), with AA it does;
 #  - firmware without AA (generic, balls-2 and the showpiece): code within
 #    the budget of tests/boards/budgets.sh (that AA adds nothing to it is
