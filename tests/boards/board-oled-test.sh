@@ -5,40 +5,21 @@
 # smaller than the panel (odd width) is taken from the panel's top left;
 # a damaged capture gives no image; a frame larger than the panel does not
 # build; anti-aliased and dithered frames (make AA=3 DITHER=1) likewise.
-# Written to be pasted into tests/boards/board-tests.sh as well (it keeps
-# to its ok/bad helpers; the capture check needs the showpiece case's dump).
+# (The capture check needs the showpiece case's dump.)
 RT=${1:-build/host/rt}
 OUT=build/test-board-oled
 mkdir -p "$OUT"
 . tests/lib/check.sh
+. tests/boards/board-case.sh
 
 echo "board tests: QEMU lm3s6965evb (OLED) against the hosted fixed build in l4"
 oled_case() { # NAME SCENE SIZE [MAKE-VARS [RT-ARGS]]
     n=$1 scene=$2 size=$3 vars=$4 args=$5
-    set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5 $vars
-    if ! make -s -j2 firmware AA=0 DITHER=0 "$@" >"$OUT/$n.build" 2>&1; then
-        bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
-        return
-    fi
-    rm -f "$OUT/$n-board.png"
-    if ! make -s board-run AA=0 DITHER=0 "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
-        bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
-        return
-    fi
-    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth 5 --format l4 --threads 1 --quiet --stats $args \
-        2>"$OUT/$n-host.stats"
-    ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$n.report")
-    hw=$(awk '$1 == "stack_high_water" { print $2 }' "$OUT/$n.report")
-    if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
-        ok "$n $size: panel == host fixed l4 $args ($cmp), $ipp instructions/pixel, stack $hw bytes"
-    else
-        bad "$n $size: panel and host fixed l4 differ: $cmp"
-    fi
-    if same=$(sh tests/boards/same-counters.sh "$OUT/$n-host.stats" "$OUT/$n.report"); then
-        ok "$n $size: board report and rt --stats: $same"
-    else
-        bad "$n $size: board report and rt --stats: $same"
-    fi
+    set -- BOARD=lm3s6965evb SCENE="$scene" SIZE="$size" DEPTH=5 AA=0 DITHER=0 $vars
+    board_build $n "$@" && board_run $n "$@" || return
+    ipp=$(report_val instructions_per_pixel "$OUT/$n.report") hw=$(report_val stack_high_water "$OUT/$n.report")
+    board_vs_host $n "fixed l4${args:+ $args}" "$size on the panel, $ipp instructions/pixel, stack $hw bytes" \
+        "$scene" --size "$size" --depth 5 --format l4 $args
     grep -qx "stack_guard_intact 1" "$OUT/$n.report" && grep -qx "drawn 1" "$OUT/$n.report" ||
         bad "$n $size: report lacks 'stack_guard_intact 1' or 'drawn 1'"
 }

@@ -60,47 +60,29 @@ RT=${1:-build/host/rt}
 OUT=build/test-pico
 mkdir -p "$OUT"
 . tests/lib/check.sh
-val() { awk -v k="$1" '$1 == k { print $2 }' "$2" | tail -1; }
+. tests/boards/board-case.sh
+val() { report_val "$@"; }
 elf_of() { make -s board-info BOARD=pico "$@" | sed -n 's/.*elf=\([^ ]*\)\.elf.*/\1/p'; }
 
 echo "pico: rp2040js RP2040, booted from the UF2 as the chip boots, against the hosted fixed build"
 pico_case() { # NAME SCENE SIZE DEPTH FORMAT [MAKE-VARS]
     n=$1 scene=$2 size=$3 depth=$4 format=$5 vars=$6
     set -- BOARD=pico SCENE="$scene" SIZE="$size" DEPTH="$depth" $vars
-    if ! make -s -j2 firmware "$@" >"$OUT/$n.build" 2>&1; then
-        bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
-        return 1
-    fi
+    board_build $n "$@" || return 1
     base=$(elf_of "$@")
     if chk=$(node tools/emu/pico/uf2.mjs check "$base.uf2" 2>&1); then
         ok "$n: $chk"
     else
         bad "$n: the UF2 does not check out: $chk"
     fi
-    rm -f "$OUT/$n-board.png"
-    if ! make -s board-run "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
-        bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
-        return 1
-    fi
+    board_run $n "$@" || return 1
     # progressive passes (the panel's default): the host in the same order,
     # for the same counts of the core's caches; the image is the scanline
     # order's either way (tests/host/progressive-tests.sh; and pass 7 below)
     prog=$(awk '$1 == "progress_pass" { print "--progressive"; exit }' "$OUT/$n.report")
-    "$RT" "$scene" -o "$OUT/$n-host.png" --size "$size" --depth "$depth" --format "$format" --threads 1 $prog --quiet --stats \
-        2>"$OUT/$n-host.stats"
     ipp=$(val instructions_per_pixel "$OUT/$n.report") cpp=$(val cycles_per_pixel "$OUT/$n.report")
-    if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
-        ok "$n $size depth $depth: board == host fixed $format ($cmp), $ipp instructions and $cpp cycles a pixel"
-    else
-        bad "$n $size depth $depth: board and host fixed $format differ: $cmp"
-    fi
-    # (a frame split between cores: its ray counts, as tests/boards/ports-tests.sh)
-    only=$(awk '$1 == "cores" && $2 > 1 { print "rays" }' "$OUT/$n.report")
-    if same=$(sh tests/boards/same-counters.sh "$OUT/$n-host.stats" "$OUT/$n.report" $only); then
-        ok "$n: report and rt --stats: $same"
-    else
-        bad "$n: report and rt --stats: $same"
-    fi
+    board_vs_host $n "fixed $format" "$size depth $depth, $ipp instructions and $cpp cycles a pixel" \
+        "$scene" --size "$size" --depth "$depth" --format "$format" $prog
     # SysTick's count against the emulator's, in the same window
     sys=$(val render_cycles "$OUT/$n.report") emu=$(val emulator_render_cycles "$OUT/$n.report")
     ins=$(val render_instructions "$OUT/$n.report")

@@ -26,9 +26,11 @@ OUT=build/test-board
 mkdir -p "$OUT"
 . tests/lib/check.sh
 . tests/boards/budgets.sh
+. tests/boards/board-case.sh
 fwdir() { make -s print-fwdir SCENE="$(scene_file $1)" SIZE=$2 DEPTH=5 AA=0; }
 # fw NAME [make variables]: build the firmware (log in $OUT/NAME.build),
-# run it (image $OUT/NAME-board.png, report $OUT/NAME.report)
+# run it (image $OUT/NAME-board.png, report $OUT/NAME.report); the caller
+# counts the check
 fw() {
     n=$1
     shift
@@ -40,30 +42,11 @@ echo "board tests: QEMU mps2-an385 against the hosted fixed build"
 scene_file() { for d in scenes/spd scenes/bench scenes; do [ -f $d/$1.nff ] && echo $d/$1.nff && return; done; }
 for s in balls-1 gears-1 rings-1 teapot-1 tetra-1 balls-2 rings-2 teapot-2 tetra-2 \
          quadrics torus boxes transforms csg showpiece textures card picolib whitted; do
-    d=$(fwdir $s 64x64)
-    if ! make -s -j2 firmware SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 AA=0 >"$OUT/$s.build" 2>&1; then
-        bad "$s: firmware build failed: $(tail -3 "$OUT/$s.build")"
-        continue
-    fi
-    if ! make -s board-run SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 AA=0 RUN_OUT="$OUT/$s-board.png" RUN_RT="$RT" >"$OUT/$s.report" 2>&1; then
-        bad "$s: board run failed: $(tail -3 "$OUT/$s.report")"
-        continue
-    fi
-    # one thread: the frame in one call of the core, as the board (with
-    # more, each band's caches start afresh and the test counts differ)
-    "$RT" $(scene_file $s) -o "$OUT/$s-host.png" --fixed --size 64x64 --depth 5 --threads 1 --quiet --stats 2>"$OUT/$s-host.stats"
-    ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$s.report")
-    if cmp=$("$RT" compare "$OUT/$s-board.png" "$OUT/$s-host.png" --max-error 0); then
-        ok "$s: board == host fixed ($cmp), $ipp instructions/pixel"
-    else
-        bad "$s: board and host fixed differ: $cmp"
-    fi
-    # The core's counters (include/rt_stats.h): same keys and values on both.
-    if same=$(sh tests/boards/same-counters.sh "$OUT/$s-host.stats" "$OUT/$s.report"); then
-        ok "$s: board report and rt --stats: $same"
-    else
-        bad "$s: board report and rt --stats: $same"
-    fi
+    vars="SCENE=$(scene_file $s) SIZE=64x64 DEPTH=5 AA=0"
+    board_build $s $vars && board_run $s $vars || continue
+    ipp=$(report_val instructions_per_pixel "$OUT/$s.report")
+    # the core's counters (include/rt_stats.h): the same keys and values on both
+    board_vs_host $s fixed "$ipp instructions/pixel" $(scene_file $s) --fixed --size 64x64 --depth 5
 done
 
 # Compile-time pruning changes code size, never pixels: unpruned firmware

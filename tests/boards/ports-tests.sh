@@ -19,6 +19,7 @@ RT=${1:-build/host/rt}
 OUT=build/test-ports
 mkdir -p "$OUT"
 . tests/lib/check.sh
+. tests/boards/board-case.sh
 SOFT_FLOAT='^(__aeabi_[fd](add|sub|mul|div|cmp.*|2.*)|__aeabi_[ui]?[lu]?2[fd]|__aeabi_[fd]2.*|__(add|sub|mul|div)[sd]f3|__float[a-z]*[sd]f|__fix[a-z]*[sd]f[a-z]*|__extendsfdf2|__truncdfsf2|__(eq|ne|lt|le|gt|ge|un)[sd]f2)$'
 HEAP='^(malloc|free|calloc|realloc|_sbrk|sbrk|_malloc_r)$'
 
@@ -33,36 +34,17 @@ for b in $(ls platform/*/board.mk | cut -d/ -f2); do
         for s in $scenes; do
             t0=$(date +%s)
             n=$b-$be-$(basename $s .nff)
-            vars="BOARD=$b BACKEND=$be SCENE=$s SIZE=32x32 DEPTH=5"
-            if ! make -s -j2 firmware AA=0 DITHER=0 $vars >"$OUT/$n.build" 2>&1; then
-                bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
-                continue
-            fi
-            eval "$(make -s board-info AA=0 DITHER=0 $vars)"
-            if ! make -s board-run AA=0 DITHER=0 $vars RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1; then
-                bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
-                continue
-            fi
+            vars="BOARD=$b BACKEND=$be SCENE=$s SIZE=32x32 DEPTH=5 AA=0 DITHER=0"
+            board_build $n $vars && board_run $n $vars || continue
+            eval "$(make -s board-info $vars)"
             # a panel drawn in progressive passes (its report says so): the
             # host in the same order, for the same counts of the core's
             # caches (the image is the scanline order's either way:
             # tests/host/progressive-tests.sh)
             prog=$(awk '$1 == "progress_pass" { print "--progressive"; exit }' "$OUT/$n.report")
-            "$RT" $s -o "$OUT/$n-host.png" --$be --size 32x32 --depth 5 --format $format --threads 1 $prog --quiet --stats \
-                2>"$OUT/$n-host.stats"
-            ipp=$(awk '$1 == "instructions_per_pixel" { print $2 }' "$OUT/$n.report")
-            if cmp=$("$RT" compare "$OUT/$n-board.png" "$OUT/$n-host.png" --max-error 0); then
-                ok "$n: board == host $be ($format), $ipp instructions/pixel ($(($(date +%s) - t0)) s)"
-            else
-                bad "$n: board and host $be differ: $cmp"
-            fi
-            # a frame split between cores: its ray counts (tests/boards/cores-tests.sh)
-            only=$(awk '$1 == "cores" && $2 > 1 { print "rays" }' "$OUT/$n.report")
-            if same=$(sh tests/boards/same-counters.sh "$OUT/$n-host.stats" "$OUT/$n.report" $only); then
-                ok "$n: report and rt --stats: $same"
-            else
-                bad "$n: report and rt --stats: $same"
-            fi
+            ipp=$(report_val instructions_per_pixel "$OUT/$n.report")
+            board_vs_host $n "$be ($format)" "$ipp instructions/pixel ($(($(date +%s) - t0)) s)" \
+                $s --$be --size 32x32 --depth 5 --format $format $prog
             # budgets from the ELF
             syms=$(${cross}nm "$elf" | awk '{ print $NF }')
             found=$(echo "$syms" | grep -E "$HEAP" | tr '\n' ' ')
