@@ -20,13 +20,8 @@
 #   - bad --aa and --spp values fail with exit 2 and a clear message.
 # The heavy renders (the references) use RT_FAST (the optimised build of
 # the same source), the checked ones the build under test.
-RT=${1:-build/asan/rt}
-OUT=${2:-build/test-aa}
-RT_FAST=${RT_FAST:-build/host/rt}
-[ -x "$RT_FAST" ] || RT_FAST=$RT
 SIZE=128x128
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/host/host-lib.sh
 echo "anti-aliasing tests: against the pixel-area image (rt --double --spp 16) at $SIZE"
 
 spd_path() { [ -f "scenes/spd/$1.nff" ] && echo "scenes/spd/$1.nff" || echo "scenes/$1.nff"; }
@@ -45,16 +40,13 @@ for s in balls-2 showpiece; do
 done
 
 # the same samples in the independent tracer
-REF=$OUT/ref_tracer
-if ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/host/ref_tracer.c -lm; then
+if build_ref_tracer; then
     for s in balls-2 rings-1 tetra-2; do
         "$REF" scenes/spd/$s.nff -o "$OUT/$s-tracer4.ppm" --size 64x64 --spp 4 2>"$OUT/$s.err" &&
             "$RT_FAST" scenes/spd/$s.nff -o "$OUT/$s-double4.png" --double --spp 4 --size 64x64 --quiet 2>>"$OUT/$s.err"
         check "$s: ref_tracer --spp 4 vs rt --double --spp 4" "$RT" compare "$OUT/$s-tracer4.ppm" "$OUT/$s-double4.png" \
             --psnr-min 70
     done
-else
-    bad "ref_tracer does not compile"
 fi
 
 # adaptive, fixed build, against the reference; and one sample, for the gain

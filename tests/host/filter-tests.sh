@@ -13,20 +13,10 @@
 #    it differs from the filtered image;
 #  - a bad --texture-filter value fails with exit 2.
 # Prints one line of figures per check and "filter-tests: N passed, M failed".
-RT=${1:-build/asan/rt}
-OUT=${2:-build/asan/test-filter}
-RT_FAST=${RT_FAST:-build/host/rt}
-[ -x "$RT_FAST" ] || RT_FAST=$RT
 SIZE=128x96
-mkdir -p "$OUT"
-. tests/lib/check.sh
-REF=$OUT/ref_tracer
+. tests/host/host-lib.sh
 echo "filter tests: filtered textures against the pixel-area image at $SIZE"
-if ! ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/host/ref_tracer.c -lm; then
-    bad "ref_tracer does not compile"
-    summary filter-tests
-    exit 1
-fi
+build_ref_tracer || { summary filter-tests; exit 1; }
 for s in card picolib whitted; do
     f=scenes/bench/$s.nff o=$OUT/$s
     if ! { "$RT_FAST" "$f" -o "$o-area.png" --double --spp 16 --texture-filter off --size $SIZE --quiet &&

@@ -7,20 +7,12 @@
 # must reach 50 dB: a few pixels lie where a policy rule or a tie between
 # coplanar faces flips with the last bit of a hit point (teapot-1: 56.7 dB).
 # Prints one line of figures per scene and "name: N passed, M failed".
-RT=${1:-build/asan/rt}
-OUT=${2:-build/asan/test-reference}
 SIZE=128x128
 DEPTH=5
 PSNR_MIN=70
-REF=$OUT/ref_tracer
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/host/host-lib.sh
 echo "reference tests: double build vs tests/host/ref_tracer.c at $SIZE depth $DEPTH (PSNR >= $PSNR_MIN dB)"
-if ! ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/host/ref_tracer.c -lm; then
-    bad "ref_tracer does not compile"
-    summary reference-tests
-    exit 1
-fi
+build_ref_tracer || { summary reference-tests; exit 1; }
 for s in balls-1 balls-2 gears-1 rings-1 rings-2 tetra-1 tetra-2 teapot-1 teapot-2; do
     r="$OUT/$s-ref.ppm" d="$OUT/$s-double.png"
     min=$PSNR_MIN

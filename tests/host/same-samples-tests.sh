@@ -26,13 +26,8 @@
 # The fixed references, the figures without the option and the fixed
 # build's replays of itself use RT_FAST (the optimised build of the same
 # source), the double and float builds' replays the build under test.
-RT=${1:-build/asan/rt}
-OUT=${2:-build/test-same-samples}
-RT_FAST=${RT_FAST:-build/host/rt}
-[ -x "$RT_FAST" ] || RT_FAST=$RT
 SIZE=96x72
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/host/host-lib.sh
 echo "same-samples tests: --double --aa 3 --same-samples fixed against --fixed --aa 3 at $SIZE"
 
 depth_of() { case $1 in card) echo 3 ;; picolib) echo 6 ;; *) echo 5 ;; esac; }

@@ -16,18 +16,10 @@
 #  - a floor that ends before the far cube's edge and a sky seen in
 #    mirrors at every depth are in the benchmark scenes' comparisons.
 # Prints one line of figures per check and "surfaces-tests: N passed, M failed".
-RT=${1:-build/asan/rt}
-OUT=${2:-build/asan/test-surfaces}
 SIZE=128x128
-mkdir -p "$OUT"
-. tests/lib/check.sh
-REF=$OUT/ref_tracer
+. tests/host/host-lib.sh
 echo "surfaces tests: planes, textures, the sky at $SIZE"
-if ! ${CC:-cc} -std=c11 -Wall -Wextra -Werror -O2 -o "$REF" tests/host/ref_tracer.c -lm; then
-    bad "ref_tracer does not compile"
-    summary surfaces-tests
-    exit 1
-fi
+build_ref_tracer || { summary surfaces-tests; exit 1; }
 # far_of SCENE: the far cube's half side for tests/host/ref_tracer.c
 far_of() {
     k=$("$RT" "$1" -o "$OUT/scale.png" --size 8x8 --stats 2>&1 >/dev/null | awk '$1 == "scene_scale_log2" { print $2 }')
