@@ -46,12 +46,17 @@ lib/librt_core.a"
     (cd src && find . -name '*.h') | sed 's|^\./|include/rt/internal/|'; } | LC_ALL=C sort)
 [ "$(echo "$expected" | grep -c '^include/rt/internal/geometry/scene.h$')" = 1 ] || bad "no src/geometry/scene.h?"
 files() { (cd "$1" && find . -type f -o -type l | sed 's|^\./||' | LC_ALL=C sort); }
+# same_pixels IMAGE REF: IMAGE has REF's pixels, byte for byte
+same_pixels() { "$rt" compare "$1" "$2" --max-error 0 >/dev/null; }
+# cmake_project NAME SRC PREFIX: configure and build the CMake project SRC
+# against the package installed under PREFIX, into $out/NAME (logs
+# $out/NAME.log and $out/NAME-build.log)
+cmake_project() { log "$1" cmake -S "$2" -B "$out/$1" -DCMAKE_PREFIX_PATH="$3" && log "$1-build" cmake --build "$out/$1"; }
 
 # tools PREFIX WHAT: the installed rt and rt-scenec work
 tools() {
     p=$1 what=$2
-    if "$p/bin/rt" $SCENE --size 32x32 -o "$out/$what.png" --quiet &&
-        "$rt" compare "$out/$what.png" "$out/ref.ppm" --max-error 0 >/dev/null; then
+    if "$p/bin/rt" $SCENE --size 32x32 -o "$out/$what.png" --quiet && same_pixels "$out/$what.png" "$out/ref.ppm"; then
         ok "$what: the installed rt renders $SCENE as $rt does, byte for byte"
     else
         bad "$what: the installed rt failed or differs ($("$rt" compare "$out/$what.png" "$out/ref.ppm" 2>&1))"
@@ -80,14 +85,13 @@ get_target_property(inc rt::core INTERFACE_INCLUDE_DIRECTORIES)
 message(STATUS "rt ${rt_VERSION} from ${rt_DIR}, rt::core includes ${inc}")
 END
     b="$out/consumer-$what"
-    if log "consumer-$what" cmake -S "$src" -B "$b" -DCMAKE_PREFIX_PATH="$p" && log "consumer-$what-build" cmake --build "$b"; then
+    if cmake_project "consumer-$what" "$src" "$p"; then
         if grep -q "from $p/lib/cmake/rt, rt::core includes $p/include/rt" "$out/consumer-$what.log"; then
             ok "$what: find_package(rt CONFIG) finds $(sed -n 's/.*-- rt \([0-9.]*\) from.*/\1/p' "$out/consumer-$what.log") in the installed tree; rt::core links"
         else
             bad "$what: find_package(rt) found another tree: $(grep -- '-- rt ' "$out/consumer-$what.log")"
         fi
-        if "$b/consumer" $SCENE "$out/consumer-$what.ppm" >/dev/null &&
-            "$rt" compare "$out/consumer-$what.ppm" "$out/ref64.ppm" --max-error 0 >/dev/null; then
+        if "$b/consumer" $SCENE "$out/consumer-$what.ppm" >/dev/null && same_pixels "$out/consumer-$what.ppm" "$out/ref64.ppm"; then
             ok "$what: the consumer on rt::core renders the same pixels as rt"
         else
             bad "$what: the consumer failed or differs from rt"
@@ -114,10 +118,8 @@ target_link_libraries(consumer PRIVATE rt::core)
 rt_add_scene(consumer balls-1.nff ${SCENE_ARGS})
 END
     b="$out/scene-consumer-$what"
-    if log "scene-consumer-$what" cmake -S "$src" -B "$b" -DCMAKE_PREFIX_PATH="$p" &&
-        log "scene-consumer-$what-build" cmake --build "$b"; then
-        if "$b/consumer" >"$out/scene-consumer-$what.ppm" &&
-            "$rt" compare "$out/scene-consumer-$what.ppm" "$out/ref.ppm" --max-error 0 >/dev/null; then
+    if cmake_project "scene-consumer-$what" "$src" "$p"; then
+        if "$b/consumer" >"$out/scene-consumer-$what.ppm" && same_pixels "$out/scene-consumer-$what.ppm" "$out/ref.ppm"; then
             ok "$what: an outside project's rt_add_scene (find_package, the installed rt-scenec) renders $SCENE as rt --fixed, byte for byte"
         else
             bad "$what: the rt_add_scene consumer failed or differs from rt --fixed"
@@ -138,7 +140,7 @@ END
     if "$p/bin/rt-scenec" "$src/balls-1.nff" -o "$c/scene_data.c" --header "$c/scene_data.h" &&
         log "scene-cc-$what" ${CC:-cc} -std=c11 -Wall -Wextra -Wundef -Werror -I"$p/include/rt" -I"$p/include/rt/internal" -I"$c" \
             -o "$c/consumer" "$c/scene_data.c" "$src/main.c" "$src/out_host.c" "$p/lib/librt_core.a" &&
-        "$c/consumer" >"$c/out.ppm" && "$rt" compare "$c/out.ppm" "$out/ref.ppm" --max-error 0 >/dev/null; then
+        "$c/consumer" >"$c/out.ppm" && same_pixels "$c/out.ppm" "$out/ref.ppm"; then
         ok "$what: the installed rt-scenec's tables compile with cc against the installed headers alone and render as rt --fixed"
     else
         bad "$what: the installed rt-scenec's tables did not compile, link or render as rt --fixed with the installed files ($(tail -3 "$out/scene-cc-$what.log" 2>/dev/null))"
