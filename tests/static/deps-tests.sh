@@ -78,6 +78,21 @@ stub() { env PATH="$PWD/$OUT/bin${NPM:+:$PWD/$OUT/npm}" "$@" 2>&1; }
 has() { t=$1; shift; for w; do printf '%s\n' "$t" | tr ' ' '\n' | grep -qxF "$w" || return 1; done; }
 # lacks TEXT PATTERN: no word of the text matches the pattern (grep -E)
 lacks() { ! printf '%s\n' "$1" | tr ' ' '\n' | grep -qE "$2"; }
+# fails_saying WHAT PATTERN...: the run before ($out, its exit $status)
+# failed, and its output has a line matching each pattern (grep); one
+# check, its line the first pattern's line
+fails_saying() {
+    _what=$1
+    shift
+    if [ "$status" -eq 0 ]; then
+        bad "$_what: exit 0: $out"
+        return
+    fi
+    for _p; do
+        printf '%s\n' "$out" | grep -q -- "$_p" || { bad "$_what: exit $status, no line '$_p': $out"; return; }
+    done
+    ok "$_what: exit $status, $(printf '%s\n' "$out" | grep -m1 -- "$1" | cut -c1-100)"
+}
 not_run='^(clang|valgrind|cppcheck|cmake|python3|socat|libclang-rt-dev|libtsan2|gcc-riscv64-unknown-elf|qemu-system-misc|nodejs|npm|rp2040js.*)$'
 
 # the package sets, through the Makefile as a user runs it
@@ -133,34 +148,25 @@ fi
 # a failing apt-get: the package, the command, what to do, exit 1
 out=$(APT_FAIL=qemu-system-arm ENSURE_DEPS_FOR='make run (BOARD=mps2-an385)' stub sh tools/ensure-deps.sh run)
 status=$?
-if [ $status -ne 0 ] &&
-    printf '%s\n' "$out" | grep -qxF "ensure-deps: could not install qemu-system-arm, needed by make run (BOARD=mps2-an385): E: Unable to locate package qemu-system-arm" &&
-    printf '%s\n' "$out" | grep -q 'what to do: run `apt-get update`'; then
-    ok "apt-get fails: exit $status, $(printf '%s\n' "$out" | grep 'could not install')"
-else
-    bad "apt-get fails: exit $status: $out"
-fi
+fails_saying "apt-get fails" \
+    '^ensure-deps: could not install qemu-system-arm, needed by make run (BOARD=mps2-an385): E: Unable to locate package qemu-system-arm$' \
+    'what to do: run `apt-get update`'
 
 # no mirror: every package named, and apt-get update's warning
 out=$(APT_OFFLINE=1 stub sh tools/ensure-deps.sh run)
 status=$?
-if [ $status -ne 0 ] &&
-    printf '%s\n' "$out" | grep -q "^ensure-deps: could not install gcc make binutils gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm, needed by make run: E: Unable to locate package" &&
-    printf '%s\n' "$out" | grep -q "^ensure-deps: apt-get update had failed before: W: Failed to fetch"; then
-    ok "no mirror: exit $status, every package named, $(printf '%s\n' "$out" | grep 'update had failed' | cut -c1-80)..."
-else
-    bad "no mirror: exit $status: $out"
-fi
+fails_saying "no mirror (every package named)" "^ensure-deps: apt-get update had failed before: W: Failed to fetch" \
+    "^ensure-deps: could not install gcc make binutils gcc-arm-none-eabi libnewlib-arm-none-eabi qemu-system-arm, needed by make run: E: Unable to locate package"
 
 # not root and no sudo: says so, exit 1, no apt-get
 : >"$STUB_LOG"
 out=$(STUB_UID=1000 stub sh tools/ensure-deps.sh run)
 status=$?
-if [ $status -ne 0 ] && [ ! -s "$STUB_LOG" ] &&
-    printf '%s\n' "$out" | grep -q "^ensure-deps: could not install .*qemu-system-arm, needed by make run: installing needs root, and there is no sudo"; then
-    ok "not root, no sudo: exit $status, $(printf '%s\n' "$out" | grep 'could not' | cut -d: -f3-)"
+if [ -s "$STUB_LOG" ]; then
+    bad "not root, no sudo: apt-get ran: $(cat "$STUB_LOG")"
 else
-    bad "not root, no sudo: exit $status: $out; $(cat "$STUB_LOG")"
+    fails_saying "not root, no sudo" \
+        "^ensure-deps: could not install .*qemu-system-arm, needed by make run: installing needs root, and there is no sudo"
 fi
 
 # a failing npm ci: once more with the system's certificates, then
@@ -179,16 +185,10 @@ else
 fi
 out=$(NPM=1 ENSURE_DEPS_FOR='make run (BOARD=pico)' stub sh tools/ensure-deps.sh run gcc-arm-none-eabi nodejs)
 status=$?
-if [ $status -ne 0 ] &&
-    printf '%s\n' "$out" | grep -q '^ensure-deps: could not install rp2040js@1.4.1 (npm ci in tools/emu/pico), needed by make run (BOARD=pico): npm error' &&
-    printf '%s\n' "$out" | grep -q 'SELF_SIGNED_CERT_IN_CHAIN' &&
-    printf '%s\n' "$out" | grep -q 'NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt' &&
-    printf '%s\n' "$out" | grep -q 'NODE_OPTIONS=--use-openssl-ca' &&
-    printf '%s\n' "$out" | grep -q 'npm config set cafile'; then
-    ok "npm ci fails: exit $status, $(printf '%s\n' "$out" | grep 'could not install' | cut -c1-90)..., NODE_EXTRA_CA_CERTS, cafile"
-else
-    bad "npm ci fails: exit $status: $out"
-fi
+fails_saying "npm ci fails (NODE_EXTRA_CA_CERTS, cafile)" \
+    '^ensure-deps: could not install rp2040js@1.4.1 (npm ci in tools/emu/pico), needed by make run (BOARD=pico): npm error' \
+    'SELF_SIGNED_CERT_IN_CHAIN' 'NODE_EXTRA_CA_CERTS=/etc/ssl/certs/ca-certificates.crt' 'NODE_OPTIONS=--use-openssl-ca' \
+    'npm config set cafile'
 
 out=$(stub sh tools/ensure-deps.sh build 2>&1)
 status=$?
