@@ -137,6 +137,24 @@ static double scratch[(2 * (W * 8 + 1) + 9 * 9) * 3]; /* the larger of SPD's and
 static uint32_t splits[2][SPLIT_WORDS], splits_vp[SPLIT_WORDS]; /* each backend's; a viewport's */
 static rt_stats_t split_stats[2];                                  /* each backend's recording */
 
+/* How many of the n option sets `be` refuses before any flush, with a
+ * message that contains `says` ("": any message); a set it takes is
+ * printed, as bad WHAT options k. */
+static int refused_count(const rt_backend_t *be, const rt_render_opts_t *bad, int n, const char *says, const char *bn,
+                         const char *what, rt_error_t *err)
+{
+    rt_stats_t st = { 0 };
+    int refused = 0;
+    for (int k = 0; k < n; k++) {
+        sink_init(&got, 0, 4, true);
+        int rc = be->render(&bad[k], &got.sink, &st, err);
+        refused += rc == -1 && got.flushes == 0 && err->msg[0] != '\0' && strstr(err->msg, says) != NULL;
+        if (rc != -1)
+            printf("        %s: bad %s options %d: status %d\n", bn, what, k, rc);
+    }
+    return refused;
+}
+
 int main(void)
 {
     size_t len;
@@ -278,12 +296,7 @@ int main(void)
                 bad[4].viewport = (rt_viewport_t){ 0, 4, 8, 8 };
                 bad[5].viewport = (rt_viewport_t){ 0, 0, 12, 8 };
                 bad[6].viewport = (rt_viewport_t){ 0, 0, 8, 12 };
-                int refused = 0;
-                for (int k = 0; k < 7; k++) {
-                    sink_init(&got, 0, 4, true);
-                    rc = be->render(&bad[k], &got.sink, &st, &err);
-                    refused += rc == -1 && got.flushes == 0 && strstr(err.msg, "progress") != NULL;
-                }
+                int refused = refused_count(be, bad, 7, "progress", bn, "progressive", &err);
                 CHECK(refused == 7, "%s: %d of 7 bad progressive options refused before any flush (last: '%s')", bn,
                       refused, err.msg);
             }
@@ -327,14 +340,7 @@ int main(void)
             bad[3].spp = 2;
             bad[4].aa_levels = RT_AA_MAX_LEVELS + 1;
             bad[5].spp = RT_AA_MAX_SPP + 1;
-            int refused = 0;
-            for (int k = 0; k < 6; k++) {
-                sink_init(&got, 0, 4, true);
-                rc = be->render(&bad[k], &got.sink, &st, &err);
-                refused += rc == -1 && got.flushes == 0 && err.msg[0] != '\0';
-                if (rc != -1)
-                    printf("        %s: bad anti-aliasing options %d: status %d\n", bn, k, rc);
-            }
+            int refused = refused_count(be, bad, 6, "", bn, "anti-aliasing", &err);
             CHECK(refused == 6, "%s: %d of 6 bad anti-aliasing options refused before any flush (last: '%s')", bn,
                   refused, err.msg);
         }
@@ -404,14 +410,7 @@ int main(void)
             bad[2].aa_splits = NULL;
             bad[3].aa_splits_words = SPLIT_WORDS - 1;
             bad[4].aa_splits_mode = RT_AA_SPLITS_REPLAY + 1;
-            int refused = 0;
-            for (int k = 0; k < 5; k++) {
-                sink_init(&got, 0, 4, true);
-                rc = be->render(&bad[k], &got.sink, &st, &err);
-                refused += rc == -1 && got.flushes == 0 && err.msg[0] != '\0';
-                if (rc != -1)
-                    printf("        %s: bad split options %d: status %d\n", bn, k, rc);
-            }
+            int refused = refused_count(be, bad, 5, "", bn, "split", &err);
             CHECK(refused == 5, "%s: %d of 5 bad split options refused before any flush (last: '%s')", bn, refused,
                   err.msg);
         }
