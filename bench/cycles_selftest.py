@@ -7,7 +7,8 @@ Cortex-M0 microbit, SiFive E31 sifive_e), runs cycles.py with --from-symbol
 on each hand-counted function and checks the instruction count and mix
 exactly, a few cycle figures against the model worked by hand, and that the
 log's special cases (blocks re-translated around I/O, blocks stopped by the
-icount budget) were met. Prints 'N passed, N failed'; exits 1 on a failure.
+icount budget) were met. Prints 'cycles-selftest: N passed, M failed'
+(tests/lib/check.py); exits 1 on a failure.
 
     bench/cycles_selftest.py [--n N]
 """
@@ -22,6 +23,8 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SRC = os.path.join(ROOT, "bench", "cycles-tests")
 OUT = os.path.join(ROOT, "build", "cycles-selftest")
 CYCLES = os.path.join(ROOT, "bench", "cycles.py")
+sys.path.insert(0, os.path.join(ROOT, "tests", "lib"))
+from check import check, summary  # noqa: E402  (the tests' harness)
 
 # name -> (machine, compiler flags, defines)
 ARM = ["arm-none-eabi-gcc", "-mthumb", "-nostdlib", "-T", os.path.join(SRC, "arm.ld"), "-DRAM_TOP=0x20004000"]
@@ -85,17 +88,7 @@ def main():
     ap.add_argument("--n", type=int, default=20000, help="loop iterations (enough to meet icount budget stops)")
     args = ap.parse_args()
     os.makedirs(OUT, exist_ok=True)
-    passed = failed = 0
     stops = rewinds = 0
-
-    def check(ok, what):
-        nonlocal passed, failed
-        if ok:
-            passed += 1
-            print("  ok    " + what)
-        else:
-            failed += 1
-            print("  FAIL  " + what)
 
     for board, (machine, cc, src) in BOARDS.items():
         qemu = "qemu-system-riscv32" if board.startswith("e31") else "qemu-system-arm"
@@ -140,8 +133,7 @@ def main():
                   board, d["instructions"], d["excluded_instructions"], total - 2 * args.n, 2 * args.n))
     check(rewinds > 0, "blocks re-translated around I/O were met (%d rewinds)" % rewinds)
     check(stops > 0, "blocks stopped by the icount budget were met (%d)" % stops)
-    print("%d passed, %d failed" % (passed, failed))
-    sys.exit(1 if failed else 0)
+    sys.exit(summary("cycles-selftest"))
 
 
 if __name__ == "__main__":

@@ -13,6 +13,9 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "lib"))
+from check import check, summary  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RT = os.path.join(ROOT, "build", "stress", "rt")
 FUZZ = os.path.join(ROOT, "build", "stress", "test_rayfuzz")
@@ -380,12 +383,10 @@ def main():
     for case in (scale_sweep, distant, grazing, acne, materials, recursion, degenerate, fuzz):
         case()
     w = max(len(r[0]) for r in rows)
-    print("%-*s  %-4s  %-9s  %-12s  %-11s  %s" % (w, "case", "ok", "max err", ">8/255 px", "saturations", "detail"))
+    print("        %-*s  %-9s  %-12s  %-11s  %s" % (w, "case", "max err", ">8/255 px", "saturations", "detail"))
     for name, ok, note, maxe, over, sat in rows:
-        print("%-*s  %-4s  %-9s  %-12s  %-11s  %s" % (w, name, "ok" if ok else "FAIL", maxe, over, sat, note))
-    passed = sum(1 for r in rows if r[1])
-    print("stress%s: %d passed, %d failed" % ("-quick" if QUICK else "", passed, len(rows) - passed))
-    return 0 if passed == len(rows) else 1
+        check(ok, "%-*s  %-9s  %-12s  %-11s  %s" % (w, name, maxe, over, sat, note))
+    return summary("stress-quick" if QUICK else "stress")
 
 
 if __name__ == "__main__":

@@ -38,18 +38,9 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "tests", "lib"))
+from check import check, summary  # noqa: E402
 RT = sys.argv[1] if len(sys.argv) > 1 else "build/host/rt"
-passed = failed = 0
-
-
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-        print("  ok    " + what)
-    else:
-        failed += 1
-        print("  FAIL  " + what)
 
 
 def anchor(title):
@@ -277,5 +268,4 @@ check(not same, "no bench table has a build variant's row equal to the board's o
 with open("README.md") as f:
     lines = sum(1 for _ in f)
 check(lines <= 250, "README.md: %d lines (at most 250)" % lines)
-print("docs-check: %d passed, %d failed" % (passed, failed))
-sys.exit(1 if failed else 0)
+sys.exit(summary("docs-check"))
