@@ -19,6 +19,9 @@ own files; platform/ (the ports) uses include/, platform/ and, of
 app/firmware/, only sink.h (what a display driver implements); src/
 uses none of them. platform/ holds ports only: C, assembler, linker
 scripts and make fragments, no scripts or emulators (tools/).
+tests/ runs from one list: every entry of tests/suites.list names a file
+that exists, and every suite file under tests/ is listed or used by a
+listed one.
 Prints the dependencies and "layers: N passed, M failed"."""
 import glob
 import os
@@ -26,19 +29,13 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'lib'))
+from check import check, summary  # noqa: E402
+
 # rank of each folder of src/: a file may use its own folder and lower ranks
 RANK = {'': 0, 'numeric': 1, 'geometry': 2, 'reader': 3, 'tracer': 3}
 
 objdir = sys.argv[1] if len(sys.argv) > 1 else 'build/asan/fixed'
-failed = []
-checks = 0
-
-def check(ok, text):
-    global checks
-    checks += 1
-    print('  %s  %s' % ('ok  ' if ok else 'FAIL', text))
-    if not ok:
-        failed.append(text)
 
 def folder(name):
     return os.path.dirname(name)
@@ -174,5 +171,41 @@ others = sorted(d for d in glob.glob('platform/*/') if d.rstrip('/') not in boar
 check(boards and not others, 'every folder of platform/ is a board (board.mk) or arch/: %d boards%s' %
       (len(boards), ', not ' + ' '.join(others) if others else ''))
 
-print('layers: %d passed, %d failed' % (checks - len(failed), len(failed)))
-sys.exit(1 if failed else 0)
+# tests/ by kind, run from one list: every entry of tests/suites.list names
+# a file that exists (a unit test, $B/test_NAME, its tests/unit/test_NAME.c
+# or the Makefile's test_NAME_SRC), and every suite file under tests/
+# (*-tests.sh, *-test.sh, test_*.c) is listed or used by a listed one (its
+# name in that one's text): none is left out of make test unseen
+makefile = open('Makefile').read()
+listed, entries, bad_entries = [], 0, []
+with open('tests/suites.list') as f:
+    for n, line in enumerate(f, 1):
+        words = line.split('#', 1)[0].split()
+        if not words:
+            continue
+        entries += 1
+        word = next((w for w in words if w != 'python3'), words[0])
+        if word.startswith('$B/'):
+            name = word[3:]
+            source = 'tests/unit/%s.c' % name
+            if os.path.isfile(source):
+                listed.append(source)
+            elif not re.search(r'^%s_SRC\s*=' % re.escape(name), makefile, re.M):
+                bad_entries.append('%d: %s (no %s, no %s_SRC in the Makefile)' % (n, word, source, name))
+        elif os.path.isfile(word):
+            listed.append(word)
+        else:
+            bad_entries.append('%d: %s (no such file)' % (n, word))
+check(listed and not bad_entries, 'tests/suites.list: %d entries, each names a file that exists%s' %
+      (entries,
+       ': not ' + ', '.join(bad_entries) if bad_entries else ''))
+texts = {p: open(p, errors='replace').read() for p in listed}
+suite_files = sorted(p for p in glob.glob('tests/**/*', recursive=True)
+                     if re.search(r'(-tests?\.sh|/test_[^/]*\.c)$', p))
+unlisted = [p for p in suite_files if p not in texts and
+            not any(os.path.splitext(os.path.basename(p))[0] in t for t in texts.values())]
+check(suite_files and not unlisted, '%d suite files under tests/ (*-tests.sh, *-test.sh, test_*.c), each listed in '
+      'tests/suites.list or used by a listed one%s' %
+      (len(suite_files), ': not ' + ', '.join(unlisted) if unlisted else ''))
+
+sys.exit(summary('layers'))
