@@ -221,10 +221,13 @@ static int render_usage_error(const char *fmt, const char *arg)
 }
 
 /* arg as a count 1..hi: 0 with *out set, or the usage error for --name */
-static int count_arg(const char *name, const char *arg, long hi, long *out)
+static int count_arg(const char *name, const char *arg, long hi, unsigned *out)
 {
-    if (parse_uint(arg, 1, hi, out))
+    long n;
+    if (parse_uint(arg, 1, hi, &n)) {
+        *out = (unsigned)n;
         return 0;
+    }
     char msg[96];
     snprintf(msg, sizeof msg, "--%s: expected a number from 1 to %ld, got '%%s'", name, hi);
     return render_usage_error(msg, arg);
@@ -281,7 +284,7 @@ static int cmd_render(int argc, char **argv)
     report_format_t stats_format = REPORT_TEXT;
 
     opterr = 0;
-    int c;
+    int c, usage;
     while ((c = getopt_long(argc, argv, ":ho:", render_options, NULL)) != -1) {
         switch (c) {
         case 'o':
@@ -374,10 +377,9 @@ static int cmd_render(int argc, char **argv)
             break;
         }
         case OPT_SPP: {
-            long n;
-            int st = count_arg("spp", optarg, RT_AA_MAX_SPP, &n);
-            if (st != 0)
-                return st;
+            unsigned n;
+            if ((usage = count_arg("spp", optarg, RT_AA_MAX_SPP, &n)) != 0)
+                return usage;
             opts.spp = (uint8_t)n;
             break;
         }
@@ -407,25 +409,17 @@ static int cmd_render(int argc, char **argv)
             opts.adaptive_milli = (uint16_t)(v * 1000 + 0.5);
             break;
         }
-        case OPT_THREADS: {
-            long n;
-            int st = count_arg("threads", optarg, RT_MAX_WORKERS, &n);
-            if (st != 0)
-                return st;
-            threads = (unsigned)n;
+        case OPT_THREADS:
+            if ((usage = count_arg("threads", optarg, RT_MAX_WORKERS, &threads)) != 0)
+                return usage;
             break;
-        }
         case OPT_PROGRESSIVE:
             opts.progressive = RT_PROGRESSIVE_ALL;
             break;
-        case OPT_PROGRESSIVE_PASS: {
-            long n;
-            int st = count_arg("progressive-pass", optarg, RT_PROGRESSIVE_PASSES, &n);
-            if (st != 0)
-                return st;
-            upto_pass = (unsigned)n;
+        case OPT_PROGRESSIVE_PASS:
+            if ((usage = count_arg("progressive-pass", optarg, RT_PROGRESSIVE_PASSES, &upto_pass)) != 0)
+                return usage;
             break;
-        }
         case OPT_QUIET:
             quiet = true;
             break;
