@@ -21,16 +21,16 @@
 #    target is not met there).
 RT=${1:-build/host/rt}
 OUT=build/test-board-aa
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/boards/board-case.sh
 . tests/boards/budgets.sh
 scene_file() { [ -f scenes/spd/$1.nff ] && echo scenes/spd/$1.nff || echo scenes/$1.nff; }
-# fw NAME [make variables]: build and run (image $OUT/NAME-board.png, report $OUT/NAME.report)
+# fw NAME [make variables]: build and run, one sample a pixel unless the
+# variables say otherwise (image $OUT/NAME-board.png, report
+# $OUT/NAME.report; board_fw: the caller counts)
 fw() {
     n=$1
     shift
-    make -s -j2 firmware AA=0 "$@" >"$OUT/$n.build" 2>&1 &&
-        make -s board-run AA=0 "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
+    board_fw $n AA=0 "$@"
 }
 value() { awk -v k="$1" '$1 == k { print $2 }' "$2"; }
 

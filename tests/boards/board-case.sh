@@ -1,12 +1,14 @@
 # board-case.sh - the steps the board suites share: build a firmware, run
 # it on its board, compare what it drew and reported with rt's. Sourced
-# after tests/lib/check.sh, with RT (the host rt) and OUT (the suite's
-# folder) set; NAME names a case's files in $OUT.
+# with RT (the host rt) and OUT (the suite's folder) set: it makes OUT and
+# sources tests/lib/check.sh. NAME names a case's files in $OUT.
 #   board_build NAME MAKE-VARS...  make firmware (log $OUT/NAME.build)
 #   board_run NAME MAKE-VARS...    make board-run (image $OUT/NAME-board.png,
 #                                  report $OUT/NAME.report)
 #       each counts one failure naming the step, and returns 1, when the
 #       step fails; nothing when it passes (the checks below count that)
+#   board_fw NAME MAKE-VARS...     both, counting nothing: for a caller
+#                                  that counts its own check (1: either failed)
 #   board_vs_host NAME WHAT NOTE RT-ARGS...
 #       render the host's image, rt RT-ARGS --threads 1 --quiet --stats
 #       (one thread: the frame in one call of the core, as on the board;
@@ -16,6 +18,14 @@
 #       equal to rt --stats (only the ray counts on a frame split between
 #       cores: each band is a render of its own)
 #   report_val KEY REPORT          the value of KEY in a report (its last)
+mkdir -p "$OUT"
+. tests/lib/check.sh
+board_fw() {
+    _bc_n=$1
+    shift
+    make -s -j2 firmware "$@" >"$OUT/$_bc_n.build" 2>&1 &&
+        make -s board-run "$@" RUN_OUT="$OUT/$_bc_n-board.png" RUN_RT="$RT" >"$OUT/$_bc_n.report" 2>&1
+}
 board_build() {
     _bc_n=$1
     shift

@@ -8,8 +8,6 @@
 # (The capture check needs the showpiece case's dump.)
 RT=${1:-build/host/rt}
 OUT=build/test-board-oled
-mkdir -p "$OUT"
-. tests/lib/check.sh
 . tests/boards/board-case.sh
 
 echo "board tests: QEMU lm3s6965evb (OLED) against the hosted fixed build in l4"

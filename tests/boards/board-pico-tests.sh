@@ -58,8 +58,6 @@
 #    panel with every other pixel black (the whole panel checked).
 RT=${1:-build/host/rt}
 OUT=build/test-pico
-mkdir -p "$OUT"
-. tests/lib/check.sh
 . tests/boards/board-case.sh
 val() { report_val "$@"; }
 elf_of() { make -s board-info BOARD=pico "$@" | sed -n 's/.*elf=\([^ ]*\)\.elf.*/\1/p'; }

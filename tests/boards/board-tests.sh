@@ -23,19 +23,15 @@
 # defaults to the board's BOARD_RUN_AA, 3 levels here.
 RT=${1:-build/host/rt}
 OUT=build/test-board
-mkdir -p "$OUT"
-. tests/lib/check.sh
-. tests/boards/budgets.sh
 . tests/boards/board-case.sh
+. tests/boards/budgets.sh
 fwdir() { make -s print-fwdir SCENE="$(scene_file $1)" SIZE=$2 DEPTH=5 AA=0; }
-# fw NAME [make variables]: build the firmware (log in $OUT/NAME.build),
-# run it (image $OUT/NAME-board.png, report $OUT/NAME.report); the caller
-# counts the check
+# fw NAME [make variables]: build the firmware and run it, one sample a
+# pixel unless the variables say otherwise (board_fw: the caller counts)
 fw() {
     n=$1
     shift
-    make -s -j2 firmware AA=0 "$@" >"$OUT/$n.build" 2>&1 &&
-        make -s board-run AA=0 "$@" RUN_OUT="$OUT/$n-board.png" RUN_RT="$RT" >"$OUT/$n.report" 2>&1
+    board_fw $n AA=0 "$@"
 }
 
 echo "board tests: QEMU mps2-an385 against the hosted fixed build"

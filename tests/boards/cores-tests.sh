@@ -13,16 +13,15 @@
 #  - both stacks' guards intact.
 RT=${1:-build/host/rt}
 OUT=build/test-cores
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/boards/board-case.sh
 B=mps2-an521
 val() { awk -v k="$2" '$1 == k { print $2 }' "$1"; }
-# run NAME [make variables]: build and run (image $OUT/NAME.png, report $OUT/NAME.report)
+# run NAME [make variables]: build and run on $B (image $OUT/NAME-board.png,
+# report $OUT/NAME.report; board_fw: the caller counts)
 run() {
     rn=$1
     shift
-    make -s -j2 firmware AA=0 BOARD=$B "$@" >"$OUT/$rn.build" 2>&1 &&
-        make -s board-run AA=0 BOARD=$B "$@" RUN_OUT="$OUT/$rn.png" RUN_RT="$RT" >"$OUT/$rn.report" 2>&1
+    board_fw $rn AA=0 BOARD=$B "$@"
 }
 stream_of() { eval "$(make -s board-info AA=0 BOARD=$B "$@")"; echo "${elf%.elf}.stream"; }
 
@@ -35,8 +34,8 @@ for s in scenes/spd/balls-2.nff scenes/spd/rings-1.nff scenes/showpiece.nff; do
         continue
     fi
     "$RT" $s -o "$OUT/$n-host.png" --fixed --size 64x64 --depth 5 --quiet
-    if "$RT" compare "$OUT/$n-2.png" "$OUT/$n-1.png" --max-error 0 >/dev/null &&
-       "$RT" compare "$OUT/$n-2.png" "$OUT/$n-host.png" --max-error 0 >/dev/null; then
+    if "$RT" compare "$OUT/$n-2-board.png" "$OUT/$n-1-board.png" --max-error 0 >/dev/null &&
+       "$RT" compare "$OUT/$n-2-board.png" "$OUT/$n-host.png" --max-error 0 >/dev/null; then
         ok "$n: two cores == one core == host fixed (byte-identical)"
     else
         bad "$n: two-core image differs from one core's or the host's"
@@ -93,7 +92,7 @@ fi
 vars="SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5"
 if make -s board-run AA=0 BOARD=$B $vars QEMU_ACCEL="-accel tcg,thread=multi" RUN_OUT="$OUT/multi.png" RUN_RT="$RT" \
        >"$OUT/multi.report" 2>&1 &&
-   "$RT" compare "$OUT/multi.png" "$OUT/balls-2-1.png" --max-error 0 >/dev/null; then
+   "$RT" compare "$OUT/multi.png" "$OUT/balls-2-1-board.png" --max-error 0 >/dev/null; then
     ok "balls-2 under -accel tcg,thread=multi: the same image (bands $(val "$OUT/multi.report" core0_bands) + $(val "$OUT/multi.report" core1_bands))"
 else
     bad "balls-2 under -accel tcg,thread=multi: $(tail -2 "$OUT/multi.report")"

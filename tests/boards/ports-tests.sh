@@ -17,8 +17,6 @@
 # host: its identity is what the two libraries give on this scene.
 RT=${1:-build/host/rt}
 OUT=build/test-ports
-mkdir -p "$OUT"
-. tests/lib/check.sh
 . tests/boards/board-case.sh
 SOFT_FLOAT='^(__aeabi_[fd](add|sub|mul|div|cmp.*|2.*)|__aeabi_[ui]?[lu]?2[fd]|__aeabi_[fd]2.*|__(add|sub|mul|div)[sd]f3|__float[a-z]*[sd]f|__fix[a-z]*[sd]f[a-z]*|__extendsfdf2|__truncdfsf2|__(eq|ne|lt|le|gt|ge|un)[sd]f2)$'
 HEAP='^(malloc|free|calloc|realloc|_sbrk|sbrk|_malloc_r)$'

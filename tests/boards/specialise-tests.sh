@@ -18,16 +18,8 @@
 #    its run measured.
 RT=${1:-build/host/rt}
 OUT=build/test-specialise
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/boards/board-case.sh
 
-# run_one NAME VARS...: build and run, the report in $OUT/NAME.report
-run_one() {
-    one=$1
-    shift
-    make -s -j2 firmware "$@" >"$OUT/$one.build" 2>&1 &&
-        make -s board-run "$@" RUN_OUT="$OUT/$one.png" RUN_RT="$RT" >"$OUT/$one.report" 2>&1
-}
 # run_exact NAME VARS...: make run, which also renders the exact (double)
 # build at the same samples in the same format ($OUT/NAME-exact.png)
 run_exact() {
@@ -48,7 +40,7 @@ value() { awk -v k="$2" '$1 == k { print $2 }' "$OUT/$1.report"; }
 pair() {
     n=$1 key=$2 limit=$3 budget=$4
     shift 4
-    if ! run_one "$n-generic" "$@" SPECIALISE=0 || ! run_exact "$n-spec" "$@" SPECIALISE=1; then
+    if ! board_fw "$n-generic" "$@" SPECIALISE=0 || ! run_exact "$n-spec" "$@" SPECIALISE=1; then
         bad "$n: build or run failed: $(tail -3 "$OUT/$n-spec.build" "$OUT/$n-spec.report" 2>/dev/null | tr '\n' ' ')"
         return
     fi
@@ -61,7 +53,7 @@ pair() {
     else
         exact="under $floor dB: $exact"
     fi
-    if ! cmp=$("$RT" compare "$OUT/$n-spec.png" "$OUT/$n-generic.png" --max-error 0); then
+    if ! cmp=$("$RT" compare "$OUT/$n-spec.png" "$OUT/$n-generic-board.png" --max-error 0); then
         bad "$n: the specialised image differs from the generic one: $cmp"
     elif [ -n "$exact" ]; then
         bad "$n: the specialised image against the exact build at the same samples: $exact"

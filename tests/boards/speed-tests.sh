@@ -10,21 +10,13 @@
 # are timed: fixed and float against the exact double build.
 RT=${1:-build/host/rt}
 OUT=build/test-speed
-mkdir -p "$OUT"
-. tests/lib/check.sh
+. tests/boards/board-case.sh
 
 # budget BOARD BACKEND SCENE SIZE DEPTH KEY MAX: build, run, KEY <= MAX
 budget() {
     n="$1-$2-$(basename "$3" .nff)-$4"
-    if ! make -s -j2 firmware AA=0 BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 >"$OUT/$n.build" 2>&1; then
-        bad "$n: firmware build failed: $(tail -3 "$OUT/$n.build")"
-        return
-    fi
-    if ! make -s board-run AA=0 BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5 RUN_OUT="$OUT/$n.png" RUN_RT="$RT" \
-        >"$OUT/$n.report" 2>&1; then
-        bad "$n: board run failed: $(tail -3 "$OUT/$n.report")"
-        return
-    fi
+    vars="AA=0 BOARD=$1 BACKEND=$2 SCENE=$3 SIZE=$4 DEPTH=$5"
+    board_build $n $vars && board_run $n $vars || return
     v=$(awk -v k="$6" '$1 == k { print $2 }' "$OUT/$n.report")
     if [ -z "$v" ]; then
         bad "$n: the report has no $6"
