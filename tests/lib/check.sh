@@ -14,6 +14,8 @@
 #                          failed" (what tests/run-all.py reads), and its
 #                          exit status: 0 only when nothing failed.
 # (the functions' own variables start with _ so that no caller's is changed)
+# tests/lib/check.py is the same harness for the Python tests: the same
+# lines, the same summary.
 pass=0 fail=0
 check() {
     _check_name=$1; shift
