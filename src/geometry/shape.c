@@ -43,7 +43,7 @@ const char *shape_init_quadric(shape_t *s, const real_t q[10], vec3_t lo, vec3_t
         real_t c[3], rad[3], k = -q[9], far = 0;
         for (int i = 0; i < 3; i++) {
             c[i] = r_div(-q[6 + i] / 2, q[i]);
-            k -= r_mul(q[6 + i] / 2, c[i]);
+            k = r_add_sat(k, -r_mul(q[6 + i] / 2, c[i])); /* far centre: k saturates; the box test keeps the quadric */
         }
         bool inside = k > 0;
         for (int i = 0; i < 3 && inside; i++) {
