@@ -20,25 +20,27 @@
 #   report_val KEY REPORT          the value of KEY in a report (its last)
 mkdir -p "$OUT"
 . tests/lib/check.sh
-board_fw() {
+# the two steps, quiet: the make's status
+make_fw() {
     _bc_n=$1
     shift
-    make -s -j2 firmware "$@" >"$OUT/$_bc_n.build" 2>&1 &&
-        make -s board-run "$@" RUN_OUT="$OUT/$_bc_n-board.png" RUN_RT="$RT" >"$OUT/$_bc_n.report" 2>&1
+    make -s -j2 firmware "$@" >"$OUT/$_bc_n.build" 2>&1
 }
-board_build() {
-    _bc_n=$1
-    shift
-    make -s -j2 firmware "$@" >"$OUT/$_bc_n.build" 2>&1 && return 0
-    bad "$_bc_n: firmware build failed: $(tail -3 "$OUT/$_bc_n.build")"
-    return 1
-}
-board_run() {
+run_fw() {
     _bc_n=$1
     shift
     rm -f "$OUT/$_bc_n-board.png"
-    make -s board-run "$@" RUN_OUT="$OUT/$_bc_n-board.png" RUN_RT="$RT" >"$OUT/$_bc_n.report" 2>&1 && return 0
-    bad "$_bc_n: board run failed: $(tail -3 "$OUT/$_bc_n.report")"
+    make -s board-run "$@" RUN_OUT="$OUT/$_bc_n-board.png" RUN_RT="$RT" >"$OUT/$_bc_n.report" 2>&1
+}
+board_fw() { make_fw "$@" && run_fw "$@"; }
+board_build() {
+    make_fw "$@" && return 0
+    bad "$1: firmware build failed: $(tail -3 "$OUT/$1.build")"
+    return 1
+}
+board_run() {
+    run_fw "$@" && return 0
+    bad "$1: board run failed: $(tail -3 "$OUT/$1.report")"
     return 1
 }
 board_vs_host() {
