@@ -28,7 +28,8 @@
 #                   host's speed-up with rt --threads 2, BVH scaling, code size
 #                   with and without pruning, every board and backend, anti-aliasing
 #                   and dithering against the pixel-area image, seconds a frame
-#                   against error on every board (its duration: docs/performance.md)
+#                   against error on every board (its duration: docs/performance.md);
+#                   make bench-STEP one of them (BENCH_STEPS), rewriting bench/STEP.md
 #   make bench-quick  a subset of the first (its duration: docs/performance.md)
 #
 # The core (src/) is compiled once per numeric backend (fixed, double,
@@ -96,7 +97,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench $(BENCH_STEPS:%=bench-%) bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -304,40 +305,69 @@ deps-image:
 	@ENSURE_DEPS_FOR='$(call DEPS_FOR,image) (BOARD=$(BOARD))' ENSURE_DEPS_EMULATOR=0 sh tools/ensure-deps.sh run \
 	    $(filter-out qemu-system-%,$(BOARD_PACKAGES))
 
-# Run time against error over the numeric configurations (bench/results.md,
-# results.csv, plot.svg), then the BVH and pruning figures.
+# make bench: every step below, in this order; make bench-STEP runs one and
+# rewrites its result file, bench/STEP.md (with .csv and .svg where it has
+# them), then records the file's freshness counts (bench/freshness.py: the
+# small runs make test measures again to tell a stale file).
+BENCH_STEPS = results threads bvh prims lib-size profile specialise pico-xip pico-frames \
+              boards cores aa filter scenes time
 bench: deps
 	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
+	@set -e; for s in $(BENCH_STEPS); do $(MAKE) --no-print-directory bench-$$s; echo; done
+
+# Run time against error over the numeric configurations (bench/results.md,
+# results.csv, plot.svg).
+bench-results: deps
+	$(MAKE) -j2 build/host/rt $(foreach c,$(CONFIGS),build/cfg-$(c)/rt)
 	python3 bench/run_bench.py --board $(BOARD)
-	@echo
+	python3 bench/freshness.py --write bench/results.md
+bench-threads: deps build/host/rt
 	python3 bench/threads_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/threads.md
+bench-bvh: deps
 	@BOARD=$(BOARD) sh bench/keep.sh bench/bvh.md "BVH and pruning" sh bench/bvh-bench.sh
-	@echo
+	python3 bench/freshness.py --write bench/bvh.md
+bench-prims: deps
 	@sh bench/keep.sh bench/prims.md "One intersection test per primitive on the board" sh bench/prims-bench.sh
-	@echo
+	python3 bench/freshness.py --write bench/prims.md
+bench-lib-size: deps
 	@sh bench/keep.sh bench/lib-size.md "The core's footprint as a library" sh bench/lib-size.sh
-	@echo
+	python3 bench/freshness.py --write bench/lib-size.md
+bench-profile: deps
 	@sh bench/keep.sh bench/profile.md "Where balls-2's instructions go on mps2-an385 (fixed, 64x64)" \
 	    $(MAKE) -s profile BOARD=mps2-an385 BACKEND=fixed SCENE=scenes/spd/balls-2.nff SIZE=64x64 DEPTH=5 AA=0
-	@echo
-	@sh bench/keep.sh bench/specialise.md "Firmware built for its scene (SPECIALISE=1) against the generic firmware" sh bench/specialise-bench.sh
-	@echo
-	@sh bench/keep.sh bench/pico-xip.md "The Pico's flash reads in the render, through a model of the XIP cache" sh bench/pico-xip.sh
-	@echo
-	@sh bench/keep.sh bench/pico-frames.md "The Pico's frame at 320x240 on one core and two, scanline order and progressive display" sh bench/pico-frames.sh
-	@echo
+	python3 bench/freshness.py --write bench/profile.md
+bench-specialise: deps
+	@sh bench/keep.sh bench/specialise.md "Firmware built for its scene (SPECIALISE=1) against the generic firmware" \
+	    sh bench/specialise-bench.sh
+	python3 bench/freshness.py --write bench/specialise.md
+bench-pico-xip: deps
+	@sh bench/keep.sh bench/pico-xip.md "The Pico's flash reads in the render, through a model of the XIP cache" \
+	    sh bench/pico-xip.sh
+	python3 bench/freshness.py --write bench/pico-xip.md
+bench-pico-frames: deps
+	@sh bench/keep.sh bench/pico-frames.md \
+	    "The Pico's frame at 320x240 on one core and two, scanline order and progressive display" sh bench/pico-frames.sh
+	python3 bench/freshness.py --write bench/pico-frames.md
+bench-boards: deps
 	python3 bench/boards_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/boards.md
+bench-cores: deps
 	python3 bench/cores_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/cores.md
+bench-aa: deps
 	python3 bench/aa_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/aa.md
+bench-filter: deps
 	python3 bench/filter_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/filter.md
+bench-scenes: deps
 	python3 bench/scenes_bench.py
-	@echo
+	python3 bench/freshness.py --write bench/scenes.md
+# after bench-scenes: its one-sample rows are bench/scenes.csv's
+bench-time: deps
 	python3 bench/time_bench.py
+	python3 bench/freshness.py --write bench/time.md
 
 # The README's and docs' pictures (docs/*.png but demos.png and oled.png).
 pictures: build/host/rt

@@ -160,7 +160,7 @@ check(not unsourced, "every measured figure names its bench file or test%s" %
       ("".join("\n          " + u for u in unsourced) if unsourced else ""))
 # the scripts `make bench` runs (read from the Makefile: make -n would run the sub-makes)
 with open("Makefile") as f:
-    bench_rule = re.search(r"^bench:.*?\n((?:\t.*\n)+)", f.read(), re.M).group(1)
+    bench_rule = "".join(re.findall(r"^bench(?:-[\w-]+)?:.*?\n((?:\t.*\n)+)", f.read(), re.M))
 scripts = set(re.findall(r"bench/[\w.-]+\.(?:py|sh)", bench_rule))
 sources = "".join(open(s).read() for s in scripts if os.path.exists(s)) + bench_rule
 stale = sorted(r for r in named_results if not os.path.exists(r) or os.path.basename(r) not in sources)
@@ -240,6 +240,81 @@ for i, b in enumerate(blocks):
                 disagree.append("%s %s (%s has no %s)" % (fig, q, ", ".join(own), q))
 check(checked and not disagree, "%d README figures agree with the bench files they name%s" % (
     checked, "".join("\n          " + d for d in disagree) if disagree else ""))
+
+# Seconds a frame: one price per board, backend and sampling.
+# bench/time.csv's one-sample rows are bench/scenes.csv's card rows (the
+# same instructions, cycles an instruction and cycles a pixel); each row's
+# seconds are its cycles a pixel x 76,800 pixels / its clock (a panel
+# board's scaled to 76,800), its cycles a pixel its instructions x CPI where
+# estimated; and each seconds figure of a table of the pages that names
+# bench/time.md ("board, N MHz" rows; a one-sample and an --aa 3 column)
+# is its row's, to the rounding shown.
+import csv  # noqa: E402
+PIXELS = 320 * 240
+
+
+def sig3(x):
+    return float("%.3g" % x)
+
+
+with open("bench/time.csv") as f:
+    time_rows = list(csv.DictReader(f))
+with open("bench/scenes.csv") as f:
+    card = {(r["board"], r["backend"]): r for r in csv.DictReader(f) if r["scene"] == "card"}
+priced, off = 0, []
+for r in time_rows:
+    if not r["cpp"]:
+        continue
+    priced += 1
+    k = (r["board"], r["backend"])
+    if r["sampling"] == "1 sample" and k in card:
+        for col in ("ipp", "cpi", "cpp"):
+            if r[col] != card[k][col]:
+                off.append("%s %s one sample: %s %s in bench/time.csv, %s in bench/scenes.csv" % (
+                    k + (col, r[col], card[k][col])))
+    # the CPI shown to 3 decimals: its rounding alone moves the product by ipp / 2,000
+    if r["cycles"] == "estimated" and abs(float(r["ipp"]) * float(r["cpi"]) - float(r["cpp"])) > float(r["ipp"]) / 2000 + 1:
+        off.append("%s %s %s: cycles/px %s is not instr/px %s x CPI %s" % (
+            r["board"], r["backend"], r["sampling"], r["cpp"], r["ipp"], r["cpi"]))
+    # the card frame's 76,800 pixels; another row (make run's default) its own size's
+    w, h = (int(v) for v in r["size"].split("x"))
+    want = sig3(float(r["cpp"]) * (PIXELS if r["sampling"] in ("1 sample", "aa 3") else w * h)
+                / (float(r["clock_mhz"]) * 1e6))
+    if abs(float(r["seconds"]) - want) > 1e-9 * want:
+        off.append("%s %s %s: %s s, but cycles/px x 76,800 / clock is %s s" % (
+            r["board"], r["backend"], r["sampling"], r["seconds"], want))
+by_key = {(r["board"], r["backend"], r["sampling"]): r for r in time_rows}
+shown = 0
+for page in pages:
+    with open(page) as f:
+        text = re.sub(r"```.*?```", "", f.read(), flags=re.S)
+    blocks = re.split(r"\n\s*\n", text)
+    for i, b in enumerate(blocks):
+        rows = [[c.strip() for c in line.strip().strip("|").split("|")]
+                for line in b.splitlines() if line.lstrip().startswith("|")]
+        if len(rows) < 3 or not re.match(r"^board, clock$", rows[0][0]) or "backend" not in rows[0]:
+            continue
+        cols = [(j, "aa 3" if "--aa 3" in h else "1 sample") for j, h in enumerate(rows[0]) if re.search(r"\bs\b", h)]
+        for row in rows[2:]:
+            board, mhz = re.match(r"^(\S+), ([\d.]+) MHz$", row[0]).groups()
+            for j, sampling in cols:
+                m = re.match(r"^([\d.]+) s\b", row[j])
+                if not m:
+                    continue
+                shown += 1
+                r = by_key.get((board, row[rows[0].index("backend")], sampling))
+                if not r or not r["cpp"]:
+                    off.append("%s: %s %s %s: no priced row in bench/time.csv" % (
+                        os.path.relpath(page, ROOT), board, row[1], sampling))
+                    continue
+                d = len(m.group(1).split(".")[1]) if "." in m.group(1) else 0
+                want = float(r["cpp"]) * PIXELS / (float(mhz) * 1e6)
+                if abs(round(want, d) - float(m.group(1))) > 1e-9 or r["clock_mhz"] != mhz:
+                    off.append("%s: %s at %s MHz, %s %s: %s s, but bench/time.csv's %s cycles/px give %.4g s" % (
+                        os.path.relpath(page, ROOT), board, mhz, row[1], sampling, m.group(1), r["cpp"], want))
+check(priced and shown and not off, "seconds a frame: %d bench/time.csv rows and %d figures of the pages are "
+      "cycles/px x 76,800 / clock, one price a board, backend and sampling%s" % (
+          priced, shown, "".join("\n          " + o for o in off)))
 
 # make bench-quick's duration: one place states it
 DURATION = re.compile(r"(?:<|under|about|in|takes)\s*~?\d+(?:\.\d+)?\s*(?:s\b|seconds|min\b|minutes)")
