@@ -316,6 +316,39 @@ check(priced and shown and not off, "seconds a frame: %d bench/time.csv rows and
       "cycles/px x 76,800 / clock, one price a board, backend and sampling%s" % (
           priced, shown, "".join("\n          " + o for o in off)))
 
+# Seconds in prose: a figure "N s" in a paragraph or list item that names
+# a clock ("125 MHz") and a bench file is cycles a pixel x 76,800 / clock,
+# or a count of cycles / clock, of a number of that file, to the rounding
+# shown (a time the pages measure otherwise, on the host or on the wire,
+# names no clock).
+SECONDS = re.compile(r"(?<![\w.,])(\d+(?:\.\d+)?) s\b(?! of CPU)")
+prose_off, prose_n = [], 0
+for page in pages:
+    with open(page) as f:
+        text = re.sub(r"```.*?```", "", f.read(), flags=re.S)
+    blocks = re.split(r"\n\s*\n|\n(?=\s*- )", text)
+    # a table's rows one by one (but the "board, clock" tables, checked above),
+    # each with the paragraph before the table for its files
+    items = [(row, prev) for prev, b in zip([""] + blocks, blocks) if b.lstrip().startswith("|")
+             and not b.lstrip().startswith("| board, clock") for row in b.splitlines()[2:]]
+    items += [(b, "") for b in blocks if not b.lstrip().startswith("|")]
+    for b, prev in items:
+        clocks = {float(c) * 1e6 for c in re.findall(r"(\d+(?:\.\d+)?) MHz", b)}
+        files = sorted({f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", b) if os.path.exists(f)}
+                       or {f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", prev) if os.path.exists(f)})
+        if not clocks or not files:
+            continue
+        have = set().union(*(numbers_of(f) for f in files))
+        for m in SECONDS.finditer(b):
+            prose_n += 1
+            v, d = float(m.group(1)), len(m.group(1).split(".")[1]) if "." in m.group(1) else 0
+            if not any(abs(round(n * k / hz, d) - v) < 1e-9 for n in have for hz in clocks for k in (PIXELS, 1)):
+                prose_off.append("%s: %s s is no cycles/px x 76,800 / clock (%s MHz) of %s" % (
+                    os.path.relpath(page, ROOT), m.group(1), ", ".join("%g" % (c / 1e6) for c in sorted(clocks)),
+                    ", ".join(files)))
+check(prose_n and not prose_off, "%d seconds figures in prose with a clock and a bench file are its "
+      "cycles x pixels / clock%s" % (prose_n, "".join("\n          " + o for o in prose_off)))
+
 # make bench-quick's duration: one place states it
 DURATION = re.compile(r"(?:<|under|about|in|takes)\s*~?\d+(?:\.\d+)?\s*(?:s\b|seconds|min\b|minutes)")
 places = []
