@@ -321,6 +321,32 @@ check(priced and shown and not off, "seconds a frame: %d bench/time.csv rows and
 # or a count of cycles / clock, of a number of that file, to the rounding
 # shown (a time the pages measure otherwise, on the host or on the wire,
 # names no clock).
+def cycles_of(path):
+    """the counts of cycles a file gives: its tables' and CSV's cycles
+    columns, and numbers followed by "cycles" in its text"""
+    with open(path) as f:
+        text = f.read()
+    out = {float(n.replace(",", "")) for n in re.findall(r"(\d[\d,]*)\s+(?:\w+\s+)?cycles\b", text)}
+    if path.endswith(".csv"):
+        rows = list(csv.reader(text.splitlines()))
+        cols = [i for i, h in enumerate(rows[0]) if h in ("cpp",) or "cycles" in h]
+        tables = [rows]
+    else:
+        tables = [[[c.strip() for c in line.strip().strip("|").split("|")] for line in t.splitlines()]
+                  for t in re.findall(r"(?:^\|.*\n)+", text, re.M)]
+        # a kept text (bench/keep.sh) whose first line names cycles: its counts
+        for block in re.findall(r"```\n(.*?)```", text, re.S):
+            if "cycles" in block.split("\n", 1)[0]:
+                out.update(float(n) for n in re.findall(r"(?<![\d.])\d{4,}(?![\d.])", block))
+    for t in tables:
+        cols = [i for i, h in enumerate(t[0]) if h == "cpp" or "cycles" in h]
+        for r in t[1:]:
+            for i in cols:
+                if i < len(r):
+                    out.update(float(n.replace(",", "")) for n in re.findall(r"\d[\d,]*", r[i]))
+    return out
+
+
 SECONDS = re.compile(r"(?<![\w.,])(\d+(?:\.\d+)?) s\b(?! of CPU)")
 prose_off, prose_n = [], 0
 for page in pages:
@@ -338,7 +364,7 @@ for page in pages:
                        or {f for f in re.findall(r"bench/[\w.-]+\.(?:md|csv)", prev) if os.path.exists(f)})
         if not clocks or not files:
             continue
-        have = set().union(*(numbers_of(f) for f in files))
+        have = set().union(*(cycles_of(f) for f in files))
         for m in SECONDS.finditer(b):
             prose_n += 1
             v, d = float(m.group(1)), len(m.group(1).split(".")[1]) if "." in m.group(1) else 0
