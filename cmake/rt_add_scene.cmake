@@ -29,7 +29,9 @@
 # rt_scene (-DRT_CONST_SCENE=rt_scene on rt_core) and rt_core, the tables
 # and <target> are optimised whole (INTERPROCEDURAL_OPTIMIZATION; with GCC
 # also -O3 and the firmware's unrolling limits), so the scene's counts,
-# materials and positions fold into the code. It needs PRUNE ON.
+# materials and positions fold into the code. It needs PRUNE ON. Where
+# the toolchain cannot optimise whole (_rt_ipo_check, below), the
+# configure says so in one line and the core stays generic.
 function(rt_add_scene target scene)
   cmake_parse_arguments(PARSE_ARGV 2 ARG "" "PRUNE;SPECIALISE" "")
   if(ARG_UNPARSED_ARGUMENTS)

@@ -168,6 +168,24 @@ for args in "-DRT_ARM_FLOAT_ABI=half" "-DRT_ARM_CPU=cortex-m3 -DRT_ARM_FLOAT_ABI
     fi
 done
 
+# rt.mk's float core for a Cortex-M4F, with the CPU's flags
+# docs/embedding.md gives a Make project: FPU arithmetic and the FPU's
+# square root, no call of the soft-float routines or libm (a sphere's
+# intersection, the core's square roots).
+m4flags="-mthumb -mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16"
+rtflags=$(printf 'include rt.mk\nall:\n\t@echo $(RT_CFLAGS)\n' | make -s -f - RT_DIR=. RT_BACKEND=float)
+# shellcheck disable=SC2086 # flags, one word each
+if arm-none-eabi-gcc $m4flags -O2 -Werror $rtflags -c src/geometry/sphere.c -o "$out/sphere-m4f.o"; then
+    calls=$(arm-none-eabi-nm -u "$out/sphere-m4f.o" | awk '{ print $2 }' | grep -E '^(__aeabi_f|sqrt)' | tr '\n' ' ')
+    if [ -z "$calls" ] && arm-none-eabi-objdump -d "$out/sphere-m4f.o" | grep -q 'vsqrt\.f32'; then
+        ok "rt.mk, Cortex-M4F float: FPU arithmetic and vsqrt.f32, no soft-float or libm calls (src/geometry/sphere.c)"
+    else
+        bad "rt.mk, Cortex-M4F float: src/geometry/sphere.c calls $calls(or has no vsqrt.f32)"
+    fi
+else
+    bad "rt.mk, Cortex-M4F float: src/geometry/sphere.c did not compile with $m4flags $rtflags"
+fi
+
 # GNU make with rt.mk: examples/make/Makefile, which docs/embedding.md
 # shows, in a project of this consumer's main.c and out_host.c with
 # that scene as its scene.nff, built with -Werror.

@@ -40,7 +40,6 @@ static void report_count(uint64_t count)
 int out_write(const void *p, size_t n)
 {
     static int started;
-    static size_t pixel_bytes;
     static uint64_t output; /* instructions spent writing */
     if (!started) {
         port_init();
@@ -49,7 +48,8 @@ int out_write(const void *p, size_t n)
     uint64_t t0 = port_icount_read();
     port_write(p, n);
     output += port_icount_read() - t0;
-    if (started) {
+    if (started) { /* after the header: pixels */
+        static size_t pixel_bytes;
         pixel_bytes += n;
         if (pixel_bytes == PIXEL_BYTES)
             report_count(port_icount_read() - output);
