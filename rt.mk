@@ -16,7 +16,12 @@
 #   RT_DEFS         -D flags of the configuration: give them to every file
 #                   that includes rt.h, not only the core
 #   RT_CFLAGS       what the core's files need: -std=c11 -ffreestanding,
-#                   include/ and src/ (the internal headers), $(RT_DEFS)
+#                   include/ and src/ (the internal headers), $(RT_DEFS);
+#                   with RT_BACKEND float also -ffp-contract=off
+#                   -fno-math-errno (rt --float's arithmetic: no fused
+#                   multiply-adds; sqrtf inline), as CMake's rt_core has
+#                   them (the CPU's flags, -mcpu, -mfpu, -mfloat-abi, are
+#                   the project's CFLAGS)
 #   RT_SCENEC_SRC   the scene compiler's sources (a HOST program: build it
 #                   with the host cc, $(RT_SCENEC_CFLAGS), the same
 #                   capacities as the target and $(RT_SCENEC_LDLIBS)); its
@@ -43,7 +48,8 @@ RT_INC := $(RT_DIR)/include
 RT_DEFS := $(if $(filter float,$(RT_BACKEND)),-DRT_BACKEND_FLOAT=1) \
            $(if $(filter double,$(RT_BACKEND)),-DRT_BACKEND_DOUBLE=1) \
            $(if $(RT_CONFIG_FILE),-DRT_CONFIG_FILE='"$(abspath $(RT_CONFIG_FILE))"')
-RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) -I$(RT_DIR)/src $(RT_DEFS)
+RT_CFLAGS := -std=c11 -ffreestanding $(addprefix -I,$(RT_INC)) -I$(RT_DIR)/src $(RT_DEFS) \
+             $(if $(filter float,$(RT_BACKEND)),-ffp-contract=off -fno-math-errno)
 
 RT_SCENEC_SRC := $(RT_DIR)/tools/scenec.c $(RT_DIR)/app/rt/host_io.c $(RT_SRC)
 RT_SCENEC_CFLAGS := -std=c11 -O2 -ffp-contract=off -D_POSIX_C_SOURCE=200809L -I$(RT_DIR)/include -I$(RT_DIR)/src \

@@ -29,7 +29,9 @@
 # rt_scene (-DRT_CONST_SCENE=rt_scene on rt_core) and rt_core, the tables
 # and <target> are optimised whole (INTERPROCEDURAL_OPTIMIZATION; with GCC
 # also -O3 and the firmware's unrolling limits), so the scene's counts,
-# materials and positions fold into the code. It needs PRUNE ON.
+# materials and positions fold into the code. It needs PRUNE ON. Where
+# the toolchain cannot optimise whole (_rt_ipo_check, below), the
+# configure says so in one line and the core stays generic.
 function(rt_add_scene target scene)
   cmake_parse_arguments(PARSE_ARGV 2 ARG "" "PRUNE;SPECIALISE" "")
   if(ARG_UNPARSED_ARGUMENTS)
@@ -105,19 +107,92 @@ function(rt_add_scene target scene)
   endif()
   if(ARG_SPECIALISE)
     target_compile_definitions(rt_core PRIVATE RT_CONST_SCENE=rt_scene)
-    include(CheckIPOSupported)
-    check_ipo_supported(RESULT ipo OUTPUT why LANGUAGES C)
+    _rt_ipo_check(ipo why)
     if(ipo)
       set_property(TARGET rt_core rt_scene_${target} ${target} PROPERTY INTERPROCEDURAL_OPTIMIZATION TRUE)
     else()
-      message(WARNING "rt_add_scene(${target} ...): no link-time optimisation here (${why}): the scene is read "
-                      "as a constant, but not folded into the code")
+      message(NOTICE "rt_add_scene(${target} ...): no link-time optimisation (${why}): the scene is read "
+                     "as a constant, but not folded into the code")
     endif()
     if(CMAKE_C_COMPILER_ID STREQUAL "GNU")
       set(opt -O3 --param=max-completely-peel-times=64 --param=max-completely-peeled-insns=1000
               --param=max-inline-insns-single=1000 --param=large-function-growth=1000)
       target_compile_options(rt_core PRIVATE ${opt})
-      target_link_options(${target} PRIVATE ${opt})
+      # the link compiles the whole program: with the core's own options
+      # (the float backend's) as well
+      get_property(core_opt TARGET rt_core PROPERTY RT_LINK_TIME_OPTIONS)
+      target_link_options(${target} PRIVATE ${opt} ${core_opt})
     endif()
   endif()
+endfunction()
+
+# _rt_ipo_check(<ok> <why>): whether this compiler and linker optimise a
+# program whole (CMake's INTERPROCEDURAL_OPTIMIZATION), tried on a static
+# library and a program linked from it, built with the project's flags
+# (a toolchain file's -mcpu, -mfpu and -mfloat-abi among them) and with
+# neither start-up code nor C library, which a bare-metal program brings
+# itself: CMake's check_ipo_supported links against both and fails there.
+# Quiet; once per build folder and flags; <why> is the build's first error
+# line (its whole output: CMakeFiles/rt_ipo_check/output.log).
+function(_rt_ipo_check out_ok out_why)
+  get_property(multi GLOBAL PROPERTY GENERATOR_IS_MULTI_CONFIG)
+  set(config "${CMAKE_BUILD_TYPE}")
+  if(multi OR NOT config)
+    set(config Release)
+  endif()
+  string(TOUPPER "${config}" cfg)
+  set(key "${CMAKE_C_COMPILER}|${CMAKE_C_FLAGS}|${CMAKE_C_FLAGS_${cfg}}|${CMAKE_EXE_LINKER_FLAGS}|${config}")
+  if(NOT key STREQUAL "${RT_IPO_CHECK_KEY}")
+    set(dir "${CMAKE_BINARY_DIR}/CMakeFiles/rt_ipo_check")
+    file(REMOVE_RECURSE "${dir}")
+    file(WRITE "${dir}/src/CMakeLists.txt"
+         "cmake_minimum_required(VERSION 3.16)\n"
+         "project(rt_ipo_check C)\n"
+         "add_library(twice STATIC twice.c)\n"
+         "add_executable(prog prog.c)\n"
+         "target_link_libraries(prog PRIVATE twice)\n"
+         "target_link_options(prog PRIVATE -nostdlib -nostartfiles)\n"
+         "set_property(TARGET twice prog PROPERTY INTERPROCEDURAL_OPTIMIZATION TRUE)\n")
+    file(WRITE "${dir}/src/twice.c" "int rt_ipo_twice(int x);\nint rt_ipo_twice(int x) { return 2 * x; }\n")
+    # the entry point the linker looks for by default
+    file(WRITE "${dir}/src/prog.c"
+         "int rt_ipo_twice(int x);\nvoid _start(void);\nvolatile int rt_ipo_value;\n"
+         "void _start(void)\n{\n    for (;;)\n        rt_ipo_value = rt_ipo_twice(rt_ipo_value);\n}\n")
+    set(vars "")
+    foreach(v RT_ARM_CPU RT_ARM_FPU RT_ARM_FLOAT_ABI)
+      if(DEFINED ${v})
+        list(APPEND vars "-D${v}=${${v}}")
+      endif()
+    endforeach()
+    try_compile(ok PROJECT rt_ipo_check SOURCE_DIR "${dir}/src" BINARY_DIR "${dir}/bin"
+                CMAKE_FLAGS "-DCMAKE_BUILD_TYPE=${config}" "-DCMAKE_C_FLAGS=${CMAKE_C_FLAGS}"
+                            "-DCMAKE_C_FLAGS_${cfg}=${CMAKE_C_FLAGS_${cfg}}"
+                            "-DCMAKE_EXE_LINKER_FLAGS=${CMAKE_EXE_LINKER_FLAGS}" ${vars}
+                OUTPUT_VARIABLE output)
+    file(WRITE "${dir}/output.log" "${output}")
+    set(why "")
+    if(NOT ok)
+      # the first line that says what failed (not make's or collect2's
+      # summary of it), the tool's folder left out
+      string(REPLACE ";" "," lines "${output}")
+      string(REPLACE "\n" ";" lines "${lines}")
+      foreach(line IN LISTS lines)
+        if(line MATCHES "[Ee]rror|undefined reference|unrecogni[sz]ed|not supported|cannot find"
+           AND NOT line MATCHES "^collect2|\\*\\*\\*")
+          string(REGEX REPLACE "^[^ :]*/" "" why "${line}")
+          string(STRIP "${why}" why)
+          break()
+        endif()
+      endforeach()
+      if(why STREQUAL "")
+        set(why "the test program did not build")
+      endif()
+      set(why "${why}; see ${dir}/output.log")
+    endif()
+    set(RT_IPO_CHECK_KEY "${key}" CACHE INTERNAL "the flags _rt_ipo_check tried")
+    set(RT_IPO_CHECK_OK "${ok}" CACHE INTERNAL "whether link-time optimisation works with them")
+    set(RT_IPO_CHECK_WHY "${why}" CACHE INTERNAL "why not")
+  endif()
+  set(${out_ok} "${RT_IPO_CHECK_OK}" PARENT_SCOPE)
+  set(${out_why} "${RT_IPO_CHECK_WHY}" PARENT_SCOPE)
 endfunction()
