@@ -112,7 +112,7 @@ STM32_BAUD_CHECK := $(shell awk -v f=$(STM32_USART_HZ) -v b='$(BAUD)' 'BEGIN { \
     if (b !~ /^[1-9][0-9]*$$/) { print "not a whole number"; exit } \
     brr = int((f + int(b / 2)) / b); \
     if (brr < 16) { printf "over the most USART$(STM32_USART) takes at %g MHz, %d (its clock / 16)", f / 1e6, f / 16; exit } \
-    if (brr > 65535) { printf "under the least USART$(STM32_USART) takes at %g MHz (its clock / 65535)", f / 1e6; exit } \
+    if (brr > 65535) { printf "under the least USART$(STM32_USART) takes at %g MHz, %d (its clock / 65535)", f / 1e6, int(f / 65535.5) + 1; exit } \
     err = (f / brr - b) / b * 100; if (err < 0) err = -err; \
     if (err > 2) printf "USART$(STM32_USART) at %g MHz gives %.0f baud (BRR %d = %d + %d/16), %.2f%% off, more than 2%%", \
         f / 1e6, f / brr, brr, int(brr / 16), brr % 16, err }')

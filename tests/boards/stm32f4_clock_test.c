@@ -289,7 +289,8 @@ int main(void)
     const uint32_t want_hz = STM32_SYSCLK_MHZ * 1000000u;
     const uint32_t caches = FLASH_ACR_ICEN | FLASH_ACR_DCEN;
     printf("stm32f4-clock: F%u limits, %u MHz, HSE %u MHz %s, USART%u at %u baud\n", STM32_CHIP, STM32_SYSCLK_MHZ,
-           STM32_HSE_MHZ, STM32_HSE_BYPASS ? "bypass (a clock)" : "crystal", STM32_USART, STM32_BAUD);
+           STM32_HSE_MHZ, !STM32_HSE_MHZ ? "(none)" : STM32_HSE_BYPASS ? "bypass (a clock)" : "crystal", STM32_USART,
+           STM32_BAUD);
 
     clock_source_t s;
     /* from each voltage scale reset may leave (the F405/F407's one VOS
