@@ -41,6 +41,7 @@
 #    gives the host's image over USART2 (QEMU's second serial port); a
 #    crystal out of the HSE's range does not build;
 #  - a scene's `resolution 320 240` is the frame when SIZE is not given,
+#    and make run's report gives its time on the wire at 115200 baud,
 #    and make image with make run's variables hands over the ELF make run
 #    ran (the board's AA=3 in both).
 # One sample a pixel (AA=0) in the other cases.
@@ -292,6 +293,19 @@ if make run $sv >"$OUT/sphere-run.log" 2>&1; then
         ok "resolution 320 240, no SIZE: make run renders $dims, AA=3 by default, == rt --fixed --aa 3 ($cmp)"
     else
         bad "resolution 320 240: the board's frame is ${dims:-?}, against rt --fixed --aa 3: ${cmp:-?}"
+    fi
+    # the time on the wire: the frame's records (9 bytes of header, 60
+    # bands of 4 lines each with 9 bytes of framing, 230,400 of pixels, 5
+    # at the end) and the report lines, 10 bits a byte at 115200 baud
+    sent=$(sed -n 's/^ *uart_bytes \([0-9]*\)$/\1/p' "$OUT/sphere-run.log")
+    frame=$((9 + 60 * 9 + 320 * 240 * 3 + 5))
+    wire=$(awk -v n="${sent:-0}" 'BEGIN { printf "%.3g s", n * 10 / 115200 }')
+    if [ -n "$sent" ] && [ "$sent" -gt $frame ] && [ "$sent" -lt $((frame + 2000)) ] &&
+       grep -q "^  on the wire *$wire at 115200 baud" "$OUT/sphere-run.log" &&
+       grep -q 'from reset to the last byte, render and wire together\.$' "$OUT/sphere-run.log"; then
+        ok "make run's report: a 320x240 RGB888 frame is $wire on the wire at 115200 baud ($sent bytes: $frame of frame records, the rest report lines), render and wire together"
+    else
+        bad "make run's wire time: uart_bytes ${sent:-?} (frame $frame), want $wire: $(grep -A2 'on the wire' "$OUT/sphere-run.log")"
     fi
     sum_run=$(cksum <"$OUT/sphere.bin")
     make image $sv >"$OUT/sphere-image.log" 2>&1
