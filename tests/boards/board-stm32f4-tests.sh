@@ -28,7 +28,8 @@
 #  - BAUD=921600 and 2000000 taken by every variant, a rate the divider
 #    misses by more than 2% (or cannot make) refused by make, naming
 #    BAUD, the clock and the error; a bad STM32, HSE, STM32_LED_ON or
-#    STM32_USART refused naming what it may be;
+#    STM32_USART (or FLASHER) refused naming what it may be; make flash
+#    on a BlackPill through dfu-util;
 #  - the BlackPill variants under QEMU: the host's image byte for byte,
 #    the link within the chip's flash and RAM (the F401's 256 KiB / 64
 #    KiB), uart_bytes equal to the stream's bytes before that line, and
@@ -200,6 +201,14 @@ refuse STM32=blackpill -- STM32=blackpill blackpill-f411 blackpill-f401
 refuse STM32=blackpill-f411 HSE=xtal -- HSE=xtal crystal bypass
 refuse STM32=blackpill-f411 STM32_LED_ON=on -- STM32_LED_ON=on high low
 refuse STM32=blackpill-f411 STM32_USART=3 -- STM32_USART=3 PA9
+refuse FLASHER=jlink -- FLASHER=jlink openocd st-flash dfu-util
+# a BlackPill has no ST-LINK: make flash goes through the ROM's DFU
+# bootloader, the .bin at the start of flash (make -n: nothing run)
+cmd=$(make -n flash $vars AA=0 STM32=blackpill-f411 2>&1 | tail -1)
+case $cmd in
+"dfu-util -a 0 -s 0x08000000:leave -D "*blackpill-f411/fixed.bin) ok "STM32=blackpill-f411: make flash runs $cmd" ;;
+*) bad "STM32=blackpill-f411: make flash runs '$cmd'" ;;
+esac
 
 # The BlackPills under QEMU (its F405 has room for either map): the
 # host's image byte for byte over USART1, the link within the chip's
