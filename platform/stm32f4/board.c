@@ -3,23 +3,26 @@
  * chip; the same image runs under QEMU's netduinoplus2.
  *
  *  - Clocks (clock.c): the PLL from the crystal, or from the HSI when
- *    no crystal answers, to 168 MHz (84 MHz on a Nucleo-64), with the
- *    flash wait states, prefetch (not on a revision A F405/F407) and
- *    caches set first. When the PLL does
- *    not lock or SYSCLK does not switch (QEMU, whose RCC reads 0), the
+ *    no crystal answers, to the variant's SYSCLK (168, 100 or 84 MHz),
+ *    with the voltage scale, flash wait states, prefetch (not on a
+ *    revision A F405/F407) and caches set first. When the PLL does not
+ *    lock or SYSCLK does not switch (QEMU, whose RCC reads 0), the
  *    render runs on at the reset clock, HSI 16 MHz, and the report says
  *    so.
  *  - Console: USART1 on PA9 (TX) and PA10 (RX), or USART2 on PA2/PA3
- *    (STM32_USART=2: a Nucleo's ST-LINK), alternate function 7, 115200
- *    8N1 from the APB clock it ended up with.
+ *    (STM32_USART=2: a Nucleo's ST-LINK), alternate function 7,
+ *    STM32_BAUD 8N1 from the APB clock it ended up with. The bytes sent
+ *    are counted: the report gives them and the rate, so the time the
+ *    picture takes on the wire can be told from the render's.
  *  - Counting: DWT's CYCCNT counts core cycles on the chip. Under QEMU
  *    it stays 0; TIM2, which there advances one tick per instruction
  *    under -icount shift=0, counts instructions instead. Which one runs
  *    is found at start (port_counts_*), and the report names it. Both
  *    are 32 bits: SysTick's interrupt, every 2^24 core clocks, folds
  *    them into 64-bit totals.
- *  - The user LED (STM32_LED_PORT, STM32_LED_PIN) toggles at each band,
- *    then stays on when the run ended well, off when it did not.
+ *  - The user LED (STM32_LED_PORT, STM32_LED_PIN, lit by a low pin with
+ *    STM32_LED_ACTIVE_LOW) toggles at each band, then stays on when the
+ *    run ended well, off when it did not.
  *  - The end: the clock, the counter and the exit status as the last
  *    report lines, the USART drained, then the core sleeps (WFI) with
  *    interrupts off. No semihosting: on a board with no debugger a BKPT
@@ -31,12 +34,12 @@
 #include "port.h"
 #include "sink.h"
 
-#ifndef STM32_USART
-#define STM32_USART 1
-#endif
 #ifndef STM32_LED_PORT /* a letter, 'A'..'I'; 0: no LED */
 #define STM32_LED_PORT 'D'
 #define STM32_LED_PIN 12
+#endif
+#ifndef STM32_LED_ACTIVE_LOW
+#define STM32_LED_ACTIVE_LOW 0
 #endif
 
 /* GPIO: port n ('A' + n) at 0x40020000 + 0x400 n; its clock is RCC_AHB1ENR bit n */
@@ -70,10 +73,9 @@
 #define USART_CR1_UE (1u << 13)
 #define USART_CR1_TE (1u << 3)
 #define USART_CR1_RE (1u << 2)
-#define BAUD 115200u
-/* 16x oversampling: BRR = f / baud, rounded (mantissa and 4 bits of fraction) */
-#define USART_BRR_OF(hz) (((hz) + BAUD / 2u) / BAUD)
-_Static_assert(USART_BRR_OF(84000000u) == 729u, "115200 baud from 84 MHz: BRR 729 (45 + 9/16)");
+#ifdef STM32_USART_HZ /* board.mk refused a BAUD that does not fit; this is a backstop */
+_Static_assert(USART_BAUD_FITS(STM32_USART_HZ, STM32_BAUD), "BAUD within 2% from the console's clock");
+#endif
 
 /* DWT's cycle counter, TIM2 (32 bits); SysTick folds them (systick.h) */
 #define DEMCR REG(0xe000edfcu)
@@ -89,6 +91,7 @@ _Static_assert(USART_BRR_OF(84000000u) == 729u, "115200 baud from 84 MHz: BRR 72
 
 static clock_source_t clock_source;
 static int cyccnt_runs;
+static uint64_t uart_bytes; /* sent so far */
 
 static void pin_mode(uint32_t gpio, uint32_t pin, uint32_t mode)
 {
@@ -111,25 +114,28 @@ static void usart_init(void)
                                    AF_USART << 4u * (USART_RX_PIN % 8u);
     pin_mode(gpio, USART_TX_PIN, GPIO_MODE_AF);
     pin_mode(gpio, USART_RX_PIN, GPIO_MODE_AF);
-    USART_BRR = USART_BRR_OF(clock_apb_hz(clock_source, USART_APB));
+    USART_BRR = USART_BRR_OF(clock_apb_hz(clock_source, USART_APB), STM32_BAUD);
     USART_CR1 = USART_CR1_UE | USART_CR1_TE | USART_CR1_RE;
-}
-
-static void led_init(void)
-{
-#if STM32_LED_PORT
-    RCC_AHB1ENR |= 1u << (STM32_LED_PORT - 'A');
-    (void)RCC_AHB1ENR;
-    pin_mode(GPIO(STM32_LED_PORT), STM32_LED_PIN, GPIO_MODE_OUTPUT);
-#endif
 }
 
 static void led_set(int on)
 {
 #if STM32_LED_PORT
-    GPIO_BSRR(GPIO(STM32_LED_PORT)) = 1u << (STM32_LED_PIN + (on ? 0u : 16u)); /* set, or reset */
+    int high = on != STM32_LED_ACTIVE_LOW;
+    GPIO_BSRR(GPIO(STM32_LED_PORT)) = 1u << (STM32_LED_PIN + (high ? 0u : 16u)); /* set, or reset */
 #else
     (void)on;
+#endif
+}
+
+/* off before the pin drives it (an active-low LED would light at once) */
+static void led_init(void)
+{
+#if STM32_LED_PORT
+    RCC_AHB1ENR |= 1u << (STM32_LED_PORT - 'A');
+    (void)RCC_AHB1ENR;
+    led_set(0);
+    pin_mode(GPIO(STM32_LED_PORT), STM32_LED_PIN, GPIO_MODE_OUTPUT);
 #endif
 }
 
@@ -219,12 +225,17 @@ void port_write(const void *data, size_t len)
             ;
         USART_DR = p[i];
     }
+    uart_bytes += len;
 }
 
 void port_exit(int status)
 {
-    /* after the frame, as the Pico's: the clock the render ran at and how
-     * it was counted, then the status, the last line */
+    /* after the frame, as the Pico's: the console's rate and the bytes
+     * it carried up to here (the frame's records, the report lines), the
+     * clock the render ran at and how it was counted, then the status,
+     * the last line */
+    report_value("uart_baud", STM32_BAUD);
+    report_value("uart_bytes", uart_bytes);
     report_value("sysclk_hz", clock_sysclk_hz(clock_source));
     report_text(clock_report());
     report_text(cyccnt_runs ? "counter: DWT CYCCNT, core cycles"

@@ -1,49 +1,81 @@
 /*
  * clock.c - the STM32F4's clock tree (clock.h), for the chip: the
  * crystal (HSE; bypass mode where a clock drives it) or the 16 MHz HSI
- * divided to at most 2 MHz into the main PLL; VCO 336 MHz, SYSCLK
- * 168 MHz (/ 2) or 84 MHz (/ 4), USB 48 MHz (/ 7); flash wait states,
- * prefetch (not on a revision A F405/F407) and the ART accelerator's
- * caches before SYSCLK moves; APB1 at 42 MHz and APB2 at 84 MHz, their
- * limits. Under QEMU, whose RCC reads 0, the PLL never reports lock and
- * SYSCLK stays on the HSI.
+ * divided to at most 2 MHz into the main PLL; SYSCLK 168 MHz (VCO 336 /
+ * 2), 84 MHz (336 / 4) or 100 MHz (400 / 4); the regulator's voltage
+ * scale for that clock (F401, F411); flash wait states, prefetch (not on
+ * a revision A F405/F407) and the ART accelerator's caches before SYSCLK
+ * moves; APB1 and APB2 at most their limits. Under QEMU, whose RCC reads
+ * 0, the PLL never reports lock and SYSCLK stays on the HSI.
  */
 #include "clock.h"
 
-/* The PLL: its input / M, times N to the VCO's 336 MHz, / P for SYSCLK,
- * / 7 for USB's 48 MHz. The input is 2 MHz where it can be (RM0090 allows
- * 1 to 2 MHz and asks for 2 to limit the PLL's jitter); two rules hold it
- * lower on some inputs:
- *  - N = 336 MHz / input must be whole, or SYSCLK, and with it the
- *    USART's baud rate and every time the report gives, would be off: M
- *    is a multiple of mhz / gcd(mhz, 336). A 25 MHz crystal thus gets
- *    M 25, 1 MHz (M 13, 1.92 MHz, would give 168.27 MHz with N 175, over
- *    the chip's most, or 167.31 MHz and USB at 47.8 MHz with N 174);
- *  - the 84 MHz image also runs on the F401 and F411, where N must be
- *    192 or more (ST's HAL asks it of the F411, other sources of the
- *    F401; RM0090 allows 50 or more on the F405/F407): there the input is
- *    at most 336 / 192 = 1.75 MHz, 1.6 MHz from 8 or 16 MHz (M 5 or 10,
- *    N 210).
+/* The chip's limits (ST's CMSIS device headers stm32f405xx.h,
+ * stm32f401xc.h, stm32f411xe.h; RM0090, RM0368, RM0383): the PLL's N
+ * and VCO (the F401's from 192 and 192 MHz, the others' from 50 and 100
+ * MHz; 432 at most), SYSCLK, APB1 and APB2. */
+#if STM32_CHIP == 405
+#define PLL_N_MIN 50u
+#define PLL_VCO_MIN_MHZ 100u
+#define SYSCLK_MAX_MHZ 168u
+#define APB1_MAX_MHZ 42u
+#define APB2_MAX_MHZ 84u
+#elif STM32_CHIP == 401
+#define PLL_N_MIN 192u
+#define PLL_VCO_MIN_MHZ 192u
+#define SYSCLK_MAX_MHZ 84u
+#define APB1_MAX_MHZ 42u
+#define APB2_MAX_MHZ 84u
+#elif STM32_CHIP == 411
+#define PLL_N_MIN 50u
+#define PLL_VCO_MIN_MHZ 100u
+#define SYSCLK_MAX_MHZ 100u
+#define APB1_MAX_MHZ 50u
+#define APB2_MAX_MHZ 100u
+#else
+#error "STM32_CHIP: 405, 401 or 411"
+#endif
+_Static_assert(STM32_SYSCLK_MHZ <= SYSCLK_MAX_MHZ, "SYSCLK within the chip's most");
+
+/* The PLL: its input / M, times N to the VCO, / P for SYSCLK (P 2 at
+ * 168 MHz, else 4: the VCO at 336 or 400 MHz, as ST's own set-ups have
+ * it), / Q for USB's 48 MHz: exact from 336 MHz (Q 7); no Q gives it from
+ * 400 MHz, where Q 9 keeps that clock under 48 MHz (44.4, as SDIO
+ * requires; the firmware uses neither). The input is 2 MHz where it can
+ * be (1 to 2 MHz allowed, 2 asked for to limit the PLL's jitter); two
+ * rules hold it lower on some inputs:
+ *  - N = VCO / input must be whole, or SYSCLK, and with it the USART's
+ *    baud rate and every time the report gives, would be off: M is a
+ *    multiple of mhz / gcd(mhz, VCO). A 25 MHz crystal thus gets M 25,
+ *    1 MHz, at 336 MHz (M 13, 1.92 MHz, would give 168.27 MHz with N 175,
+ *    over the chip's most, or 167.31 MHz and USB at 47.8 MHz with N 174),
+ *    but M 13 and N 208 at 400 MHz;
+ *  - N at least PLL_N_MIN: on the F401 (and so on the Nucleo-64, whose
+ *    image runs on it) the input is at most 336 / 192 = 1.75 MHz, 1.6 MHz
+ *    from 8 or 16 MHz (M 5 or 10, N 210).
  * PLL_M_OF is the least M that keeps both rules and the 2 MHz; the
  * static asserts below check every limit for the crystal and the HSI. */
-#define PLL_VCO_MHZ 336u
-#define PLL_P (PLL_VCO_MHZ / STM32_SYSCLK_MHZ)
-#define PLL_Q 7u
-#define PLL_IN_MAX_MHZ 2u
-#if STM32_SYSCLK_MHZ == 168
-#define PLL_N_MIN 50u /* F405/F407 (RM0090) */
-#else
-#define PLL_N_MIN 192u /* F401, F411 */
-#endif
-#define PLL_N_MAX 432u
+#define PLL_P (STM32_SYSCLK_MHZ == 168 ? 2u : 4u)
+#define PLL_VCO_MHZ (STM32_SYSCLK_MHZ * PLL_P)
 #define CEIL_DIV(a, b) (((a) + (b) - 1u) / (b))
+#define PLL_Q CEIL_DIV(PLL_VCO_MHZ, 48u)
+#define PLL_IN_MAX_MHZ 2u
+#define PLL_N_MAX 432u
 #define MAX(a, b) ((a) > (b) ? (a) : (b))
-/* gcd(mhz, 336), from 336 = 2^4 x 3 x 7 */
-#define GCD_336(mhz)                                                                                                   \
-    (((mhz) % 16u == 0 ? 16u : (mhz) % 8u == 0 ? 8u : (mhz) % 4u == 0 ? 4u : (mhz) % 2u == 0 ? 2u : 1u) *             \
-     ((mhz) % 3u == 0 ? 3u : 1u) * ((mhz) % 7u == 0 ? 7u : 1u))
-_Static_assert(PLL_VCO_MHZ == 16u * 3u * 7u, "GCD_336 knows the VCO's factors");
-#define PLL_M_STEP(mhz) ((mhz) / GCD_336(mhz))
+/* gcd(mhz, VCO) for mhz up to 26: the largest power of each prime up to
+ * 26 that divides both */
+#define DIVIDES_BOTH(d, mhz) ((mhz) % (d) == 0 && PLL_VCO_MHZ % (d) == 0)
+#define GCD_VCO(mhz)                                                                                                   \
+    ((DIVIDES_BOTH(16u, mhz)  ? 16u                                                                                    \
+      : DIVIDES_BOTH(8u, mhz) ? 8u                                                                                     \
+      : DIVIDES_BOTH(4u, mhz) ? 4u                                                                                     \
+      : DIVIDES_BOTH(2u, mhz) ? 2u                                                                                     \
+                              : 1u) *                                                                                  \
+     (DIVIDES_BOTH(9u, mhz) ? 9u : DIVIDES_BOTH(3u, mhz) ? 3u : 1u) *                                                  \
+     (DIVIDES_BOTH(25u, mhz) ? 25u : DIVIDES_BOTH(5u, mhz) ? 5u : 1u) * (DIVIDES_BOTH(7u, mhz) ? 7u : 1u) *            \
+     (DIVIDES_BOTH(11u, mhz) ? 11u : 1u) * (DIVIDES_BOTH(13u, mhz) ? 13u : 1u) * (DIVIDES_BOTH(17u, mhz) ? 17u : 1u) * \
+     (DIVIDES_BOTH(19u, mhz) ? 19u : 1u) * (DIVIDES_BOTH(23u, mhz) ? 23u : 1u))
+#define PLL_M_STEP(mhz) ((mhz) / GCD_VCO(mhz))
 #define PLL_M_LEAST(mhz) MAX(CEIL_DIV(mhz, PLL_IN_MAX_MHZ), CEIL_DIV((mhz) * PLL_N_MIN, PLL_VCO_MHZ))
 #define PLL_M_OF(mhz) (CEIL_DIV(PLL_M_LEAST(mhz), PLL_M_STEP(mhz)) * PLL_M_STEP(mhz))
 #define PLL_N_OF(mhz) (PLL_VCO_MHZ * PLL_M_OF(mhz) / (mhz))
@@ -62,28 +94,34 @@ _Static_assert(PLL_FITS(HSI_MHZ) && PLL_M_OF(HSI_MHZ) * PLL_IN_MAX_MHZ >= HSI_MH
 _Static_assert(PLL_FITS(STM32_HSE_MHZ) && PLL_M_OF(STM32_HSE_MHZ) * PLL_IN_MAX_MHZ >= STM32_HSE_MHZ,
                "the PLL from the crystal");
 #endif
-_Static_assert(PLL_P * STM32_SYSCLK_MHZ == PLL_VCO_MHZ && (PLL_P == 2 || PLL_P == 4), "SYSCLK: the VCO / 2 or / 4");
-_Static_assert(PLL_VCO_MHZ / PLL_Q == 48 && PLL_VCO_MHZ % PLL_Q == 0, "USB's 48 MHz from the VCO");
+_Static_assert(PLL_VCO_MHZ >= PLL_VCO_MIN_MHZ && PLL_VCO_MHZ <= 432u, "the VCO within its range");
+_Static_assert(PLL_Q >= 2 && PLL_Q <= 15 && PLL_VCO_MHZ / PLL_Q <= 48, "USB's clock at most 48 MHz");
 
-/* The buses: AHB at SYSCLK; APB1 at most 42 MHz, APB2 at most 84 MHz. */
-#if STM32_SYSCLK_MHZ == 168
-#define APB_PRESCALERS (RCC_CFGR_PPRE1_DIV4 | RCC_CFGR_PPRE2_DIV2)
-#define APB1_MHZ 42u
-#define APB2_MHZ 84u
-/* 168 MHz at 2.7-3.6 V: 5 wait states (RM0090, "Relation between CPU
- * clock frequency and flash memory read time") */
-#define FLASH_WAIT_STATES 5u
-#else
-#define APB_PRESCALERS RCC_CFGR_PPRE1_DIV2
-#define APB1_MHZ 42u
-#define APB2_MHZ 84u
-/* 84 MHz: 2 wait states on the F401, F411 and F446 (2.7-3.6 V) */
-#define FLASH_WAIT_STATES 2u
+/* The buses: AHB at SYSCLK; APB2 at SYSCLK up to 100 MHz, else / 2;
+ * APB1 at half APB2 (board.mk's STM32_USART_HZ assumes the same) */
+#define APB2_MHZ (STM32_SYSCLK_MHZ > 100 ? STM32_SYSCLK_MHZ / 2u : STM32_SYSCLK_MHZ)
+#define APB1_MHZ (APB2_MHZ / 2u)
+#define APB_PRESCALERS                                                                                                 \
+    ((STM32_SYSCLK_MHZ > 100 ? RCC_CFGR_PPRE1_DIV4 | RCC_CFGR_PPRE2_DIV2 : RCC_CFGR_PPRE1_DIV2))
+_Static_assert(APB1_MHZ <= APB1_MAX_MHZ && APB2_MHZ <= APB2_MAX_MHZ, "APB1 and APB2 within the chip's limits");
+_Static_assert(STM32_SYSCLK_MHZ % APB2_MHZ == 0 && STM32_SYSCLK_MHZ % APB1_MHZ == 0, "APB1 and APB2 divide SYSCLK");
+#ifdef STM32_USART_HZ
+_Static_assert(STM32_USART_HZ == (STM32_USART == 1 ? APB2_MHZ : APB1_MHZ) * 1000000u,
+               "board.mk's console clock, against which it checked BAUD, is this one");
 #endif
-_Static_assert(APB1_MHZ <= 42 && APB2_MHZ <= 84, "APB1 at most 42 MHz, APB2 at most 84 MHz");
-_Static_assert(STM32_SYSCLK_MHZ / APB1_MHZ * APB1_MHZ == STM32_SYSCLK_MHZ &&
-                   STM32_SYSCLK_MHZ / APB2_MHZ * APB2_MHZ == STM32_SYSCLK_MHZ,
-               "APB1 and APB2 divide SYSCLK");
+
+/* Flash wait states at 2.7-3.6 V: one per 30 MHz of HCLK on the F405/F407
+ * (RM0090); the F401 needs 2 at 84 MHz, the F411 3 at 100 MHz (RM0368,
+ * RM0383), which the same rule gives */
+#define FLASH_WAIT_STATES ((STM32_SYSCLK_MHZ - 1u) / 30u)
+
+/* The regulator's voltage scale (PWR_CR VOS) on the F401 and F411: scale
+ * 2 (VOS 10) for up to 84 MHz, scale 1 (VOS 11: the F411 only) for 100
+ * MHz. Set with the PLL off; it takes effect when the PLL runs. The
+ * F405/F407's single VOS bit starts at scale 1, its 168 MHz: left alone. */
+#if STM32_CHIP != 405
+#define PWR_VOS (STM32_SYSCLK_MHZ > 84 ? 3u : 2u)
+#endif
 
 static const char *clock_line; /* the report's line: clocks_init() sets it */
 
@@ -110,6 +148,11 @@ clock_source_t clocks_init(void)
 {
     uint32_t pllcfgr = PLLCFGR_OF(HSI_MHZ);
     clock_source_t source = CLOCK_PLL_HSI;
+#ifdef PWR_VOS
+    RCC_APB1ENR |= RCC_APB1ENR_PWR;
+    (void)RCC_APB1ENR; /* (two clocks before PWR answers) */
+    PWR_CR = (PWR_CR & ~PWR_CR_VOS_MASK) | PWR_VOS << PWR_CR_VOS_SHIFT;
+#endif
 #if STM32_HSE_MHZ
     /* (HSEBYP may change only while the HSE is off: before HSEON, after) */
     if (STM32_HSE_BYPASS)
@@ -150,8 +193,9 @@ clock_source_t clocks_init(void)
     static const char *const lines[2][2] = {
         { "clock: PLL from the crystal (HSE)",
           "clock: PLL from the crystal (HSE); flash prefetch off: a revision A F405/F407" },
-        { "clock: PLL from the 16 MHz HSI (the crystal did not start)",
-          "clock: PLL from the 16 MHz HSI (the crystal did not start); flash prefetch off: a revision A F405/F407" },
+        { "clock: PLL from the 16 MHz HSI (the HSE did not start: no crystal, or the wrong HSE=crystal|bypass)",
+          "clock: PLL from the 16 MHz HSI (the HSE did not start: no crystal, or the wrong HSE=crystal|bypass); "
+          "flash prefetch off: a revision A F405/F407" },
     };
     clock_line = lines[source == CLOCK_PLL_HSI][revision_a];
     return source;

@@ -16,7 +16,12 @@
 #define STM32_REG(addr) REG(addr)
 #endif
 
-#ifndef STM32_SYSCLK_MHZ /* board.mk passes the variant's: 168 or 84 */
+/* The variant's choices (board.mk's table passes them; these defaults
+ * are the f405 row's) */
+#ifndef STM32_CHIP /* whose limits apply: 405 (F405/F407), 401, 411 */
+#define STM32_CHIP 405
+#endif
+#ifndef STM32_SYSCLK_MHZ /* 168, 100 or 84 */
 #define STM32_SYSCLK_MHZ 168
 #endif
 #ifndef STM32_HSE_MHZ /* the crystal; 0: none */
@@ -25,6 +30,29 @@
 #ifndef STM32_HSE_BYPASS /* 1: driven by a clock (a Nucleo's ST-LINK), not a crystal */
 #define STM32_HSE_BYPASS 0
 #endif
+#ifndef STM32_USART /* the console: USART1 (on APB2) or USART2 (on APB1) */
+#define STM32_USART 1
+#endif
+#ifndef STM32_BAUD
+#define STM32_BAUD 115200
+#endif
+
+/* The USART's divider, 16x oversampling (OVER8 0): USARTDIV = f / (16
+ * baud) in 1/16ths, so BRR = f / baud, rounded (mantissa in bits 15:4,
+ * fraction in 3:0). BRR 16 (USARTDIV 1) to 65535. */
+#define USART_BRR_OF(hz, baud) (((hz) + (baud) / 2u) / (baud))
+/* How far the rate BRR gives is from `baud`, in parts per million */
+#define USART_PPM_OFF(hz, baud)                                                                                       \
+    ((unsigned long long)((hz) > USART_BRR_OF(hz, baud) * (baud) ? (hz) - USART_BRR_OF(hz, baud) * (baud)            \
+                                                                    : USART_BRR_OF(hz, baud) * (baud) - (hz)) *        \
+     1000000ull / ((unsigned long long)USART_BRR_OF(hz, baud) * (baud)))
+/* What BAUD= may be (board.mk refuses the rest with the same rule): BRR
+ * in range and the rate within 2% (the receiver tolerates 3.41% with a
+ * fractional divider, both ends' errors together) */
+#define USART_BAUD_MAX_PPM 20000u
+#define USART_BAUD_FITS(hz, baud)                                                                                     \
+    (USART_BRR_OF(hz, baud) >= 16u && USART_BRR_OF(hz, baud) <= 0xffffu &&                                             \
+     USART_PPM_OFF(hz, baud) <= USART_BAUD_MAX_PPM)
 
 /* RCC: what the clock tree and the peripherals' clock enables use */
 #define RCC_CR STM32_REG(0x40023800u)
@@ -47,7 +75,13 @@
 #define RCC_CFGR_PPRE2_DIV2 (4u << 13)
 #define RCC_APB1ENR_TIM2 (1u << 0)
 #define RCC_APB1ENR_USART2 (1u << 17)
+#define RCC_APB1ENR_PWR (1u << 28)
 #define RCC_APB2ENR_USART1 (1u << 4)
+
+/* PWR_CR: the regulator's voltage scale (VOS, bits 15:14) */
+#define PWR_CR STM32_REG(0x40007000u)
+#define PWR_CR_VOS_SHIFT 14
+#define PWR_CR_VOS_MASK (3u << PWR_CR_VOS_SHIFT)
 
 /* FLASH_ACR: wait states, prefetch, instruction and data caches */
 #define FLASH_ACR STM32_REG(0x40023c00u)
@@ -69,7 +103,7 @@
 typedef enum { CLOCK_PLL_HSE, CLOCK_PLL_HSI, CLOCK_HSI } clock_source_t;
 
 /* The PLL from the crystal, or from the HSI when the crystal does not
- * start; flash wait states, prefetch (not on a revision A F405/F407) and
+ * start; the voltage scale (F401, F411), flash wait states, prefetch (not on a revision A F405/F407) and
  * caches, the APB dividers, then SYSCLK onto the PLL. Every wait
  * bounded; on failure SYSCLK stays on the HSI, where reset left it.
  * Returns where it ended. */

@@ -10,3 +10,12 @@ $(FW_DIR)/%.hex: $(FW_DIR)/%.elf
 	$(show) OBJCOPY $@
 	$(Q)$(FW_OBJCOPY) -O ihex $< $@
 
+
+# The variant's clock flags, as the firmware gets them: the host's clock
+# test (tests/boards/stm32f4_clock_test.c) is built with the same
+stm32-clock-flags:
+	@echo '$(STM32_CLOCK_FLAGS)'
+
+# the names of the variants (STM32=), from board.mk's table
+stm32-variants:
+	@echo '$(STM32_NAMES)'

@@ -11,22 +11,38 @@
 #    no cycle count, prints its progress, and ends on exit_status 0;
 #  - TIM2's count of the render equals bench/cycles.py's count of the
 #    same run within 0.01% (the difference: the counter reads);
-#  - the clock tree (clock.c), on the host against a model of RCC and
-#    FLASH_ACR that keeps RM0090's rules (tests/boards/stm32f4_clock_test.c): a
-#    crystal that answers gives 168 MHz (84 on a Nucleo-64) from the HSE,
-#    one that does not the same from the HSI, wait states that do not
-#    stick or an RCC that reads 0 leave SYSCLK on the HSI and say why;
-#    wait states before the switch, APB limits, HSEBYP and PLLCFGR
-#    written only when allowed, PLLCFGR's reserved bits kept, the PLL's
-#    input as fast as an exact set-up allows (2 MHz where one does), the
-#    flash prefetch off on a revision A F405/F407 only, in every variant
-#    (8, 12 and 25 MHz crystals, the Nucleo's bypass clock, none);
+#  - the clock tree (clock.c), on the host against a model of RCC, PWR
+#    and FLASH_ACR that keeps the chips' rules
+#    (tests/boards/stm32f4_clock_test.c), built with each variant's own
+#    flags: an HSE that answers gives the variant's SYSCLK from it, one
+#    that does not (or the wrong HSE=crystal|bypass) the same from the
+#    HSI, wait states that do not stick or an RCC that reads 0 leave
+#    SYSCLK on the HSI and say why; the voltage scale, wait states
+#    before the switch, APB limits, HSEBYP and PLLCFGR written only when
+#    allowed, PLLCFGR's reserved bits kept, the PLL's input as fast as an
+#    exact set-up allows, the flash prefetch off on a revision A
+#    F405/F407 only, and the console's BRR and which rates fit, in every
+#    variant of board.mk's table and a few other choices (8, 12 and 25
+#    MHz crystals, none, bypass, 921600 and 2000000 baud); the 25 MHz
+#    crystal's dividers on the F411 and F401;
+#  - BAUD=921600 and 2000000 taken by every variant, a rate the divider
+#    misses by more than 2% (or cannot make) refused by make, naming
+#    BAUD, the clock and the error; a bad STM32, HSE, STM32_LED_ON or
+#    STM32_USART (or FLASHER) refused naming what it may be; make flash
+#    on a BlackPill through dfu-util;
+#  - the BlackPill variants under QEMU: the host's image byte for byte,
+#    the link within the chip's flash and RAM (the F401's 256 KiB / 64
+#    KiB), uart_bytes equal to the stream's bytes before that line, and
+#    from QEMU's log of register writes, the voltage scale, the BRR, and
+#    the active-low LED on PC13 off before the pin drives it, lit after
+#    a good run;
 #  - a fault (a read of the CCM RAM, which QEMU does not model) ends the
 #    run with status 4 and its report line, and run.sh says so;
 #  - the Nucleo-64 variant (STM32=nucleo64: USART2, 512 KiB / 96 KiB)
 #    gives the host's image over USART2 (QEMU's second serial port); a
 #    crystal out of the HSE's range does not build;
 #  - a scene's `resolution 320 240` is the frame when SIZE is not given,
+#    and make run's report gives its time on the wire at 115200 baud,
 #    and make image with make run's variables hands over the ELF make run
 #    ran (the board's AA=3 in both).
 # One sample a pixel (AA=0) in the other cases.
@@ -116,14 +132,133 @@ else
     bad "the faulting image did not build: $(tail -3 "$OUT/fault.build")"
 fi
 
-# the clock tree on the host against a model of RCC and FLASH_ACR (what
-# QEMU cannot check), in each variant: tests/boards/stm32f4_clock_test.c
-for v in "" "-DSTM32_SYSCLK_MHZ=84 -DSTM32_HSE_BYPASS=1" "-DSTM32_HSE_MHZ=12" "-DSTM32_HSE_MHZ=25" "-DSTM32_HSE_MHZ=0"; do
-    if cc -std=c11 -Wall -Wextra -Werror $v -Iplatform/stm32f4 tests/boards/stm32f4_clock_test.c -o "$OUT/clock-test" \
-           2>"$OUT/clock.build" && "$OUT/clock-test" >"$OUT/clock.txt"; then
-        ok "clock tree ($(head -1 "$OUT/clock.txt" | cut -d' ' -f2-)): $(tail -1 "$OUT/clock.txt" | cut -d' ' -f2-)"
+# the clock tree on the host against a model of RCC, PWR and FLASH_ACR
+# (what QEMU cannot check), built with the flags each variant's firmware
+# gets (make stm32-clock-flags): every row of board.mk's table, then
+# other crystals, none, a BlackPill's 8 MHz crystal, a clock signal
+# (HSE=bypass) and the faster rates: tests/boards/stm32f4_clock_test.c
+variants=$(make -s stm32-variants BOARD=stm32f4)
+for v in $variants "STM32=f405 HSE_MHZ=12" "STM32=f405 HSE_MHZ=25" "STM32=f405 HSE_MHZ=0" \
+         "STM32=blackpill-f411 HSE_MHZ=8" "STM32=blackpill-f411 HSE=bypass BAUD=921600" \
+         "STM32=blackpill-f401 BAUD=2000000" "STM32=blackpill-f401 STM32_USART=2 BAUD=921600"; do
+    case $v in *=*) ;; *) v="STM32=$v" ;; esac
+    if flags=$(make -s stm32-clock-flags BOARD=stm32f4 $v 2>"$OUT/clock.build") &&
+       cc -std=c11 -Wall -Wextra -Werror $flags -Iplatform/stm32f4 tests/boards/stm32f4_clock_test.c -o "$OUT/clock-test" \
+           2>>"$OUT/clock.build" && "$OUT/clock-test" >"$OUT/clock.txt"; then
+        ok "clock tree, $v ($(head -1 "$OUT/clock.txt" | cut -d' ' -f2-)): $(tail -1 "$OUT/clock.txt" | cut -d' ' -f2-)"
     else
-        bad "clock tree ${v:-(default)}: $(grep FAIL "$OUT/clock.txt" | head -2) $(tail -2 "$OUT/clock.build")"
+        bad "clock tree, $v: $(grep FAIL "$OUT/clock.txt" | head -2) $(tail -2 "$OUT/clock.build")"
+    fi
+done
+# the 25 MHz crystal of the BlackPills, as the issue asks: the PLL's
+# dividers and the console's BRR the clock test printed
+for v in blackpill-f411 blackpill-f401; do
+    flags=$(make -s stm32-clock-flags BOARD=stm32f4 STM32=$v)
+    cc -std=c11 $flags -Iplatform/stm32f4 tests/boards/stm32f4_clock_test.c -o "$OUT/clock-test" 2>/dev/null &&
+        "$OUT/clock-test" >"$OUT/clock-$v.txt"
+done
+pll411=$(grep -o 'PLL from the HSE: M [0-9]*, N [0-9]*, P [0-9]*, Q [0-9]*' "$OUT/clock-blackpill-f411.txt")
+pll401=$(grep -o 'PLL from the HSE: M [0-9]*, N [0-9]*, P [0-9]*, Q [0-9]*' "$OUT/clock-blackpill-f401.txt")
+# 25 / 13 x 208 / 4 = 100 MHz (VCO 400 MHz); 25 / 25 x 336 / 4 = 84 MHz
+[ "$pll411" = "PLL from the HSE: M 13, N 208, P 4, Q 9" ] && [ "$pll401" = "PLL from the HSE: M 25, N 336, P 4, Q 7" ] &&
+    grep -q 'ok    BAUD 115200 from USART1.s 100 MHz: BRR 868 ' "$OUT/clock-blackpill-f411.txt" &&
+    grep -q 'ok    BAUD 115200 from USART1.s 84 MHz: BRR 729 ' "$OUT/clock-blackpill-f401.txt" &&
+    ok "25 MHz crystal: F411 $pll411 (100 MHz), BRR 868; F401 $pll401 (84 MHz), BRR 729" ||
+    bad "25 MHz crystal: F411 '$pll411', F401 '$pll401'"
+
+# BAUD: checked against the console's divider at the variant's clock
+# when make reads the variables; the rates common adapters take fit
+# every variant, on either USART
+for v in $variants; do
+    for u in 1 2; do
+        for b in 921600 2000000; do
+            make -s board-info BOARD=stm32f4 STM32=$v STM32_USART=$u BAUD=$b >/dev/null 2>>"$OUT/baud.txt" ||
+                echo "STM32=$v STM32_USART=$u BAUD=$b refused" >>"$OUT/baud.txt"
+        done
+    done
+done
+[ ! -s "$OUT/baud.txt" ] && ok "BAUD=921600 and 2000000 taken by every variant ($(echo $variants)) on USART1 and 2" ||
+    bad "BAUD: $(head -2 "$OUT/baud.txt")"
+refuse() { # refuse VARS... -- WORDS: make refuses, naming each word
+    _v= _w=
+    while [ "$1" != -- ]; do _v="$_v $1"; shift; done
+    shift
+    if msg=$(make -s board-info BOARD=stm32f4 $_v 2>&1); then
+        bad "${_v# }: taken"
+        return
+    fi
+    for _w in "$@"; do
+        case $msg in *"$_w"*) ;; *) bad "$_v: the message does not say '$_w': $msg"; return ;; esac
+    done
+    msg=${msg#*\*\*\* }
+    ok "${_v# } refused: ${msg%.  Stop.}"
+}
+refuse STM32=blackpill-f401 BAUD=4800000 -- BAUD=4800000 '84 MHz' '2.78%'
+refuse STM32=blackpill-f411 BAUD=7000000 -- BAUD=7000000 '100 MHz' 6250000
+refuse STM32=blackpill-f411 BAUD=1200 -- BAUD=1200 '100 MHz'
+refuse STM32=blackpill-f411 BAUD=fast -- BAUD=fast 'whole number'
+refuse STM32=blackpill -- STM32=blackpill blackpill-f411 blackpill-f401
+refuse STM32=blackpill-f411 HSE=xtal -- HSE=xtal crystal bypass
+refuse STM32=blackpill-f411 STM32_LED_ON=on -- STM32_LED_ON=on high low
+refuse STM32=blackpill-f411 STM32_USART=3 -- STM32_USART=3 PA9
+refuse FLASHER=jlink -- FLASHER=jlink openocd st-flash dfu-util
+# a BlackPill has no ST-LINK: make flash goes through the ROM's DFU
+# bootloader, the .bin at the start of flash (make -n: nothing run)
+cmd=$(make -n flash $vars AA=0 STM32=blackpill-f411 2>&1 | tail -1)
+case $cmd in
+"dfu-util -a 0 -s 0x08000000:leave -D "*blackpill-f411/fixed.bin) ok "STM32=blackpill-f411: make flash runs $cmd" ;;
+*) bad "STM32=blackpill-f411: make flash runs '$cmd'" ;;
+esac
+
+# The BlackPills under QEMU (its F405 has room for either map): the
+# host's image byte for byte over USART1, the link within the chip's
+# flash and RAM, the bytes sent as the report counts them (uart_bytes:
+# the stream's bytes before that line), and, from QEMU's log of every
+# register write, what the chip would be told: VOS for the clock
+# (scale 1 on the F411, 2 on the F401), BRR for 115200 baud at the 16
+# MHz QEMU leaves it on, and the LED on PC13 off (the pin high) before
+# it drives it, lit (the pin low) at the end of a good run
+for v in blackpill-f411:512K:128K:0xc000 blackpill-f401:256K:64K:0x8000; do
+    name=${v%%:*} rest=${v#*:}
+    flash=${rest%%:*} rest=${rest#*:} ram=${rest%%:*} vos=${rest#*:}
+    bvars="$vars STM32=$name"
+    if ! make -s -j2 firmware AA=0 $bvars >"$OUT/$name.build" 2>&1; then
+        bad "STM32=$name does not build: $(tail -3 "$OUT/$name.build")"
+        continue
+    fi
+    eval "$(make -s board-info AA=0 $bvars)"
+    mem=$(awk '/^Memory Configuration/ { m = 1 } m && ($1 == "FLASH" || $1 == "RAM") { print $1, $3 } /^Linker script/ { m = 0 }' \
+              "${elf%.elf}.map" | while read -r n len; do printf '%s%d ' $n $((len)); done)
+    want="FLASH$((${flash%K} * 1024)) RAM$((${ram%K} * 1024)) "
+    [ -f "$OUT/host.png" ] || "$RT" scenes/spd/balls-2.nff -o "$OUT/host.png" --fixed --size 32x32 --depth 5 --threads 1 --quiet
+    rm -f "$OUT/$name.png"
+    if make -s board-run AA=0 $bvars RUN_OUT="$OUT/$name.png" RUN_RT="$RT" \
+           BOARD_QEMU="qemu-system-arm -M netduinoplus2 -trace memory_region_ops_write -D $OUT/$name.mmio" \
+           >"$OUT/$name.report" 2>&1 &&
+       cmp=$("$RT" compare "$OUT/$name.png" "$OUT/host.png" --max-error 0) && [ "$mem" = "$want" ]; then
+        ok "STM32=$name: the host's image byte for byte ($cmp); $mem"
+    else
+        bad "STM32=$name: $(tail -2 "$OUT/$name.report") ${cmp:-}; $mem (want $want)"
+    fi
+    sent=$(awk '$1 == "uart_bytes" { print $2 }' "$OUT/$name.report")
+    at=$(python3 -c 'import sys; d = open(sys.argv[1], "rb").read(); print(d.find(b"uart_bytes ") - 3)' "${elf%.elf}.stream")
+    [ -n "$sent" ] && [ "$sent" = "$at" ] && grep -qx 'uart_baud 115200' "$OUT/$name.report" &&
+        ok "STM32=$name: uart_bytes $sent, the stream's bytes before that line; uart_baud 115200" ||
+        bad "STM32=$name: uart_bytes ${sent:-?}, the stream has $at before it"
+    # (writes as QEMU logs them: addr, value; PWR_CR, USART1_BRR, GPIOC's MODER and BSRR)
+    awk '/memory_region_ops_write/ { for (i = 1; i < NF; i++) { if ($i == "addr") a = $(i + 1); if ($i == "value") v = $(i + 1) }
+         if (a == "0x40007000" || a == "0x40011008" || a == "0x40020800" || a == "0x40020818") print a, v }' \
+        "$OUT/$name.mmio" >"$OUT/$name.writes"
+    pwr=$(awk '$1 == "0x40007000" { v = $2 } END { print v }' "$OUT/$name.writes")
+    brr=$(awk '$1 == "0x40011008" { v = $2 } END { print v }' "$OUT/$name.writes")
+    led=$(awk '$1 == "0x40020818" || ($1 == "0x40020800" && !m) { if ($1 == "0x40020800") m = 1; printf "%s%s", s, ($1 == "0x40020800" ? "moder" : $2); s = " " }' "$OUT/$name.writes")
+    last=$(awk '$1 == "0x40020818" { v = $2 } END { print v }' "$OUT/$name.writes")
+    # 16 MHz / 115200 = 138.9: BRR 139; BSRR bit 13 sets PC13, bit 29 resets it
+    if [ $((pwr & 0xc000)) = $((vos)) ] && [ $((brr)) = 139 ] && [ "${led%% *}" = 0x2000 ] &&
+       [ "$(echo "$led" | cut -d' ' -f2)" = moder ] && [ "$last" = 0x20000000 ]; then
+        ok "STM32=$name, the writes QEMU logged: PWR_CR $pwr (VOS $(( (pwr >> 14) & 3 ))), BRR $((brr)), LED off before the pin drives it, lit (PC13 low) at the end"
+    else
+        bad "STM32=$name, the writes: PWR_CR ${pwr:-?} (want VOS bits $vos), BRR ${brr:-?}, LED: ${led:-?} ... last ${last:-?}"
     fi
 done
 
@@ -167,6 +302,19 @@ if make run $sv >"$OUT/sphere-run.log" 2>&1; then
         ok "resolution 320 240, no SIZE: make run renders $dims, AA=3 by default, == rt --fixed --aa 3 ($cmp)"
     else
         bad "resolution 320 240: the board's frame is ${dims:-?}, against rt --fixed --aa 3: ${cmp:-?}"
+    fi
+    # the time on the wire: the frame's records (9 bytes of header, 60
+    # bands of 4 lines each with 9 bytes of framing, 230,400 of pixels, 5
+    # at the end) and the report lines, 10 bits a byte at 115200 baud
+    sent=$(sed -n 's/^ *uart_bytes \([0-9]*\)$/\1/p' "$OUT/sphere-run.log")
+    frame=$((9 + 60 * 9 + 320 * 240 * 3 + 5))
+    wire=$(awk -v n="${sent:-0}" 'BEGIN { printf "%.3g s", n * 10 / 115200 }')
+    if [ -n "$sent" ] && [ "$sent" -gt $frame ] && [ "$sent" -lt $((frame + 2000)) ] &&
+       grep -q "^  on the wire *$wire at 115200 baud" "$OUT/sphere-run.log" &&
+       grep -q 'from reset to the last byte, render and wire together\.$' "$OUT/sphere-run.log"; then
+        ok "make run's report: a 320x240 RGB888 frame is $wire on the wire at 115200 baud ($sent bytes: $frame of frame records, the rest report lines), render and wire together"
+    else
+        bad "make run's wire time: uart_bytes ${sent:-?} (frame $frame), want $wire: $(grep -A2 'on the wire' "$OUT/sphere-run.log")"
     fi
     sum_run=$(cksum <"$OUT/sphere.bin")
     make image $sv >"$OUT/sphere-image.log" 2>&1

@@ -242,7 +242,8 @@ ea=$(same_elf "$OUT/same-a/same.nff") eb=$(same_elf "$OUT/same-b/same.nff") ea2=
 # Names in out/: the default run keeps the README's name; every choice
 # that changes the firmware (size, sampling, dither, format, depth,
 # texture filter, configuration, bands, cores, and the boards' own: panel,
-# flip, STM32 variant, crystal, LED, USART) gives another name and ELF,
+# flip, STM32 variant, crystal, HSE mode, LED, its polarity, USART, baud
+# rate) gives another name and ELF,
 # and make run's ELF is the one beside make image's file
 info() { make -s board-info "$@" | sed -n 's/.* elf=\([^ ]*\) out=\([^ ]*\).*/\2 \1/p'; }
 d=$(info) && [ "${d%% *}" = out/showpiece-mps2-an385-fixed ] && ok "the default run: ${d%% *}.png" || bad "the default run's name: $d"
@@ -254,12 +255,14 @@ for v in "" "SIZE=64x64" "SIZE=64x48" "AA=0" "AA=2" "AA=3,20" "SPP=2" "DITHER=1"
          "BOARD=pico" "BOARD=pico PANEL=240x240" "BOARD=pico PANEL_FLIP=1" "BOARD=pico PANEL=240x240 PANEL_FLIP=1" \
          "BOARD=pico SIZE=160x120" "BOARD=pico AA=3" "BOARD=pico PICO_DISPLAY=uart" "BOARD=pico PICO_DIVIDER=0" \
          "BOARD=stm32f4" "BOARD=stm32f4 STM32=nucleo64" "BOARD=stm32f4 HSE_MHZ=25" "BOARD=stm32f4 STM32_LED=PC1" \
-         "BOARD=stm32f4 STM32_USART=2" "BOARD=stm32f4 AA=0" "BOARD=stm32f4 SIZE=160x120"; do
+         "BOARD=stm32f4 STM32_USART=2" "BOARD=stm32f4 AA=0" "BOARD=stm32f4 SIZE=160x120" \
+         "BOARD=stm32f4 STM32=blackpill-f411" "BOARD=stm32f4 STM32=blackpill-f401" "BOARD=stm32f4 HSE=bypass" \
+         "BOARD=stm32f4 STM32_LED_ON=low" "BOARD=stm32f4 BAUD=921600"; do
     echo "$(info $v) $v" >>"$names"
 done
 dup_out=$(awk '{ print $1 }' "$names" | sort | uniq -d) dup_dir=$(awk '{ print $2 }' "$names" | sort | uniq -d)
-if [ -z "$dup_out$dup_dir" ] && [ "$(wc -l <"$names")" = 35 ] && ! awk '$1 == "" || $2 == ""' "$names" | grep -q .; then
-    ok "35 builds, 35 out/ names and ELFs: $(awk 'NR > 1 { printf "%s%s", sep, $1; sep = ", " }' "$names" | sed 's,out/showpiece-,,g' | cut -c1-400)..."
+if [ -z "$dup_out$dup_dir" ] && [ "$(wc -l <"$names")" = 40 ] && ! awk '$1 == "" || $2 == ""' "$names" | grep -q .; then
+    ok "40 builds, 40 out/ names and ELFs: $(awk 'NR > 1 { printf "%s%s", sep, $1; sep = ", " }' "$names" | sed 's,out/showpiece-,,g' | cut -c1-400)..."
 else
     bad "out/ names or ELFs shared: $dup_out $dup_dir"
 fi

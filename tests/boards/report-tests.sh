@@ -13,6 +13,8 @@
 #    two cores: both cores' instructions a pixel, summed); a board
 #    missing from the table gets a sentence saying there is no time, not
 #    an empty figure;
+#  - the time on the wire where the report gives the UART's rate and
+#    bytes (the stm32f4's uart_baud, uart_bytes), with the render's;
 #  - the emulator that ran it named right (rp2040js where board.mk sets
 #    no QEMU, else QEMU) with its wall time, and no such sentence when the
 #    report has no wall time; and every runner prints the wall-time line
@@ -139,6 +141,25 @@ if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q 'so no time is
     ok "$b, no row in the time table: says no time is given"
 else
     bad "$b, no row in the time table: $(sentences "$out") | $out"
+fi
+
+# a board that reports its UART's rate and bytes (the stm32f4): the time
+# on the wire, 10 bits a byte, and reset to the last byte, render and
+# wire together; a board that does not gets no such line
+b=stm32f4
+info=$(make -s --no-print-directory -f Makefile -f "$tmp/title.mk" print-title BOARD=$b 2>&1)
+hz=${info%%|*} title=${info#*|}
+printf 'pixels 76800\nrender_instructions 69047664\ninstructions_per_pixel 899\nuart_baud 921600\nuart_bytes 230954\n' >"$tmp/wire.txt"
+out=$(summarize $b "$tmp/wire.txt" "")
+cpi=$(awk -F, -v b="$b" '$1 == b && $4 == "1 sample" { printf "%.2f", $7 }' "$table")
+wire=$(awk 'BEGIN { printf "%.3g s", 230954 * 10 / 921600 }')
+both=$(awk -v c="$cpi" -v hz="$hz" 'BEGIN { printf "%.3g s", 69047664 * c / hz + 230954 * 10 / 921600 }')
+if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "on the wire *$wire at 921600 baud (8N1: 10 bits a byte), for the 230,954 bytes" &&
+    printf '%s\n' "$out" | grep -q "^ *$both from reset to the last byte, render and wire together\.$" &&
+    ! summarize mps2-an385 "$tmp/bare.txt" "" | grep -q 'on the wire'; then
+    ok "$b: on the wire $wire (230,954 bytes at 921600 baud), $both from reset to the last byte; none on a board without uart_baud"
+else
+    bad "$b: the time on the wire ($wire, $both): $(sentences "$out") | $out"
 fi
 
 # every runner prints the wall-time line summary.sh reads

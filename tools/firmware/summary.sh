@@ -1,7 +1,8 @@
 #!/bin/sh
 # summary.sh REPORT EXACT AREA BLURRED: make run's report. A few plain
 # lines first (what was rendered on which board, the time on the board,
-# how close the image is to the exact one and to what a viewer sees, where
+# the time on the wire where the board reports its UART's rate, how
+# close the image is to the exact one and to what a viewer sees, where
 # the PNG is, which emulator ran it), then the board's own report lines
 # (REPORT: board-run's output).
 # EXACT, AREA, BLURRED: `rt compare` lines of the board's image against
@@ -56,6 +57,7 @@ time_lines() {
         else counter="SysTick"; fi
         [ "$emulator" = rp2040js ] && counter="$counter under rp2040js (its Cortex-M0+ timing, code in SRAM)"
         time=$(awk -v c="$cycles" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", c / hz }')
+        render_s=$(awk -v c="$cycles" -v hz="$CLOCK_HZ" 'BEGIN { print c / hz }')
         printf '  %-15s %s at %s MHz, counted by %s;\n' "on the board" "$time" "$mhz" "$counter"
         printf '  %-15s %s instructions a pixel%s.\n' "" "$ipp" "$both"
         first=$(value first_picture_cycles)
@@ -79,6 +81,7 @@ time_lines() {
             esac
             cpi=${cpi%%|*}
             time=$(awk -v n="$instr" -v c="$cpi" -v hz="$CLOCK_HZ" 'BEGIN { printf "%.3g s", n * c / hz }')
+            render_s=$(awk -v n="$instr" -v c="$cpi" -v hz="$CLOCK_HZ" 'BEGIN { print n * c / hz }')
             if [ -n "$(value critical_path_instructions)" ]; then # the slowest core's share
                 what="the critical path's $(echo "$instr" | commas) instructions ($(value cores) cores)"
             else
@@ -96,10 +99,32 @@ time_lines() {
     fi
 }
 
+# The time the picture takes on the wire, where the board reports its
+# console's rate and the bytes it carried (uart_baud, uart_bytes: the
+# stm32f4): 10 bits a byte (8N1). The board sends each band when it is
+# done and renders on once it is out, so from reset to the last byte
+# takes the render's time and the wire's together.
+wire_lines() {
+    baud=$(value uart_baud) bytes=$(value uart_bytes)
+    [ -n "$baud" ] && [ -n "$bytes" ] || return 0
+    wire=$(awk -v n="$bytes" -v b="$baud" 'BEGIN { printf "%.3g s", n * 10 / b }')
+    printf '  %-15s %s at %s baud (8N1: 10 bits a byte), for the %s bytes the UART\n' "on the wire" "$wire" \
+        "$baud" "$(echo "$bytes" | commas)"
+    printf '  %-15s carried (the frame'"'"'s records and the report lines)' ""
+    if [ -n "$render_s" ]; then
+        printf ';\n  %-15s %s from reset to the last byte, render and wire together.\n' "" \
+            "$(awk -v r="$render_s" -v n="$bytes" -v b="$baud" 'BEGIN { printf "%.3g s", r + n * 10 / b }')"
+    else
+        printf '.\n'
+    fi
+}
+
 echo
 echo "$SCENE, $SIZE, depth $DEPTH, $how"
 echo "rendered by the $build firmware on $BOARD: $BOARD_TITLE, at $mhz MHz."
+render_s=
 time_lines
+wire_lines
 case $SAMPLING in
 *--aa*) same="at the same samples (its splits replayed)" ;;
 *) same="at the same samples" ;;
