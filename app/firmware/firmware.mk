@@ -449,11 +449,12 @@ run: deps-board
 	@build/host/rt $(SCENE) -o $(RUN_REF) --double $(RUN_SAMPLING) --same-samples $(BACKEND) --format $(FORMAT) $(RUN_DITHER) --depth $(DEPTH) --size $(SIZE) --quiet
 	$(show) RT "$(RUN_AREA) (the pixel-area image: rt --double --spp 16 --texture-filter off)"
 	@build/host/rt $(SCENE) -o $(RUN_AREA) --double --spp 16 --texture-filter off --format $(RUN_AREA_FORMAT) --depth $(DEPTH) --size $(SIZE) --quiet
+	@$(call copy_images,true)
 	@SCENE=$(SCENE) SIZE=$(SIZE) DEPTH=$(DEPTH) BOARD=$(BOARD) BOARD_TITLE="$(BOARD_TITLE)" CLOCK_HZ=$(BOARD_CLOCK_HZ) BACKEND=$(BACKEND) SAMPLING="$(RUN_SAMPLING)$(if $(RUN_DITHER), $(RUN_DITHER))" \
 	    OUT=$(RUN_OUT) IMAGE_NOTE="$(if $(RUN_SAMPLING),, (one sample a pixel: make run AA=L anti-aliases, as RAM allows))" \
+	    IMAGES="$(foreach f,$(BOARD_IMAGES),$(basename $(RUN_OUT))$(suffix $(f)))" \
 	    sh tools/firmware/summary.sh $(RUN_REPORT) "$$(build/host/rt compare $(RUN_OUT) $(RUN_REF))" \
 	    "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA))" "$$(build/host/rt compare $(RUN_OUT) $(RUN_AREA) --blur 1)"
-	@$(call copy_images,echo "  image for the board:")
 
 size: $(FW_ELF)
 	@CROSS=$(BOARD_CROSS) SINK_CALLBACKS=$(BOARD_SINK_CALLBACKS) tools/firmware/footprint.sh $(FW_ELF) $(FW_DIR)/$(BACKEND) $(FW_DIR)/report-$(BACKEND).txt

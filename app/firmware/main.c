@@ -89,6 +89,8 @@ int main(void)
     static rt_stats_t st;
     static rt_fb_sink_t sink;
     uint32_t pixels = (uint32_t)BOARD_WIDTH * BOARD_HEIGHT;
+    /* (the render starts right after sink_init: a sink may time the frame
+     * from there, as the Pico's does) */
 #if BOARD_CORES == 1
     sink_init(&sink, BOARD_FORMAT, band, sizeof band);
 #if BOARD_DITHER

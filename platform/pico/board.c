@@ -15,7 +15,11 @@
  *  - Console: UART0 on GP0 (TX) and GP1 (RX), 115200 8N1.
  *  - Cycles: SysTick counts clk_sys cycles down from 2^24 - 1; its
  *    interrupt counts the wraps (every 0.134 s at 125 MHz). Each core has
- *    its own SysTick (in its own PPB) and its own count of wraps. The M0+
+ *    its own SysTick (in its own PPB) and its own count of wraps, started
+ *    when that core starts: a difference of two readings holds only on
+ *    one core. A time that starts on one core and may end on the other
+ *    (the sink's) is the TIMER's instead: microseconds, one count for
+ *    both, from the watchdog's tick at 1 MHz of the crystal. The M0+
  *    has no instruction counter (BOARD_INSTR_COUNTER := 0): run.mjs
  *    counts each core's instructions from outside, between its calls of
  *    port_cycles_read (core 1: around its whole share, core1_start).
@@ -44,6 +48,10 @@
  * 12 MHz, rounded up (the datasheet's formula) */
 #define XOSC_HZ 12000000u
 #define XOSC_STARTUP_DELAY ((XOSC_HZ / 1000u + 255u) / 256u)
+/* the watchdog's tick, which the TIMER counts: every XOSC_HZ / 1 MHz
+ * cycles of clk_ref (the crystal, once clocks_init has switched it) */
+#define TICK_CYCLES (XOSC_HZ / 1000000u)
+_Static_assert(TICK_CYCLES * 1000000u == XOSC_HZ && TICK_CYCLES <= 0x1ffu, "the tick: a whole count of clk_ref cycles, 9 bits");
 
 /* PLL_SYS: 12 MHz / REFDIV 1 * FBDIV 125 = VCO 1500 MHz (750..1600
  * allowed), / POSTDIV1 6 / POSTDIV2 2 = 125 MHz */
@@ -170,6 +178,8 @@ void port_init(void)
         report_text(bringup_failed);
         port_exit(5);
     }
+    WATCHDOG_TICK = WATCHDOG_TICK_ENABLE | TICK_CYCLES;
+    board_unreset(RESET_TIMER, "bring-up: TIMER did not leave reset");
 #if BOARD_CORES > 1
     SIO_SPINLOCK_ATOMIC = 1; /* free, even if held across a reset that left SIO alone (a debugger's) */
 #endif
@@ -207,6 +217,10 @@ uint64_t board_cycles(void)
     } while (wraps != *w);
     return ((uint64_t)wraps << 24) + (SYST_TOP - count);
 }
+
+/* Microseconds by the TIMER, the same count on both cores (the low
+ * word: differences hold for 71 minutes). */
+uint32_t board_us(void) { return TIMER_TIMERAWL; }
 
 /* The firmware's marks (render start and end, display output): run.mjs
  * counts each core's instructions between its calls of this very

@@ -10,8 +10,9 @@
 # ELF (image.mk). tools/emu/pico/run.mjs boots that UF2 under rp2040js
 # the way the chip does (rp2040js pinned in that folder's package.json,
 # installed into its node_modules/ by npm ci, by tools/ensure-deps.sh). Variables: app/firmware/firmware.mk.
-# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ)
-BOARD_TITLE    := Raspberry Pi Pico (RP2040) with both Cortex-M0+ cores and no FPU
+# the board in a phrase, for make run's report (its clock: BOARD_CLOCK_HZ),
+# with the cores that render (CORES, set after this file: hence =)
+BOARD_TITLE     = Raspberry Pi Pico (RP2040) with $(if $(filter 1,$(CORES)),one Cortex-M0+ core of its two (CORES=1),both Cortex-M0+ cores) and no FPU
 BOARD_ARCH     := cortex-m
 BOARD_CROSS    := arm-none-eabi-
 BOARD_CPU      := -mcpu=cortex-m0plus -mthumb

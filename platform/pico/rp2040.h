@@ -24,6 +24,7 @@
 #define RESET_PADS_BANK0 (1u << 8)
 #define RESET_PLL_SYS (1u << 12)
 #define RESET_SPI0 (1u << 16)
+#define RESET_TIMER (1u << 21)
 #define RESET_UART0 (1u << 22)
 
 /* XOSC: the 1-15 MHz range; STARTUP counts in units of 256 crystal cycles */
@@ -57,6 +58,16 @@
 #define CLK_REF_SRC_XOSC 2u
 #define CLK_SYS_SRC_AUX 1u
 #define CLK_PERI_ENABLE (1u << 11)
+
+/* WATCHDOG's tick generator: a tick every CYCLES clk_ref cycles, the
+ * TIMER's count (the block is outside RESETS) */
+#define WATCHDOG_TICK REG(0x4005802cu)
+#define WATCHDOG_TICK_ENABLE (1u << 9)
+
+/* TIMER: a 64-bit count of the watchdog's ticks, one block for both
+ * cores; TIMERAWL is its low word, read without the TIMELR/TIMEHR latch
+ * (which the two cores would share) */
+#define TIMER_TIMERAWL REG(0x40054028u)
 
 /* IO_BANK0: each pin's function */
 #define GPIO_CTRL(n) REG(0x40014004u + 8u * (n))

@@ -23,7 +23,9 @@
 #    each pass, taken by run.mjs at board_pass_shown, equals the host's
 #    rt --progressive-pass N (two sizes, both panels), pass 1 is on the
 #    panel within 5% of the frame's time, and PROGRESSIVE=0 draws in
-#    scanline order (its progress in rows);
+#    scanline order (its progress in rows); the board's own frame_ms and
+#    first_picture_us equal the runner's count within 2%, on two cores
+#    where core 1 ends pass 1, and on one;
 #  - the UART stream (PICO_DISPLAY=uart) equals the host's in rgb888;
 #  - both cores (the default; app/firmware/bands.c) give the panel
 #    bytes core 0 alone gives (CORES=1), the report has each core's
@@ -39,7 +41,8 @@
 #  - what silicon would not survive fails with its reason: a damaged
 #    boot2 CRC, clk_peri left stopped (tests/boards/pico_clk_peri_off.c), and on small
 #    images (tests/boards/pico_fault.S) a block written in reset, a bkpt, a read
-#    of 0x40068000, a boot2 that leaves XIP unset; a mirrored
+#    of 0x40068000, a boot2 that leaves XIP unset, the TIMER read with
+#    the watchdog's tick as at reset; a mirrored
 #    MADCTL (the image differs), no INVON (inverted colours), a missing
 #    row offset, a byte sent with chip select high, and the damaged
 #    transfers of before (data short of its window, a window off the
@@ -53,7 +56,8 @@
 #  - the scene's resolution is the frame when SIZE is not given: a
 #    `resolution 320 240` scene fills the 320x240 panel (make run), the
 #    UF2 says so in its check line, make image with the same variables
-#    hands over the UF2 make run ran, and on PANEL=240x240 the scene is a
+#    hands over the UF2 make run ran (make run's image line names it
+#    beside the PNG), and on PANEL=240x240 the scene is a
 #    build error naming both sizes; a 160x120 frame is centred on the
 #    panel with every other pixel black (the whole panel checked).
 RT=${1:-build/host/rt}
@@ -199,6 +203,28 @@ progressive_passes() { # NAME SCENE SIZE DEPTH [MAKE-VARS]
 progressive_passes card-320 scenes/bench/card.nff 40x30 3
 progressive_passes showpiece-odd-320 scenes/showpiece.nff 47x31 5
 progressive_passes whitted-240 scenes/bench/whitted.nff 40x30 5 "PANEL=240x240 CORES=1"
+# The board's own times (frame_ms, first_picture_us: the TIMER's
+# microseconds, one count for both cores) against the runner's count of
+# the same events on its one clock (render start on core 0 to its end,
+# and to pass 1 on the panel), within 2%: on both cores where core 1
+# ends pass 1 (started on core 0, so the core's own SysTick would not
+# do), and on core 0 alone
+board_times() { # NAME CORE-ENDING-PASS-1
+    r=$OUT/$1.report
+    fp=$(val first_picture_us "$r") efp=$(val emulator_first_picture_us "$r") fm=$(val frame_ms "$r") efu=$(val emulator_frame_us "$r")
+    if grep -q "^emulator_first_picture_us .*pass 1 ended on core $2)" "$r" &&
+       d=$(awk -v fp="$fp" -v efp="$efp" -v fm="$fm" -v efu="$efu" 'BEGIN {
+           if (!(efp > 0 && efu > 0 && fp != "" && fm != "")) exit 1
+           a = (fp - efp) / efp * 100; b = (fm * 1000 - efu) / efu * 100
+           printf "%+.2f%% and %+.2f%%", a, b
+           exit !(a <= 2 && a >= -2 && b <= 2 && b >= -2) }'); then
+        ok "$1: first_picture_us $fp and frame_ms $fm against the runner's $efp us and $efu us ($d, within 2%), pass 1 ended on core $2"
+    else
+        bad "$1: first_picture_us '${fp:-?}', frame_ms '${fm:-?}' against the runner's '${efp:-?}' us, '${efu:-?}' us (within 2%), pass 1 on core $2: $(grep '^emulator_first' "$r")"
+    fi
+}
+board_times card-320 1
+board_times whitted-240 0
 grep -q '^progress_pass' "$OUT/showpiece-odd-240-flip.report" && bad "PROGRESSIVE=0 reports passes" ||
     ok "PROGRESSIVE=0: scanline order, no passes"
 # what progressive display cannot draw does not build
@@ -301,7 +327,8 @@ arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -nostdlib -nostartfiles -e start -
     -o "$OUT/fault/boot2.elf" tests/boards/pico_fault.S && arm-none-eabi-objcopy -O binary "$OUT/fault/boot2.elf" "$OUT/fault/boot2.bin" &&
     node tools/emu/pico/uf2.mjs boot2 "$OUT/fault/boot2.bin" "$OUT/fault/boot2.S" &&
     arm-none-eabi-gcc -mcpu=cortex-m0plus -mthumb -c "$OUT/fault/boot2.S" -o "$OUT/fault/boot2.o"
-for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothing is mapped" "XIP $OUT/fault/boot2.o SSI not set up"; do
+for f in "RESET $boot2 in reset" "BKPT $boot2 HardFault" "UNMAPPED $boot2 nothing is mapped" "XIP $OUT/fault/boot2.o SSI not set up" \
+         "TIMER $boot2 TIMER read with the watchdog's tick every 0 cycles"; do
     set -- $f
     name=$1 obj=$2
     shift 2
@@ -488,6 +515,12 @@ if make run $sv >"$OUT/sphere-run.log" 2>&1; then
     else
         bad "resolution 320 240 on the pico: a $(dims "$OUT/sphere.png") frame, ${cmp:-differs}: $(grep '^ *panel' "$OUT/sphere-run.log")"
     fi
+    # the summary's image line names both files make run wrote
+    img=$(grep '^  image ' "$OUT/sphere-run.log")
+    case $img in
+    *" $OUT/sphere.png "*", and for the board $OUT/sphere.uf2.") ok "make run's image line names the PNG and the UF2:$(echo "$img" | tr -s ' ')" ;;
+    *) bad "make run's image line does not name $OUT/sphere.png and $OUT/sphere.uf2: '$img'" ;;
+    esac
     sum_run=$(cksum <"$OUT/sphere.uf2")
     make image $sv >"$OUT/sphere-image.log" 2>&1
     if [ -n "$elf" ] && [ "$elf" = "$(elf_of SCENE="$sph").elf" ] && cmp -s "$OUT/sphere.uf2" "${elf%.elf}.uf2" &&

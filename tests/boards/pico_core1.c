@@ -57,11 +57,9 @@
 #define NVIC_ICER REG(0xe000e180u)
 #define NVIC_ISPR REG(0xe000e200u)
 
-#define RESET_TIMER (1u << 21)
 #define PSM_FRCE_OFF 0x40010004u
 #define PSM_PROC1 (1u << 16)
 #define TIMER_ALARM0 REG(0x40054010u)
-#define TIMER_TIMERAWL REG(0x40054028u)
 #define TIMER_INTR REG(0x40054034u)
 #define TIMER_INTE REG(0x40054038u)
 #define TIMER_IRQ_0 0u
@@ -122,14 +120,25 @@ static void report(const char *key, uint32_t v)
 }
 static void uart_up(void)
 {
-    CLK_PERI_CTRL = CLK_PERI_ENABLE; /* from clk_sys (the ring oscillator) */
+    /* clk_ref (and clk_sys, which runs from it) from the 12 MHz crystal,
+     * for the TIMER's tick at 1 MHz: 12 cycles of clk_ref */
+    XOSC_CTRL = XOSC_CTRL_1_15MHZ;
+    XOSC_STARTUP = 47u; /* 1 ms */
+    XOSC_CTRL = XOSC_CTRL_1_15MHZ | XOSC_CTRL_ENABLE;
+    while (!(XOSC_STATUS & XOSC_STATUS_STABLE))
+        ;
+    CLK_REF_CTRL = CLK_REF_SRC_XOSC;
+    while (!(CLK_REF_SELECTED & (1u << CLK_REF_SRC_XOSC)))
+        ;
+    WATCHDOG_TICK = WATCHDOG_TICK_ENABLE | 12u;
+    CLK_PERI_CTRL = CLK_PERI_ENABLE; /* from clk_sys (the crystal) */
     CLR(RESETS_RESET) = RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER;
     while ((RESETS_DONE & (RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER)) !=
            (RESET_IO_BANK0 | RESET_PADS_BANK0 | RESET_UART0 | RESET_TIMER))
         ;
     GPIO_CTRL(0) = 2u; /* UART0 TX */
-    UART0_IBRD = 3u; /* 115200 from 6.5 MHz */
-    UART0_FBRD = 34u;
+    UART0_IBRD = 6u; /* 115200 from 12 MHz */
+    UART0_FBRD = 33u;
     UART0_LCR_H = 0x70u;
     UART0_CR = 0x301u;
     /* the frame: header, one band of one black pixel, its end */

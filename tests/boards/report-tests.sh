@@ -15,6 +15,8 @@
 #    an empty figure;
 #  - the time on the wire where the report gives the UART's rate and
 #    bytes (the stm32f4's uart_baud, uart_bytes), with the render's;
+#  - the pico's title says both cores, or one under CORES=1; the image
+#    line names the PNG and the board's files to flash (IMAGES), if any;
 #  - the emulator that ran it named right (rp2040js where board.mk sets
 #    no QEMU, else QEMU) with its wall time, and no such sentence when the
 #    report has no wall time; and every runner prints the wall-time line
@@ -41,10 +43,10 @@ done
 exact="psnr 70.96 dB  max-error 5  over2 0.100%  over8 0.000%"
 area="psnr 48.28 dB  max-error 9  over2 1.000%  over8 0.189%"
 blur="psnr 58.39 dB  max-error 3  over2 0.000%  over8 0.000%"
-# summarize BOARD REPORT SAMPLING [TABLE]: summary.sh's opening lines
+# summarize BOARD REPORT SAMPLING [TABLE [IMAGES]]: summary.sh's opening lines
 summarize() {
     SCENE=scenes/showpiece.nff SIZE=128x128 DEPTH=5 BOARD=$1 BOARD_TITLE=$title CLOCK_HZ=$hz BACKEND=fixed \
-        SAMPLING=$3 OUT=out/x.png IMAGE_NOTE="" TIME_TABLE=${4:-$table} \
+        SAMPLING=$3 OUT=out/x.png IMAGE_NOTE="" TIME_TABLE=${4:-$table} IMAGES=${5:-} \
         sh tools/firmware/summary.sh "$2" "$exact" "$area" "$blur" | sed '/^The board/,$d'
 }
 # sentences TEXT: what is wrong with the opening lines as sentences, or nothing
@@ -133,6 +135,38 @@ if [ -z "$(sentences "$out")" ] && printf '%s\n' "$out" | grep -q "22,000 instru
 else
     bad "pico, two cores: $(sentences "$out") | $out"
 fi
+# the pico's title says how many cores render: both, or one (CORES=1)
+for c in 2 1; do
+    info=$(make -s --no-print-directory -f Makefile -f "$tmp/title.mk" print-title BOARD=pico CORES=$c 2>&1)
+    hz=${info%%|*} title=${info#*|}
+    out=$(summarize pico "$tmp/pico2.txt" "")
+    case $c in
+    2) want="with both Cortex-M0+ cores" not="one Cortex-M0+ core" ;;
+    *) want="with one Cortex-M0+ core of its two (CORES=1)" not="both" ;;
+    esac
+    line=$(printf '%s\n' "$out" | sed -n 3p)
+    if [ -z "$(sentences "$out")" ] && printf '%s\n' "$line" | grep -qF "$want" && ! printf '%s\n' "$line" | grep -qF "$not"; then
+        ok "pico, CORES=$c: \"$line\""
+    else
+        bad "pico, CORES=$c: expected \"$want\" and no \"$not\": $line $(sentences "$out")"
+    fi
+done
+# the image line names the PNG and the board's files to flash (copied
+# beside it by make run), and only the PNG on a board with none
+for case in "pico|out/x.uf2|out/x.png, and for the board out/x.uf2." \
+            "stm32f4|out/x.bin out/x.hex|out/x.png, and for the board out/x.bin and out/x.hex." \
+            "mps2-an385||out/x.png."; do
+    b=${case%%|*} rest=${case#*|}
+    images=${rest%%|*} want=${rest#*|}
+    info=$(make -s --no-print-directory -f Makefile -f "$tmp/title.mk" print-title BOARD=$b 2>&1)
+    hz=${info%%|*} title=${info#*|}
+    line=$(summarize $b "$tmp/pico2.txt" "" "$table" "$images" | grep '^  image ')
+    if [ "$(printf '%s\n' "$line" | sed 's/^  image  *//')" = "$want" ]; then
+        ok "$b: the image line names ${images:-no file for the board}: $line"
+    else
+        bad "$b: the image line, expected '$want': '$line'"
+    fi
+done
 # a board and backend the table does not have: a sentence, no figure
 head -1 "$table" >"$tmp/empty.csv"
 out=$(summarize $b "$tmp/bare.txt" "--aa 3" "$tmp/empty.csv")

@@ -8,7 +8,8 @@
 # EXACT, AREA, BLURRED: `rt compare` lines of the board's image against
 # the exact model at the same samples, the pixel-area image, and the
 # same blurred by a pixel. The rest comes from the environment:
-# SCENE SIZE DEPTH BOARD BACKEND SAMPLING OUT IMAGE_NOTE, and from the
+# SCENE SIZE DEPTH BOARD BACKEND SAMPLING OUT IMAGE_NOTE, IMAGES (the
+# board's files to flash, copied beside OUT, if it has any), and from the
 # board's board.mk BOARD_TITLE (the board in a phrase) and CLOCK_HZ
 # (BOARD_CLOCK_HZ). TIME_TABLE (default bench/time.csv, which make bench
 # writes) gives the cycles an instruction of a board without a cycle
@@ -135,7 +136,9 @@ printf '  %-15s %s dB from the image averaged over each pixel'"'"'s area, %s of 
     "what is seen" "$(field psnr "$area")" "$(field over8 "$area")"
 printf '  %-15s more than 8/255 (%s dB both blurred by a pixel, as an eye sees a small panel).\n' "" \
     "$(field psnr "$blurred")"
-printf '  %-15s %s%s.\n' "image" "$OUT" "$IMAGE_NOTE"
+# the PNG, and the files for the board beside it
+for_board=$(printf '%s\n' $IMAGES | awk 'NF { s = n++ ? s " and " $0 : $0 } END { if (n) printf ", and for the board %s", s }')
+printf '  %-15s %s%s%s.\n' "image" "$OUT" "$IMAGE_NOTE" "$for_board"
 echo "(PSNR: 10 log10(1 / mean squared error); above about 40 dB a difference is hard to see.)"
 sed -n 's/^\([^ ]*\) wall time on the host (\(.*\)): \(.*\)$/\1 ran it in \3 on this machine (\2)./p' "$report"
 echo

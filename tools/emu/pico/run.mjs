@@ -30,7 +30,12 @@
 //       panel's frame after each pass in FIRMWARE.passN.stream (taken
 //       where the firmware calls board_pass_shown), the clocks at the
 //       end, the render's time at CLOCK_HZ from the firmware's
-//       render_cycles, and the host's wall time.
+//       render_cycles, and the host's wall time. The firmware's own
+//       frame_ms and first_picture_us (the TIMER's microseconds) are
+//       compared with the runner's count of the same events
+//       (emulator_frame_us, emulator_first_picture_us, which also says
+//       which core ended pass 1): over 2% apart, beyond the report's
+//       rounding, fails.
 //       --module: the panel module on the pins (st7789.mjs's PANELS,
 //       320x240 by default; ",flip": turned by 180 degrees), which the
 //       decoder takes as the glass the picture is seen through.
@@ -80,7 +85,9 @@
 // flash before boot2 has set the SSI up for it (or with a set-up the flash
 // model does not answer, or a flash clock over the read command's limit);
 // bkpt or an undefined instruction (a HardFault on a board with no
-// debugger: no semihosting); an unaligned word access. The SSI here is
+// debugger: no semihosting); an unaligned word access; the TIMER read
+// while the watchdog's tick does not give it microseconds (rp2040js
+// counts them whatever the tick). The SSI here is
 // our own small model, rp2040js's is a stub: standard-SPI 03h or 0Bh XIP
 // reads only; quad-I/O, direct-mode transfers and flash timing are not
 // modelled.
@@ -120,6 +127,7 @@ const MARK_SYMBOL = 'port_cycles_read';
 const GUARD_SYMBOLS = ['__spinlocked_start', '__spinlocked_end']; // the image's spinlock-guarded data
 const PASS_SYMBOL = 'board_pass_shown'; // progressive display: a pass is on the panel
 const SYSTICK_TOLERANCE = 0.1; // percent
+const TIME_TOLERANCE = 2; // percent: the board's frame_ms and first_picture_us (TIMER) against the emulator's count
 const hex = (v) => `0x${(v >>> 0).toString(16).padStart(8, '0')}`;
 
 function fail(msg) {
@@ -448,6 +456,32 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
   }
   setXip(false);
 
+  // The TIMER counts the watchdog's ticks: microseconds only once the
+  // tick is enabled with CYCLES = clk_ref in MHz (at reset: enabled,
+  // CYCLES 0). rp2040js counts microseconds whatever the tick, so a read
+  // fails here where the chip's count would not be microseconds.
+  const WATCHDOG_TICK = 0x2c, TICK_ENABLE = 1 << 9, TICK_CYCLES = 0x1ff;
+  const watchdog = mcu.peripherals[0x40058], timer = mcu.peripherals[0x40054];
+  let tick = TICK_ENABLE;
+  const wdWrite = watchdog.writeUint32Atomic, wdRead = watchdog.readUint32;
+  watchdog.writeUint32Atomic = function (offset, value, type) {
+    if (offset === WATCHDOG_TICK) tick = (type ? atomic(tick, type, value) : value) & (TICK_ENABLE | TICK_CYCLES);
+    return wdWrite.call(this, offset, value, type);
+  };
+  watchdog.readUint32 = function (offset) {
+    return offset === WATCHDOG_TICK ? tick | (tick & TICK_ENABLE ? 1 << 10 : 0) : wdRead.call(this, offset); // (RUNNING)
+  };
+  const timerRead = timer.readUint32;
+  timer.readUint32 = function (offset) {
+    const v = timerRead.call(this, offset); // (in reset: fails there first)
+    if (offset === 0x08 || offset === 0x0c || offset === 0x24 || offset === 0x28) { // TIMEHR, TIMELR, TIMERAWH, TIMERAWL
+      const ref = mcu.clocks.refFreq, cycles = tick & TICK_CYCLES;
+      if (!(tick & TICK_ENABLE) || cycles * 1e6 !== ref)
+        stop(`TIMER read with the watchdog's tick ${tick & TICK_ENABLE ? `every ${cycles} cycles` : 'disabled'} of clk_ref (${(ref / 1e6).toFixed(3)} MHz): on the chip the TIMER would not count microseconds (WATCHDOG TICK: ENABLE and CYCLES = clk_ref in MHz)`);
+    }
+    return v;
+  };
+
   // clocks as at reset: clk_ref and clk_sys from the ring oscillator,
   // clk_peri stopped (rp2040js computes them from its CLOCKS registers)
   mcu.updateClocks();
@@ -558,7 +592,7 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
             if (pc === markPC || pc === passPC) {
               // an interrupt taken before it would run the handler first
               if (core.interruptsUpdated && core.checkForInterrupts()) continue;
-              if (pc === passPC) panel.pass(core, spi.length);
+              if (pc === passPC) panel.pass(core, 0, spi.length);
               else {
                 marks[0].push([n0, core.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
                 panel.mark(core.cycles);
@@ -600,7 +634,7 @@ function run(elfPath, uf2Path, { noCrystal = false, xipModel = false } = {}) {
           } else {
             if (pc === markPC || pc === passPC) {
               if (c.interruptsUpdated && c.checkForInterrupts()) continue;
-              if (pc === passPC) panel.pass(c, spi.length);
+              if (pc === passPC) panel.pass(c, id, spi.length);
               else {
                 marks[id].push([id ? n1 : n0, c.cycles, xip.image.reads, xip.image.misses, xip.inFlash.misses]);
                 if (!id) panel.mark(c.cycles);
@@ -662,8 +696,8 @@ function makePanelClock(mcu) {
       if (this.marks.length === 0) this.free = Math.min(this.free, cycles);
       this.marks.push(Math.max(this.free, cycles));
     },
-    pass(core, spiLength) {
-      this.passes.push({ pass: core.registers[0], cycles: core.cycles, spiLength, spiDone: Math.max(this.free, core.cycles) });
+    pass(core, id, spiLength) {
+      this.passes.push({ pass: core.registers[0], core: id, cycles: core.cycles, spiLength, spiDone: Math.max(this.free, core.cycles) });
     },
   };
 }
@@ -671,23 +705,34 @@ function makePanelClock(mcu) {
 // The frame's time from the render's start to the panel's last byte, and
 // with progressive passes the time to pass 1 on the panel and the panel
 // after each pass (BASE.passN.stream, the frame in rt's stream format);
-// throws what is wrong.
+// throws what is wrong. Also the times of the events the firmware times
+// itself (frame_ms, first_picture_us), on the emulator's one clock in
+// microseconds of clk_sys: render start (core 0's first mark) to its end
+// (core 0's last) and to the call of board_pass_shown after pass 1, on
+// whichever core made it; the DMA is instant there, as the firmware sees
+// it under the emulator. { lines, us: { frame_ms, first_picture_us } }
 function panelReport(r, base, module, fw, fh, hz) {
   const start = r.marks[0][0][1], end = r.panel.marks[r.panel.marks.length - 1];
+  const toUs = (c) => c / (r.clkSys / 1e6);
   const ms = (c) => (hz ? `, ${((c / hz) * 1e3).toFixed(1)} ms at ${hz / 1e6} MHz` : '');
-  const lines = [`frame_cycles ${Math.round(end - start)} (render start to the panel's last byte, SPI bytes at SPI0's clock${ms(end - start)})`];
+  const frameEnd = r.marks[0][r.marks[0].length - 1][1];
+  const lines = [`frame_cycles ${Math.round(end - start)} (render start to the panel's last byte, SPI bytes at SPI0's clock${ms(end - start)}; with the emulator's instant DMA: ${frameEnd - start})`,
+    `emulator_frame_us ${toUs(frameEnd - start).toFixed(1)} (render start to its end on core 0, at clk_sys ${r.clkSys / 1e6} MHz, the emulator's instant DMA)`];
+  const us = { frame_ms: toUs(frameEnd - start) };
   const { passes } = r.panel;
-  if (passes.length === 0) return lines;
+  if (passes.length === 0) return { lines, us };
   if (passes.map((p) => p.pass).join() !== '1,2,3,4,5,6,7') throw new Error(`progressive passes ended in the order ${passes.map((p) => p.pass).join()}, not 1..7`);
   const first = passes[0];
   lines.push(`first_picture_cycles ${Math.round(first.spiDone - start)} (render start to pass 1's last panel byte at SPI0's clock${ms(first.spiDone - start)}; with the emulator's instant DMA: ${first.cycles - start})`);
+  lines.push(`emulator_first_picture_us ${toUs(first.cycles - start).toFixed(1)} (render start to pass 1 on the panel, the emulator's instant DMA; pass 1 ended on core ${first.core})`);
+  us.first_picture_us = toUs(first.cycles - start);
   for (const p of passes) {
     const picture = decodePanel(r.spi.subarray(0, p.spiLength), module[0], module[1]);
     const [x0, y0] = checkBorder(picture, fw, fh);
     writeFileSync(`${base}.pass${p.pass}.stream`, panelStream(picture, fw, fh, x0, y0));
   }
-  lines.push(`progressive passes 1..7 on the panel: pass ends at ${passes.map((p) => Math.round(p.spiDone - start)).join(', ')} cycles; the frame after each: ${base}.passN.stream`);
-  return lines;
+  lines.push(`progressive passes 1..7 on the panel: pass ends at ${passes.map((p) => Math.round(p.spiDone - start)).join(', ')} cycles (on cores ${passes.map((p) => p.core).join(', ')}); the frame after each: ${base}.passN.stream`);
+  return { lines, us };
 }
 
 // The render's counts from the marks: start, (begin, end) pairs of display
@@ -767,6 +812,7 @@ const value = (key) => (rep.stdout.match(new RegExp(`^${key} (\\d+)$`, 'm')) ?? 
 
 // the runner's own counts of the render
 let systickOff = null;
+const timeOff = [];
 if (r.markSym === undefined) {
   console.log(`note: ${elf} has no ${MARK_SYMBOL}: no counts of the render from the emulator`);
 } else {
@@ -810,10 +856,25 @@ if (!streamed) {
   }
   if (!r.backlight) fail(`the backlight (GP${PIN_BACKLIGHT}) is off at the end: the panel shows nothing`);
   if (r.marks[0].length >= 2) {
+    let times;
     try {
-      for (const l of panelReport(r, base, module, fw, fh, Number(hz))) console.log(l);
+      times = panelReport(r, base, module, fw, fh, Number(hz));
     } catch (e) {
       fail(`${base}.spi: ${e.message}`);
+    }
+    for (const l of times.lines) console.log(l);
+    // the firmware's own times (the TIMER's microseconds) against the
+    // emulator's: within TIME_TOLERANCE, plus half the report's unit
+    for (const [key, emuUs] of Object.entries(times.us)) {
+      const got = value(key);
+      if (got === undefined) {
+        console.log(`note: no ${key} in the report: the board's time not compared`);
+        continue;
+      }
+      const unit = key.endsWith('_ms') ? 1000 : 1;
+      const off = ((Number(got) * unit - emuUs) / emuUs) * 100, allowed = TIME_TOLERANCE + (100 * unit) / 2 / emuUs;
+      console.log(`board ${key} ${got} against the emulator's ${(emuUs / unit).toFixed(unit > 1 ? 3 : 1)}: ${off >= 0 ? '+' : ''}${off.toFixed(2)}%`);
+      if (!(Math.abs(off) <= allowed)) timeOff.push(`${key} ${got} is ${off.toFixed(2)}% from the emulator's ${(emuUs / unit).toFixed(unit > 1 ? 3 : 1)}, over the ${allowed.toFixed(2)}% allowed (${TIME_TOLERANCE}% and the report's rounding)`);
     }
   }
   const img = receive(rt, [`${base}.frame.stream`, '-o', out]);
@@ -844,4 +905,5 @@ const cycles = value('render_cycles');
 if (hz && cycles !== undefined)
   console.log(`board render time at ${Number(hz) / 1e6} MHz (SysTick cycles under rp2040js's M0+ timing, code and scene tables in SRAM; display output excluded): ${(Number(cycles) / Number(hz)).toFixed(2)} s`);
 console.log(`rp2040js wall time on the host (${r.instructions} instructions, ${r.cycles} cycles in all, ${(r.cycles / r.wall / 1e6).toFixed(1)} M cycles/s): ${r.wall.toFixed(1)} s`);
+if (timeOff.length) fail(`the board's own time: ${timeOff.join('; ')}`);
 if (systickOff !== null) fail(`SysTick's render_cycles is ${systickOff.toFixed(4)}% from the emulator's count, over the ${SYSTICK_TOLERANCE}% allowed`);
