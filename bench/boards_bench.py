@@ -94,6 +94,19 @@ def measure(board, backend, scene, size, path=None, depth=5, out=OUT, variant=""
     return {"ipp": int(m.group(1)), "cpp": int(c.group(1)) if c else None, "png": png, "info": info, "args": args}
 
 
+# rp2040js emulates 2.5 to 5 million cycles a second: a 320x240 card frame
+# in the pico's soft float (6x its fixed build's cycles) is 10 to 20
+# minutes of emulation, with --aa 3 more than an hour. The full frames
+# (bench/scenes.md, bench/time.md) measure its fixed backend only;
+# bench/boards.md has its soft float at 64x64.
+FULL_FRAME_BACKENDS = {"pico": ["fixed"]}
+
+
+def full_frame_backends(board, backends):
+    """the backends of board the 320x240 benches measure"""
+    return [b for b in backends if b in FULL_FRAME_BACKENDS.get(board, backends)]
+
+
 def variants(board):
     """The board itself, then its build variants (BOARD_BENCH_VARIANTS), which
     are measured in the board's first backend only."""

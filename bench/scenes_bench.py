@@ -35,7 +35,7 @@ import sys
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, cycles, drop_unchanged, run, variants, write_csv  # noqa: E402
+from boards_bench import ROOT, board_info, boards, code_ram, cpi_of, cycles, drop_unchanged, full_frame_backends, run, variants, write_csv  # noqa: E402
 from boards_bench import measure as boards_measure  # noqa: E402
 
 OUT = os.path.join(ROOT, "build", "bench-scenes")
@@ -110,7 +110,7 @@ def main():
     sel = [] if a.from_csv else a.boards.split(",") if a.boards else boards()
     for b, v in [(b, v) for b in sel for v in variants(b)]:
         label = b + (" " + v if v else "")
-        backends = board_info(["BOARD=" + b])["backends"].split()
+        backends = full_frame_backends(b, board_info(["BOARD=" + b])["backends"].split())
         for be in backends[:1] if v else backends:
             for s in (a.scenes.split(",") if a.scenes else list(SCENES)):
                 size = PANEL_SIZE.get(b, a.size)
@@ -153,8 +153,10 @@ def main():
                 "(bench/cycles.py: no flash wait states, so not the stm32f4's 5 behind its ART\n"
                 "accelerator either; QEMU's STM32F405 has no cycle counter), except the pico's, counted by rp2040js\n"
                 "over the whole render (its Cortex-M0+ timing: no flash wait states or XIP\n"
-                "cache; its SIO divider charged 16 cycles a division, the silicon's 8; one core,\n"
-                "the second is not emulated); PSNR against the exact double build at the same samples and\n"
+                "cache; its SIO divider charged 16 cycles a division, the silicon's 8; one core in\n"
+                "scanline order: bench/cores.md and bench/pico-frames.md have both); the pico's fixed\n"
+                "backend only (its soft float at 320x240 is 10 to 20 minutes of emulation a frame:\n"
+                "bench/boards.md has it at 64x64); PSNR against the exact double build at the same samples and\n"
                 "against the pixel-area image (rt --double --spp 16 --texture-filter off).\n"
                 "A build variant's rows (board.mk's BOARD_BENCH_VARIANTS) are left out where they\n"
                 "equal the board's own in every column: the pico's PICO_DIVIDER=0 builds the same\n"

@@ -33,7 +33,7 @@ import sys
 
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from boards_bench import ROOT, board_info, boards, cpi_of, cycles, run, write_csv  # noqa: E402
+from boards_bench import ROOT, board_info, boards, cpi_of, cycles, full_frame_backends, run, write_csv  # noqa: E402
 import scenes_bench  # noqa: E402
 
 SCENE = "card"
@@ -168,8 +168,10 @@ def write_md(rows):
     with open(os.path.join(ROOT, "bench", "time.md"), "w") as f:
         f.write("# Seconds a frame against error, every board (bench/time_bench.py)\n\n"
                 "The card scene (`scenes/bench/card.nff`, depth 3), 320x240, one core, each board at\n"
-                "the clock of its board.mk (`BOARD_CLOCK_HZ`): the pico 125 MHz (one of its two cores),\n"
-                "the stm32f4 168 MHz (an F405/F407; a Nucleo-64 runs at 84 MHz: twice the seconds),\n"
+                "the clock of its board.mk (`BOARD_CLOCK_HZ`): the pico 125 MHz (one of its two cores,\n"
+                "scanline order; its fixed backend only, as in bench/scenes.md),\n"
+                "the stm32f4 168 MHz (an F405/F407; a BlackPill's F411 runs at 100 MHz, its F401 and a\n"
+                "Nucleo-64 at 84 MHz: 1.68 and twice the seconds),\n"
                 "sifive_e 320 MHz, lm3s6965evb 50 MHz, microbit 16 MHz; the MPS2 boards are FPGA boards\n"
                 "run here under QEMU only, at their 25 MHz (AN385, AN386) and 20 MHz (AN521).\n"
                 "Seconds = cycles a pixel x 76,800 / clock. Cycles counted by SysTick under rp2040js on\n"
@@ -320,7 +322,7 @@ def main():
         for b in a.boards.split(",") if a.boards else names:
             info = board_info(["BOARD=" + b])
             hz = float(info["clock_hz"])
-            for be in info["backends"].split():
+            for be in full_frame_backends(b, info["backends"].split()):
                 if a.backends and be not in a.backends.split(","):
                     continue
                 for label, variables, opts in SAMPLINGS:
