@@ -148,6 +148,16 @@ SIZE := $(DEFAULT_SIZE)
 endif
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
+# SIZE is WxH, each side a whole number from 1 to the core's largest
+# (rt_config.h's RT_MAX_WIDTH, RT_MAX_HEIGHT, as rt --size takes), checked
+# here for every board before anything is built (no leading 0: C would
+# read it as octal). The shell sees only digits.
+no_digits = $(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(1)))))))))))
+RT_MAX_SIDES := $(shell awk '$$1 ~ /define$$/ && ($$2 == "RT_MAX_WIDTH" || $$2 == "RT_MAX_HEIGHT") { printf "%s ", $$3 }' include/rt_config.h)
+ifeq ($(and $(filter 1,$(words $(SIZE))),$(W),$(H),$(if $(call no_digits,$(W)$(H)),,digits),$(filter $(W)x$(H),$(SIZE)),\
+            $(if $(filter 0%,$(W) $(H)),,no0),$(shell [ $(W) -le $(word 1,$(RT_MAX_SIDES)) ] 2>/dev/null && [ $(H) -le $(word 2,$(RT_MAX_SIDES)) ] && echo fits)),)
+$(error SIZE=$(SIZE)$(if $(filter SIZE=%,$(SIZE_IS)),, ($(SIZE_IS))): expected WxH in whole pixels from 1x1 to $(word 1,$(RT_MAX_SIDES))x$(word 2,$(RT_MAX_SIDES)), such as SIZE=128x96)
+endif
 # A board whose frame goes to a panel (BOARD_PANEL, WxH) takes no larger frame
 ifneq ($(BOARD_PANEL),)
 ifneq ($(shell [ '$(W)' -le $(word 1,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && [ '$(H)' -le $(word 2,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && echo fits),fits)
@@ -282,7 +292,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # whose products -Os would slow (the card +1%).
 FW_SIZE_FILES = render rt_error stats sink_stream xform shape csg object
 FW_SIZE_FILES_fixed = camera
-FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lapp/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
+FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -Wl,--defsym=__aa_levels=$(AA_LEVELS) -nostdlib -nostartfiles -T $(BOARD_LD) -Lapp/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
