@@ -18,7 +18,8 @@
 #    split over lines, comments, CRLF and 3.2e1;
 #  - make run and make image with the same variables name the same
 #    firmware; distinct choices get distinct out/ names; a missing SCENE
-#    stops make run with its name.
+#    stops make run with its name; a malformed SIZE stops every board
+#    with one message before anything is compiled.
 # One sample a pixel (AA=0) unless a case says otherwise: every goal
 # defaults to the board's BOARD_RUN_AA, 3 levels here.
 RT=${1:-build/host/rt}
@@ -275,4 +276,21 @@ if [ $status -ne 0 ] && echo "$msg" | grep -q 'SCENE=nosuch.nff: no such file' &
 else
     bad "make run SCENE=nosuch.nff: status $status, $msg"
 fi
+
+# A malformed SIZE stops every board at once with the one message, before
+# anything is compiled: CC and the cross compiler are stubs that leave a
+# mark if they run.
+printf '#!/bin/sh\ntouch "%s/compiled"\nexit 1\n' "$PWD/$OUT" >"$OUT/nocc-gcc" && chmod +x "$OUT/nocc-gcc"
+for size in abc 64x 100000x10; do
+    want="SIZE=$size: expected WxH in whole pixels from 1x1 to 4096x4096, such as SIZE=128x96"
+    wrong=
+    for b in $(ls platform/*/board.mk | cut -d/ -f2); do
+        rm -f "$OUT/compiled"
+        msg=$(make -s firmware BOARD=$b SIZE=$size CC="$PWD/$OUT/nocc-gcc" BOARD_CROSS="$PWD/$OUT/nocc-" 2>&1)
+        status=$?
+        got=$(printf '%s\n' "$msg" | sed 's/^[^ ]*firmware\.mk:[0-9]*: \*\*\* //; s/\.  Stop\.$//')
+        [ $status -ne 0 ] && [ "$got" = "$want" ] && [ ! -e "$OUT/compiled" ] || wrong="$wrong $b (status $status: $msg)"
+    done
+    [ -z "$wrong" ] && ok "SIZE=$size on every board: \"$want\", nothing compiled" || bad "SIZE=$size:$wrong"
+done
 summary board-tests
