@@ -20,7 +20,9 @@
 #    AA=0 (and DITHER=0 on the OLED).
 #  - out/ names (make run's PNG, make image's files) and the build folder
 #    are made of one list of choices (FW_CHOICES below), each named only
-#    when it is not its default: out/<scene>-<board>-<backend>[-choices].
+#    when it is not its default: out/<scene>-<board>-<backend>[-choices];
+#    make run's references of what changes them (RUN_REF, RUN_AREA);
+#    OUT_DIR=dir instead of out/.
 #
 # The port contract (platform/port.h): a board folder platform/<BOARD>/
 # holds board.mk, which sets the variables below: the first ten always,
@@ -412,7 +414,7 @@ copy_images = $(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix
 # board's BOARD_IMAGE_NOTE says how to flash them
 image: deps-image $(BOARD_IMAGES)
 	@$(if $(BOARD_IMAGES),,echo "BOARD=$(BOARD) makes no image to flash: it runs under its emulator only" >&2; exit 1)
-	@mkdir -p out
+	@mkdir -p $(dir $(RUN_OUT))
 	@$(call copy_images,$(or $(BOARD_IMAGE_SHOW),echo))
 	@echo "$(BOARD_IMAGE_NOTE)"
 
@@ -430,11 +432,21 @@ endif
 # ---- running it ------------------------------------------------------------
 
 RUN_RT  ?= build/host/rt
-RUN_OUT ?= out/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
-# The reference is the double build in the board's pixel format, so with
-# FORMAT=rgb565 the figure is the renderer's error, not the format's.
-RUN_REF = out/$(NAME)-double$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
-RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMAT) as well,the exact double reference)
+# the folder of make run's, make host-run's and make image's files
+OUT_DIR ?= out
+RUN_OUT ?= $(OUT_DIR)/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
+# The references make run measures against are named by what changes
+# them and nothing else (not the board): runs that would render the same
+# reference share it, runs that would not never overwrite each other's.
+# Both: the size unless the scene's resolution, the depth unless 5
+# (REF_TAGS). The exact model: the double build at the run's samples (the
+# sampling word of FW_CHOICES, with the backend whose adaptive splits it
+# replays) in the board's pixel format, so with FORMAT=rgb565 the figure
+# is the renderer's error, not the format's; dithered, point-sampled
+# textures. The pixel-area image: its colours (RUN_AREA_FORMAT).
+REF_TAGS = $(if $(filter-out $(SCENE_SIZE),$(SIZE)),-$(SIZE))$(if $(filter-out 5,$(DEPTH)),-d$(DEPTH))
+RUN_REF = $(OUT_DIR)/$(NAME)-double$(REF_TAGS)-$(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))$(if \
+          $(filter-out 0,$(AA_LEVELS)),-$(BACKEND))-$(FORMAT)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(TEXTURE_FILTER)),-pointtex).png
 
 # Run the built firmware: RUN_OUT gets the image, stdout the report.
 board-run:
@@ -446,12 +458,12 @@ RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 
 # and l4, 8-bit RGB for the others (so the figure includes the format's
 # own rounding, and dithering's effect on it)
 RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
-RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
+RUN_AREA = $(OUT_DIR)/$(NAME)-area$(REF_TAGS)-$(RUN_AREA_FORMAT).png
 RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
 RUN_REPORT = $(FW_DIR)/report-$(BACKEND).txt
 run: deps-board
 	$(Q)$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER)
-	@mkdir -p out
+	@mkdir -p $(sort $(dir $(RUN_OUT) $(RUN_REF) $(RUN_AREA)))
 	$(show) RUN "$(FW_ELF) on $(BOARD)"
 	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(RUN_REPORT); \
 	    status=$$?; [ $$status = 0 ] || { cat $(RUN_REPORT); exit $$status; }
