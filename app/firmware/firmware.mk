@@ -442,8 +442,8 @@ RUN_OUT ?= $(OUT_DIR)/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
 # (REF_TAGS). The exact model: the double build at the run's samples (the
 # sampling word of FW_CHOICES, with the backend whose adaptive splits it
 # replays) in the board's pixel format, so with FORMAT=rgb565 the figure
-# is the renderer's error, not the format's; dithered, point-sampled
-# textures. The pixel-area image: its colours (RUN_AREA_FORMAT).
+# is the renderer's error, not the format's; then dither and pointtex
+# when on. The pixel-area image: its colours (RUN_AREA_FORMAT).
 REF_TAGS = $(if $(filter-out $(SCENE_SIZE),$(SIZE)),-$(SIZE))$(if $(filter-out 5,$(DEPTH)),-d$(DEPTH))
 RUN_REF = $(OUT_DIR)/$(NAME)-double$(REF_TAGS)-$(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))$(if \
           $(filter-out 0,$(AA_LEVELS)),-$(BACKEND))-$(FORMAT)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(TEXTURE_FILTER)),-pointtex).png
