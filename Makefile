@@ -8,7 +8,8 @@
 #                   at the scene's resolution unless SIZE=WxH is given,
 #                   write out/<scene>-<board>-<backend>[-choices].png, print instructions per pixel,
 #                   render time at BOARD_CLOCK_HZ, QEMU's wall time and the
-#                   error against the host's double build
+#                   error against the host's double build (out/'s names:
+#                   docs/boards.md; OUT_DIR=dir writes them there)
 #   make host-run   the same render on the host, fixed and double
 #   make size       flash/RAM by section and stack use of the firmware
 #   make profile    where the firmware's render spends its instructions: per
@@ -275,13 +276,17 @@ uninstall:
 
 NAME := $(basename $(notdir $(SCENE)))
 
+# (named as make run's references: firmware.mk's REF_TAGS; the double
+# image is make run's reference at one sample in rgb888)
+HOST_RUN_FIXED = $(OUT_DIR)/$(NAME)-host$(REF_TAGS).png
+HOST_RUN_DOUBLE = $(OUT_DIR)/$(NAME)-double$(REF_TAGS)-aa0-rgb888.png
 host-run: deps-host
 	$(Q)$(MAKE) build/host/rt
-	@mkdir -p out
-	build/host/rt $(SCENE) -o out/$(NAME)-host.png --fixed --depth $(DEPTH) --size $(SIZE) --stats
-	build/host/rt $(SCENE) -o out/$(NAME)-double.png --double --depth $(DEPTH) --size $(SIZE) --quiet
+	@mkdir -p $(OUT_DIR)
+	build/host/rt $(SCENE) -o $(HOST_RUN_FIXED) --fixed --depth $(DEPTH) --size $(SIZE) --stats
+	build/host/rt $(SCENE) -o $(HOST_RUN_DOUBLE) --double --depth $(DEPTH) --size $(SIZE) --quiet
 	@printf 'fixed vs the exact double reference: '
-	@build/host/rt compare out/$(NAME)-host.png out/$(NAME)-double.png
+	@build/host/rt compare $(HOST_RUN_FIXED) $(HOST_RUN_DOUBLE)
 
 include app/firmware/firmware.mk
 

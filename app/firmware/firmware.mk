@@ -20,7 +20,9 @@
 #    AA=0 (and DITHER=0 on the OLED).
 #  - out/ names (make run's PNG, make image's files) and the build folder
 #    are made of one list of choices (FW_CHOICES below), each named only
-#    when it is not its default: out/<scene>-<board>-<backend>[-choices].
+#    when it is not its default: out/<scene>-<board>-<backend>[-choices];
+#    make run's references of what changes them (RUN_REF, RUN_AREA);
+#    OUT_DIR=dir instead of out/.
 #
 # The port contract (platform/port.h): a board folder platform/<BOARD>/
 # holds board.mk, which sets the variables below: the first ten always,
@@ -148,6 +150,16 @@ SIZE := $(DEFAULT_SIZE)
 endif
 W := $(word 1,$(subst x, ,$(SIZE)))
 H := $(word 2,$(subst x, ,$(SIZE)))
+# SIZE is WxH, each side a whole number from 1 to the core's largest
+# (rt_config.h's RT_MAX_WIDTH, RT_MAX_HEIGHT, as rt --size takes), checked
+# here for every board before anything is built (no leading 0: C would
+# read it as octal). The shell sees only digits.
+no_digits = $(subst 0,,$(subst 1,,$(subst 2,,$(subst 3,,$(subst 4,,$(subst 5,,$(subst 6,,$(subst 7,,$(subst 8,,$(subst 9,,$(1)))))))))))
+RT_MAX_SIDES := $(shell awk '$$1 ~ /define$$/ && ($$2 == "RT_MAX_WIDTH" || $$2 == "RT_MAX_HEIGHT") { printf "%s ", $$3 }' include/rt_config.h)
+ifeq ($(and $(filter 1,$(words $(SIZE))),$(W),$(H),$(if $(call no_digits,$(W)$(H)),,digits),$(filter $(W)x$(H),$(SIZE)),\
+            $(if $(filter 0%,$(W) $(H)),,no0),$(shell [ $(W) -le $(word 1,$(RT_MAX_SIDES)) ] 2>/dev/null && [ $(H) -le $(word 2,$(RT_MAX_SIDES)) ] && echo fits)),)
+$(error SIZE=$(SIZE)$(if $(filter SIZE=%,$(SIZE_IS)),, ($(SIZE_IS))): expected WxH in whole pixels from 1x1 to $(word 1,$(RT_MAX_SIDES))x$(word 2,$(RT_MAX_SIDES)), such as SIZE=128x96)
+endif
 # A board whose frame goes to a panel (BOARD_PANEL, WxH) takes no larger frame
 ifneq ($(BOARD_PANEL),)
 ifneq ($(shell [ '$(W)' -le $(word 1,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && [ '$(H)' -le $(word 2,$(subst x, ,$(BOARD_PANEL))) ] 2>/dev/null && echo fits),fits)
@@ -282,7 +294,7 @@ FW_CFLAGS = $(WARN) -ffreestanding $(BOARD_CPU) -O2 -g -ffunction-sections -fdat
 # whose products -Os would slow (the card +1%).
 FW_SIZE_FILES = render rt_error stats sink_stream xform shape csg object
 FW_SIZE_FILES_fixed = camera
-FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -nostdlib -nostartfiles -T $(BOARD_LD) -Lapp/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
+FW_LDFLAGS = $(BOARD_CPU) -Wl,--defsym=__stack_size=$(STACK_SIZE) -Wl,--defsym=__aa_levels=$(AA_LEVELS) -nostdlib -nostartfiles -T $(BOARD_LD) -Lapp/firmware -Wl,--gc-sections $(BOARD_LDFLAGS)
 
 # Per backend: fixed point; float with the board's FPU when it has one
 # (else soft-float); double, soft-float (what a user without this project
@@ -402,7 +414,7 @@ copy_images = $(foreach f,$(BOARD_IMAGES),cp $(f) $(basename $(RUN_OUT))$(suffix
 # board's BOARD_IMAGE_NOTE says how to flash them
 image: deps-image $(BOARD_IMAGES)
 	@$(if $(BOARD_IMAGES),,echo "BOARD=$(BOARD) makes no image to flash: it runs under its emulator only" >&2; exit 1)
-	@mkdir -p out
+	@mkdir -p $(dir $(RUN_OUT))
 	@$(call copy_images,$(or $(BOARD_IMAGE_SHOW),echo))
 	@echo "$(BOARD_IMAGE_NOTE)"
 
@@ -420,11 +432,21 @@ endif
 # ---- running it ------------------------------------------------------------
 
 RUN_RT  ?= build/host/rt
-RUN_OUT ?= out/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
-# The reference is the double build in the board's pixel format, so with
-# FORMAT=rgb565 the figure is the renderer's error, not the format's.
-RUN_REF = out/$(NAME)-double$(if $(filter-out rgb888,$(FORMAT)),-$(FORMAT)).png
-RUN_REF_IS = $(if $(filter-out rgb888,$(FORMAT)),the double reference in $(FORMAT) as well,the exact double reference)
+# the folder of make run's, make host-run's and make image's files
+OUT_DIR ?= out
+RUN_OUT ?= $(OUT_DIR)/$(NAME)-$(BOARD)-$(BACKEND)$(FW_TAGS).png
+# The references make run measures against are named by what changes
+# them and nothing else (not the board): runs that would render the same
+# reference share it, runs that would not never overwrite each other's.
+# Both: the size unless the scene's resolution, the depth unless 5
+# (REF_TAGS). The exact model: the double build at the run's samples (the
+# sampling word of FW_CHOICES, with the backend whose adaptive splits it
+# replays) in the board's pixel format, so with FORMAT=rgb565 the figure
+# is the renderer's error, not the format's; then dither and pointtex
+# when on. The pixel-area image: its colours (RUN_AREA_FORMAT).
+REF_TAGS = $(if $(filter-out $(SCENE_SIZE),$(SIZE)),-$(SIZE))$(if $(filter-out 5,$(DEPTH)),-d$(DEPTH))
+RUN_REF = $(OUT_DIR)/$(NAME)-double$(REF_TAGS)-$(call sampling_word,$(AA_LEVELS),$(AA_THRESHOLD),$(SPP))$(if \
+          $(filter-out 0,$(AA_LEVELS)),-$(BACKEND))-$(FORMAT)$(if $(filter 1,$(DITHER)),-dither)$(if $(filter 0,$(TEXTURE_FILTER)),-pointtex).png
 
 # Run the built firmware: RUN_OUT gets the image, stdout the report.
 board-run:
@@ -436,12 +458,12 @@ RUN_SAMPLING = $(if $(filter-out 0,$(AA_LEVELS)),--aa $(AA))$(if $(filter-out 0 
 # and l4, 8-bit RGB for the others (so the figure includes the format's
 # own rounding, and dithering's effect on it)
 RUN_AREA_FORMAT = $(if $(filter l4 l8,$(FORMAT)),l8,rgb888)
-RUN_AREA = out/$(NAME)-area-$(RUN_AREA_FORMAT).png
+RUN_AREA = $(OUT_DIR)/$(NAME)-area$(REF_TAGS)-$(RUN_AREA_FORMAT).png
 RUN_DITHER = $(if $(filter 1,$(DITHER)),--dither)
 RUN_REPORT = $(FW_DIR)/report-$(BACKEND).txt
 run: deps-board
 	$(Q)$(MAKE) build/host/rt $(FW_ELF) $(BOARD_IMAGES) AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER)
-	@mkdir -p out
+	@mkdir -p $(sort $(dir $(RUN_OUT) $(RUN_REF) $(RUN_AREA)))
 	$(show) RUN "$(FW_ELF) on $(BOARD)"
 	@$(MAKE) -s board-run AA=$(AA) SPP=$(SPP) DITHER=$(DITHER) TEXTURE_FILTER=$(TEXTURE_FILTER) >$(RUN_REPORT); \
 	    status=$$?; [ $$status = 0 ] || { cat $(RUN_REPORT); exit $$status; }

@@ -17,8 +17,12 @@
 #    is the frame rt renders, for every scene of scenes/ and for tokens
 #    split over lines, comments, CRLF and 3.2e1;
 #  - make run and make image with the same variables name the same
-#    firmware; distinct choices get distinct out/ names; a missing SCENE
-#    stops make run with its name.
+#    firmware; distinct choices get distinct out/ names, each word of
+#    them one docs/boards.md gives; make run at two sizes leaves two
+#    references of each kind, and what make run and make host-run write
+#    is named as docs/boards.md lists; a missing SCENE stops make run
+#    with its name; a malformed SIZE stops every board with one message
+#    before anything is compiled.
 # One sample a pixel (AA=0) unless a case says otherwise: every goal
 # defaults to the board's BOARD_RUN_AA, 3 levels here.
 RT=${1:-build/host/rt}
@@ -257,19 +261,85 @@ for v in "" "SIZE=64x64" "SIZE=64x48" "AA=0" "AA=2" "AA=3,20" "SPP=2" "DITHER=1"
          "BOARD=stm32f4" "BOARD=stm32f4 STM32=nucleo64" "BOARD=stm32f4 HSE_MHZ=25" "BOARD=stm32f4 STM32_LED=PC1" \
          "BOARD=stm32f4 STM32_USART=2" "BOARD=stm32f4 AA=0" "BOARD=stm32f4 SIZE=160x120" \
          "BOARD=stm32f4 STM32=blackpill-f411" "BOARD=stm32f4 STM32=blackpill-f401" "BOARD=stm32f4 HSE=bypass" \
-         "BOARD=stm32f4 STM32_LED_ON=low" "BOARD=stm32f4 BAUD=921600"; do
+         "BOARD=stm32f4 STM32_LED_ON=low" "BOARD=stm32f4 BAUD=921600" \
+         "SPECIALISE=0" "BOARD=pico PROGRESSIVE=0"; do
     echo "$(info $v) $v" >>"$names"
 done
 dup_out=$(awk '{ print $1 }' "$names" | sort | uniq -d) dup_dir=$(awk '{ print $2 }' "$names" | sort | uniq -d)
-if [ -z "$dup_out$dup_dir" ] && [ "$(wc -l <"$names")" = 40 ] && ! awk '$1 == "" || $2 == ""' "$names" | grep -q .; then
-    ok "40 builds, 40 out/ names and ELFs: $(awk 'NR > 1 { printf "%s%s", sep, $1; sep = ", " }' "$names" | sed 's,out/showpiece-,,g' | cut -c1-400)..."
+if [ -z "$dup_out$dup_dir" ] && [ "$(wc -l <"$names")" = 42 ] && ! awk '$1 == "" || $2 == ""' "$names" | grep -q .; then
+    ok "42 builds, 42 out/ names and ELFs: $(awk 'NR > 1 { printf "%s%s", sep, $1; sep = ", " }' "$names" | sed 's,out/showpiece-,,g' | cut -c1-400)..."
 else
     bad "out/ names or ELFs shared: $dup_out $dup_dir"
 fi
+# every word of those names is one docs/boards.md gives (`d<depth>` as d3)
+undoc=$(python3 -c '
+import re, sys
+doc = open("docs/boards.md").read()
+sec = doc[doc.index("**Names in `out/`.**"):doc.index("## Boards")]
+# a placeholder is a number (`led<pin>`: a pin such as PC1)
+forms = [re.compile(re.sub(r"<[^>]+>", lambda m: "[A-Z]+[0-9]+" if m.group(0) == "<pin>" else "[0-9]+",
+                           re.escape(w).replace("\\<", "<").replace("\\>", ">")))
+         for w in re.findall(r"`([^`\s]+)`", sec)]
+words = set()
+for line in open(sys.argv[1]):
+    name = line.split()[0].split("/")[-1]
+    board = next(b for b in sys.argv[2:] if name.startswith("showpiece-" + b + "-"))
+    words.update(name[len("showpiece-" + board + "-"):].split("-")[1:])
+print(" ".join(sorted(w for w in words if not any(f.fullmatch(w) for f in forms))) or "none", len(words))
+' "$names" $(ls platform/*/board.mk | cut -d/ -f2))
+[ "${undoc%% *}" = none ] && ok "the ${undoc#* } words of those names are each in docs/boards.md's list" ||
+    bad "out/ name words docs/boards.md does not give: $undoc"
 run=$(make -n run BOARD=stm32f4 SIZE=40x30 2>/dev/null | sed -n 's/.* RUN "\([^ ]*\) on.*/\1/p')
 img=$(make -n image BOARD=stm32f4 SIZE=40x30 2>/dev/null | grep -o '[^ ]*\.bin ' | head -1)
 [ -n "$run" ] && [ "${img% }" = "${run%.elf}.bin" ] && ok "make run runs $run; make image copies ${img% } beside it" ||
     bad "make run's ELF '$run' and make image's file '$img'"
+
+# make run's files: two runs at two sizes leave two references of each
+# kind, nothing overwritten, and every file make run and make host-run
+# write has a name of docs/boards.md's list of out/ names, each name of
+# the list but the files to flash written (the runs reuse the l4
+# firmware of the format cases above)
+od=$OUT/out
+rm -rf "$od"
+for size in 48x32 47x31; do
+    make -s run SCENE=scenes/spd/rings-1.nff SIZE=$size DEPTH=3 FORMAT=l4 AA=0 OUT_DIR="$od" >"$OUT/run-$size.log" 2>&1 ||
+        bad "make run at $size failed: $(tail -3 "$OUT/run-$size.log")"
+done
+make -s host-run SCENE=scenes/spd/rings-1.nff SIZE=47x31 DEPTH=3 OUT_DIR="$od" >"$OUT/host-run.log" 2>&1 ||
+    bad "make host-run failed: $(tail -3 "$OUT/host-run.log")"
+if names=$(ls "$od" 2>/dev/null | python3 -c '
+import re, sys
+doc = open("docs/boards.md").read()
+sec = doc[doc.index("**Names in `out/`.**"):doc.index("## Boards")]
+templates = re.findall(r"^    (out/\S+)", sec, re.M)
+part = {"scene": "rings-1", "board": "mps2-an385", "backend": "fixed|float|double", "ext": "uf2|bin|hex",
+        "choices": r"[a-z0-9_]+(?:-[a-z0-9_]+)*", "sampling": r"aa\d+(?:_\d+)?|spp\d+", "format": "[a-z0-9]+"}
+def regex(t):
+    out = ""
+    for tok in re.findall(r"<[^>]+>|\[|\]|[^<\[\]]+", t):
+        if tok == "[": out += "(?:"
+        elif tok == "]": out += ")?"
+        elif tok.startswith("<"):
+            out += "(?:%s)" % part.get(tok[1:-1], r"\d+" if tok[1:-1] in ("W", "H", "depth") else tok[1:-1])
+        else: out += re.escape(tok)
+    return re.compile(out)
+files = sys.stdin.read().split()
+used, wrong = set(), []
+for f in files:
+    hit = [t for t in templates if regex(t).fullmatch("out/" + f)]
+    used.update(hit)
+    if not hit: wrong.append(f)
+unused = [t for t in templates if t not in used and not t.endswith(".<ext>")]
+refs = [f for f in files if re.match(r"rings-1-(double|area)-4[78]x3[12]-", f)]
+if len(templates) < 5 or wrong or unused or len(files) != 8 or len(refs) != 5:
+    sys.exit("%d templates, %d files, %d references; undocumented: %s; no file: %s" % (
+        len(templates), len(files), len(refs), " ".join(wrong), " ".join(unused)))
+print(" ".join(files))
+'); then
+    ok "make run at 48x32 and 47x31, make host-run: 8 files, each named as docs/boards.md lists: $names"
+else
+    bad "make run's out/ names: $names (written: $(ls "$od" 2>/dev/null | tr '\n' ' '))"
+fi
 
 # A scene that is not there stops make run at once, with its name
 msg=$(make run SCENE=nosuch.nff 2>&1); status=$?
@@ -278,4 +348,21 @@ if [ $status -ne 0 ] && echo "$msg" | grep -q 'SCENE=nosuch.nff: no such file' &
 else
     bad "make run SCENE=nosuch.nff: status $status, $msg"
 fi
+
+# A malformed SIZE stops every board at once with the one message, before
+# anything is compiled: CC and the cross compiler are stubs that leave a
+# mark if they run.
+printf '#!/bin/sh\ntouch "%s/compiled"\nexit 1\n' "$PWD/$OUT" >"$OUT/nocc-gcc" && chmod +x "$OUT/nocc-gcc"
+for size in abc 64x 100000x10; do
+    want="SIZE=$size: expected WxH in whole pixels from 1x1 to 4096x4096, such as SIZE=128x96"
+    wrong=
+    for b in $(ls platform/*/board.mk | cut -d/ -f2); do
+        rm -f "$OUT/compiled"
+        msg=$(make -s firmware BOARD=$b SIZE=$size CC="$PWD/$OUT/nocc-gcc" BOARD_CROSS="$PWD/$OUT/nocc-" 2>&1)
+        status=$?
+        got=$(printf '%s\n' "$msg" | sed 's/^[^ ]*firmware\.mk:[0-9]*: \*\*\* //; s/\.  Stop\.$//')
+        [ $status -ne 0 ] && [ "$got" = "$want" ] && [ ! -e "$OUT/compiled" ] || wrong="$wrong $b (status $status: $msg)"
+    done
+    [ -z "$wrong" ] && ok "SIZE=$size on every board: \"$want\", nothing compiled" || bad "SIZE=$size:$wrong"
+done
 summary board-tests

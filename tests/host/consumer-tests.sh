@@ -192,7 +192,7 @@ fi
 mk="$out/make"
 mkdir -p "$mk"
 cp tests/host/consumer/main.c tests/host/consumer/out_host.c "$mk/" && cp "$scene" "$mk/scene.nff"
-if log make make -C "$mk" -f "$PWD/examples/make/Makefile" RT_DIR="$PWD" CC="${CC:-cc} -Werror" &&
+if log make make -C "$mk" -f "$PWD/examples/make/Makefile" RT_DIR="$PWD" CC="${CC:-cc} -Werror" APP_SRC="main.c out_host.c" &&
     "$mk/app" >"$out/make.ppm"; then
     same_image "make with rt.mk (examples/make/Makefile), host" "$out/make.ppm"
     pruned "make with rt.mk" "$mk/app"

@@ -3,7 +3,9 @@
 # sources, as a user's build would compile them), runs on the host and
 # must give the same pixels as `rt` renders the same scene: the LVGL-style
 # DMA sink in RGB565 big-endian stepping the frame, the Zephyr-style sink
-# with a pitch, and the tiled render through a 16-line buffer.
+# with a pitch, and the tiled render through a 16-line buffer; the Make
+# project examples/make as shipped, built and run as docs/embedding.md
+# says.
 RT=${1:-build/asan/rt}
 OUT=${2:-build/test-examples}
 SCENE=scenes/spd/balls-1.nff
@@ -29,6 +31,26 @@ for spec in "lvgl_flush:--size 64x64 --format rgb565be" "zephyr_display:--size 6
         bad "$name: differs from rt $opts: $cmp"
     fi
 done
+# examples/make as shipped, built as docs/embedding.md says (make in the
+# project with RT_DIR set to rt's tree) into a folder of its own
+# (BUILD=dir, which leaves the project's folder as it was): its program
+# writes rt --fixed's image of its scene.nff byte for byte, 60 dB or more
+# from the exact double reference, and the build warns of nothing.
+mk=$(cd "$OUT" && pwd)/make
+rm -rf "$mk"
+before=$(ls -l --time-style=+%s.%N examples/make)
+if make -C examples/make RT_DIR=../.. BUILD="$mk" >"$OUT/make.log" 2>&1 && "$mk/app" "$mk/scene.ppm" >>"$OUT/make.log" 2>&1; then
+    "$RT" examples/make/scene.nff -o "$OUT/make-fixed.png" --fixed --quiet
+    "$RT" examples/make/scene.nff -o "$OUT/make-double.png" --double --quiet
+    check "examples/make: ./app == rt --fixed" "$RT" compare "$mk/scene.ppm" "$OUT/make-fixed.png" --max-error 0
+    check "examples/make: ./app vs the exact double" "$RT" compare "$mk/scene.ppm" "$OUT/make-double.png" --psnr-min 60
+    ! grep -q 'warning:' "$OUT/make.log" && [ "$(ls -l --time-style=+%s.%N examples/make)" = "$before" ] &&
+        ok "examples/make: no warning; the project's folder as it was ($(ls examples/make | tr '\n' ' '))" ||
+        bad "examples/make: warnings ($(grep -c 'warning:' "$OUT/make.log")) or the project's folder changed: $(ls examples/make | tr '\n' ' ')"
+else
+    bad "examples/make: make -C examples/make RT_DIR=../.. failed: $(grep -m3 'error\|No rule' "$OUT/make.log")"
+fi
+
 # rt_camera_from_view: another viewpoint for a const scene (tests/host/camera_view.c).
 if cc -std=c11 -Wall -Wextra -Werror -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefined \
       -Iinclude -Isrc -o "$OUT/camera_view" tests/host/camera_view.c src/*.c src/*/*.c -lm 2>"$OUT/camera_view.build"; then

@@ -27,6 +27,11 @@
     and the bench scripts;
   - no bench table has a build variant's row ("board VAR=value") equal in
     every other cell to the board's own: such a row measures nothing;
+  - docs/scenes.md's example scene (its ```nff block) is
+    examples/make/scene.nff, byte for byte, and rt renders it;
+  - every error message docs/scenes.md quotes (`x.nff:LINE: message`) is
+    one the reader prints: the message of a tests/host/bad case, which
+    rt, run on that case, prints as "FILE:LINE: message";
   - README.md is at most 250 lines.
 
   tests/static/docs-check.py [RT]
@@ -398,6 +403,42 @@ for path in sorted(glob.glob("bench/*.md")):
             same.append("%s: %s" % (path, " | ".join(r[:4])))
 check(not same, "no bench table has a build variant's row equal to the board's own%s" % (
     "".join("\n          " + s_ for s_ in same) if same else ""))
+
+# docs/scenes.md: the example scene is the shipped one, and renders
+with open("docs/scenes.md") as f:
+    scenes_md = f.read()
+blocks = re.findall(r"^```nff\n(.*?)^```$", scenes_md, re.M | re.S)
+with open("examples/make/scene.nff") as f:
+    shipped = f.read()
+tmp = os.path.join(os.environ.get("TMPDIR", "/tmp"), "docs-check-%d.ppm" % os.getpid())
+r = subprocess.run([RT, "examples/make/scene.nff", "-o", tmp, "--quiet"], capture_output=True, text=True)
+rendered = r.returncode == 0 and os.path.exists(tmp) and os.path.getsize(tmp) > 0
+if os.path.exists(tmp):
+    os.remove(tmp)
+same = len(blocks) == 1 and blocks[0] == shipped
+check(same and rendered, "docs/scenes.md's example scene is examples/make/scene.nff (%d lines)%s; rt renders it%s" % (
+    shipped.count("\n"), "" if same else ": %d nff blocks, %s" % (len(blocks), "not the file" if blocks else "none"),
+    "" if rendered else ": " + r.stderr.strip()))
+
+# docs/scenes.md's quoted error messages: each is a bad case's, which rt prints
+expects = {}
+for e in sorted(glob.glob("tests/host/bad/*.expect")):
+    with open(e) as f:
+        expects.setdefault(f.read().strip(), e[:-len(".expect")] + ".nff")
+prose = re.sub(r"```.*?```", "", scenes_md, flags=re.S)
+quoted = [" ".join(c.split()) for c in re.findall(r"`([^`]+)`", prose)]
+quoted = [re.sub(r"^[\w./-]+\.nff:\d+: ", "", c) for c in quoted if re.match(r"^[\w./-]+\.nff:\d+: ", c)]
+not_printed = []
+for msg in quoted:
+    nff = expects.get(msg)
+    if not nff:
+        not_printed.append("%s (no tests/host/bad case)" % msg)
+        continue
+    r = subprocess.run([RT, nff, "-o", tmp, "--quiet"], capture_output=True, text=True)
+    if r.returncode != 2 or not re.fullmatch(re.escape(nff) + r":\d+: " + re.escape(msg) + r"\n?", r.stderr):
+        not_printed.append("%s (%s printed %r)" % (msg, nff, r.stderr.strip()))
+check(len(quoted) >= 4 and not not_printed, "the %d error messages docs/scenes.md quotes are the reader's%s" % (
+    len(quoted), "".join("\n          " + m for m in not_printed)))
 
 with open("README.md") as f:
     lines = sum(1 for _ in f)
