@@ -324,8 +324,8 @@ check(priced and shown and not off, "seconds a frame: %d bench/time.csv rows and
 # Seconds in prose: a figure "N s" in a paragraph or list item that names
 # a clock ("125 MHz") and a bench file is cycles a pixel x 76,800 / clock,
 # or a count of cycles / clock, of a number of that file, to the rounding
-# shown (a time the pages measure otherwise, on the host or on the wire,
-# names no clock).
+# shown (a time the pages measure otherwise names no clock: on the host;
+# on the wire, "N s at 115200").
 def cycles_of(path):
     """the counts of cycles a file gives: its tables' and CSV's cycles
     columns, and numbers followed by "cycles" in its text"""
@@ -371,6 +371,8 @@ for page in pages:
             continue
         have = set().union(*(cycles_of(f) for f in files))
         for m in SECONDS.finditer(b):
+            if re.match(r" at [\d,]+\b(?! ?MHz)", b[m.end():]):
+                continue  # at a baud rate: a time on the wire, not the render's
             prose_n += 1
             v, d = float(m.group(1)), len(m.group(1).split(".")[1]) if "." in m.group(1) else 0
             if not any(abs(round(n * k / hz, d) - v) < 1e-9 for n in have for hz in clocks for k in (PIXELS, 1)):
