@@ -96,7 +96,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench bench-quick firmware board-run board-info print-fwdir print-configs stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -126,10 +126,13 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 	@rm -f $$@.tmp
 endef
 
-# (each backend's rules are eval'd on their own: foreach joins its results
-# with spaces, which would run one rule's recipe into the next rule)
+# $(1) variant, $(2) the backends it compiles with its own flags; it takes
+# the others' from build/host. (Each backend's rules are eval'd on their
+# own: foreach joins its results with spaces, which would run one rule's
+# recipe into the next rule.)
+host_cores = $(foreach b,$(HOST_BACKENDS),build/$(if $(filter $(b),$(2)),$(1),host)/core-$(b).o)
 define host_rules
-$(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
+$(foreach b,$(2),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
 build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
@@ -139,39 +142,46 @@ build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
 build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
-               build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
+               build/$(1)/host_io.o build/$(1)/report.o $(host_cores)
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/lib/testlib.h tests/unit/probe_jump.h
+build/$(1)/test_%: tests/unit/test_%.c $(host_cores) tests/lib/testlib.h tests/unit/probe_jump.h
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests/lib \
-	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
+	    -o $$@ $$< $(host_cores) -lm
 endef
 
-$(eval $(call host_rules,host))
-$(eval $(call host_rules,asan))
+$(eval $(call host_rules,host,$(HOST_BACKENDS)))
+$(eval $(call host_rules,asan,$(HOST_BACKENDS)))
 
-# Numeric configurations for the benchmark: the host tools again, with the
-# fixed backend built with other fraction bits or fast operations.
+# Numeric configurations of the fixed backend, the one list of them (make
+# run CONFIG=..., make bench, tests/boards/configs-tests.sh; each one's
+# accuracy against the exact build is docs/accuracy.md's table): the
+# host tools again, build/cfg-NAME/rt, with the fixed backend built with
+# other fraction bits or fast operations and the other backends the
+# host build's.
 CONFIGS = q20 q20fast q16 q16fast q12
 CFG_q20 =
 CFG_q20fast = -DFX_FAST_MATH=1
 CFG_q16 = -DFX_FRAC_BITS=16
 CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
-$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
+$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c),fixed)))
+# the list for scripts: make -s print-configs
+print-configs:
+	@echo $(CONFIGS)
 
 # ThreadSanitizer build of rt (tests/host/threads-tests.sh): renders on several
 # threads share no written byte (and the saturation counter is atomic).
 tsan_CFLAGS = -O1 -g -fsanitize=thread -DFX_COUNT_SATURATIONS=1
 tsan_LDFLAGS = -fsanitize=thread
-$(eval $(call host_rules,tsan))
+$(eval $(call host_rules,tsan,$(HOST_BACKENDS)))
 
 # The stress suite's build: sanitised, and counting fixed-point saturations.
 stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
-$(eval $(call host_rules,stress))
+$(eval $(call host_rules,stress,$(HOST_BACKENDS)))
 
 # ---- unit tests (tests/unit/) ---------------------------------------------
 #
