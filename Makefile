@@ -126,13 +126,11 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 	@rm -f $$@.tmp
 endef
 
-# $(1) variant, $(2) the backends it compiles with its own flags; it takes
-# the others' from build/host. (Each backend's rules are eval'd on their
-# own: foreach joins its results with spaces, which would run one rule's
-# recipe into the next rule.)
-host_cores = $(foreach b,$(HOST_BACKENDS),build/$(if $(filter $(b),$(2)),$(1),host)/core-$(b).o)
+# (each backend's rules are eval'd on their own: foreach joins its results
+# with spaces, which would run one rule's recipe into the next rule)
+RT_APP = main bands image receive uart_stream host_io report
 define host_rules
-$(foreach b,$(2),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
+$(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
 build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 	@mkdir -p $$(@D)
@@ -141,33 +139,39 @@ build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
-build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
-               build/$(1)/host_io.o build/$(1)/report.o $(host_cores)
+build/$(1)/rt: $(RT_APP:%=build/$(1)/%.o) $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/unit/test_%.c $(host_cores) tests/lib/testlib.h tests/unit/probe_jump.h
+build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/lib/testlib.h tests/unit/probe_jump.h
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests/lib \
-	    -o $$@ $$< $(host_cores) -lm
+	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
 endef
 
-$(eval $(call host_rules,host,$(HOST_BACKENDS)))
-$(eval $(call host_rules,asan,$(HOST_BACKENDS)))
+$(eval $(call host_rules,host))
+$(eval $(call host_rules,asan))
 
 # Numeric configurations of the fixed backend, the one list of them (make
 # run CONFIG=..., make bench, tests/boards/configs-tests.sh; each one's
-# accuracy against the exact build is docs/accuracy.md's table): the
-# host tools again, build/cfg-NAME/rt, with the fixed backend built with
-# other fraction bits or fast operations and the other backends the
-# host build's.
+# accuracy against the exact build is docs/accuracy.md's table), and
+# build/cfg-NAME/rt for each: build/host/rt with its fixed backend built
+# with other fraction bits or fast operations (nothing else in rt
+# depends on them; with no flags, build/host/rt itself).
 CONFIGS = q20 q20fast q16 q16fast q12
 CFG_q20 =
 CFG_q20fast = -DFX_FAST_MATH=1
 CFG_q16 = -DFX_FRAC_BITS=16
 CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
-$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c),fixed)))
+define cfg_rules
+$(if $(CFG_$(1)),$(eval $(call core_rules,cfg-$(1),fixed,)))
+build/cfg-$(1)/rt: $(RT_APP:%=build/host/%.o) $(foreach b,$(HOST_BACKENDS),build/$(if $(CFG_$(1)),$(if $(filter fixed,$(b)),cfg-$(1),host),host)/core-$(b).o)
+	@mkdir -p $$(@D)
+	$$(show) LD $$@
+	$$(Q)$$(CC) -pthread -o $$@ $$^ -lpng -lz -lm
+endef
+$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call cfg_rules,$(c))))
 # the list for scripts: make -s print-configs
 print-configs:
 	@echo $(CONFIGS)
@@ -176,12 +180,12 @@ print-configs:
 # threads share no written byte (and the saturation counter is atomic).
 tsan_CFLAGS = -O1 -g -fsanitize=thread -DFX_COUNT_SATURATIONS=1
 tsan_LDFLAGS = -fsanitize=thread
-$(eval $(call host_rules,tsan,$(HOST_BACKENDS)))
+$(eval $(call host_rules,tsan))
 
 # The stress suite's build: sanitised, and counting fixed-point saturations.
 stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
-$(eval $(call host_rules,stress,$(HOST_BACKENDS)))
+$(eval $(call host_rules,stress))
 
 # ---- unit tests (tests/unit/) ---------------------------------------------
 #
@@ -360,7 +364,7 @@ bench-quick: deps
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt $(UNIT_TESTS:%=build/asan/%) build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
+        build/stress/rt build/stress/test_rayfuzz build/tsan/rt $(CONFIGS:%=build/cfg-%/rt) build/scenec/rt-scenec \
         build/scenec-float/rt-scenec build/scenec-double/rt-scenec build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
 test: deps
