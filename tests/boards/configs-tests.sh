@@ -61,7 +61,7 @@ done
 if python3 bench/run_bench.py --quick --scenes card --size $SIZE --out "$OUT/bench" >"$OUT/bench.log" 2>&1; then
     missing=
     for c in $(sed -n 's/^QUICK_CONFIGS = \[\(.*\)\]/\1/p' bench/run_bench.py | tr -d '",'); do
-        grep -q "^| $c[ |].* dB | [0-9]" "$OUT/bench/results-quick.md" || missing="$missing $c"
+        grep -q "^| ${c}[ |].* dB | [0-9]" "$OUT/bench/results-quick.md" || missing="$missing $c"
     done
     [ -z "$missing" ] && ok "bench/run_bench.py --quick at $SIZE: $(tail -1 "$OUT/bench.log")" ||
         bad "bench/run_bench.py --quick at $SIZE: no row for$missing in $OUT/bench/results-quick.md"
