@@ -2,6 +2,7 @@
 # The numeric configurations (CONFIGS in the Makefile, make -s
 # print-configs; their floors: docs/accuracy.md's table, read here):
 #  - every configuration has a row in the table, and every row is one;
+#    make stops at a CONFIG that is not one;
 #  - each one's rt (build/cfg-NAME/rt, which make test builds) renders
 #    the business-card scene, whose shadow rays skip spheres by the light
 #    cones, within the row's floor of the exact build (PSNR, share of
@@ -28,6 +29,13 @@ if [ -n "$configs" ] && [ "$(echo $configs)" = "$(echo $rows)" ]; then
 else
     bad "the Makefile's configurations '$configs' and docs/accuracy.md's rows '$rows' differ"
 fi
+
+# a name that is not one stops make with the list
+msg=$(make -s print-fwdir CONFIG=q24 2>&1) && bad "make CONFIG=q24 went on: $msg" ||
+    case $msg in
+        *"CONFIG=q24 is not a numeric configuration: $configs"*) ok "make CONFIG=q24: ${msg#*: }" ;;
+        *) bad "make CONFIG=q24: $msg" ;;
+    esac
 
 "$RT" "$SCENE" --double --size $SIZE --depth 5 -o "$OUT/exact.png" --quiet ||
     bad "the exact build does not render $SCENE"
