@@ -98,7 +98,7 @@ asan_CFLAGS = -O1 -g -fsanitize=address,undefined -fno-sanitize-recover=undefine
 host_LDFLAGS =
 asan_LDFLAGS = -fsanitize=address,undefined
 
-.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench $(BENCH_STEPS:%=bench-%) bench-quick firmware board-run board-info print-fwdir stress fuzz fuzz-coverage image uf2 pictures
+.PHONY: all install uninstall run host-run test clean deps deps-board deps-image deps-host size profile bench $(BENCH_STEPS:%=bench-%) bench-quick firmware board-run board-info print-fwdir print-configs stress fuzz fuzz-coverage image uf2 pictures
 all: build/host/rt
 
 # The builds of the core in the host tools, with their flags: the ids of
@@ -130,6 +130,7 @@ endef
 
 # (each backend's rules are eval'd on their own: foreach joins its results
 # with spaces, which would run one rule's recipe into the next rule)
+RT_APP = main bands image receive uart_stream host_io report
 define host_rules
 $(foreach b,$(HOST_BACKENDS),$(eval $(call core_rules,$(1),$(b),$(BACKEND_FLAGS_$(b)))))
 
@@ -140,8 +141,7 @@ build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
-build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
-               build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
+build/$(1)/rt: $(RT_APP:%=build/$(1)/%.o) $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
@@ -154,15 +154,29 @@ endef
 $(eval $(call host_rules,host))
 $(eval $(call host_rules,asan))
 
-# Numeric configurations for the benchmark: the host tools again, with the
-# fixed backend built with other fraction bits or fast operations.
+# Numeric configurations of the fixed backend, the one list of them (make
+# run CONFIG=..., make bench, tests/boards/configs-tests.sh; each one's
+# accuracy against the exact build is docs/accuracy.md's table), and
+# build/cfg-NAME/rt for each: build/host/rt with its fixed backend built
+# with other fraction bits or fast operations (nothing else in rt
+# depends on them; with no flags, build/host/rt itself).
 CONFIGS = q20 q20fast q16 q16fast q12
 CFG_q20 =
 CFG_q20fast = -DFX_FAST_MATH=1
 CFG_q16 = -DFX_FRAC_BITS=16
 CFG_q16fast = -DFX_FRAC_BITS=16 -DFX_FAST_MATH=1
 CFG_q12 = -DFX_FRAC_BITS=12
-$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call host_rules,cfg-$(c))))
+define cfg_rules
+$(if $(CFG_$(1)),$(eval $(call core_rules,cfg-$(1),fixed,)))
+build/cfg-$(1)/rt: $(RT_APP:%=build/host/%.o) $(foreach b,$(HOST_BACKENDS),build/$(if $(CFG_$(1)),$(if $(filter fixed,$(b)),cfg-$(1),host),host)/core-$(b).o)
+	@mkdir -p $$(@D)
+	$$(show) LD $$@
+	$$(Q)$$(CC) -pthread -o $$@ $$^ -lpng -lz -lm
+endef
+$(foreach c,$(CONFIGS),$(eval cfg-$(c)_CFLAGS = $(host_CFLAGS) $(CFG_$(c)))$(eval $(call cfg_rules,$(c))))
+# the list for scripts: make -s print-configs
+print-configs:
+	@echo $(CONFIGS)
 
 # ThreadSanitizer build of rt (tests/host/threads-tests.sh): renders on several
 # threads share no written byte (and the saturation counter is atomic).
@@ -385,7 +399,7 @@ bench-quick: deps
 FUZZERS = build/fuzz/fuzz_nff build/fuzz/fuzz_nff_double build/fuzz/fuzz_nff_float build/fuzz/fuzz_readers \
           build/fuzz/fuzz_receive build/fuzz/fuzz_scenec build/fuzz/fuzz_scenec_float
 TESTS = build/host/rt $(UNIT_TESTS:%=build/asan/%) build/asan/rt \
-        build/stress/rt build/stress/test_rayfuzz build/tsan/rt build/scenec/rt-scenec \
+        build/stress/rt build/stress/test_rayfuzz build/tsan/rt $(CONFIGS:%=build/cfg-%/rt) build/scenec/rt-scenec \
         build/scenec-float/rt-scenec build/scenec-double/rt-scenec build/lib/librt_core.a build/lib/rt-scenec $(FUZZERS)
 
 test: deps

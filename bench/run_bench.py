@@ -9,8 +9,10 @@ For each (configuration, scene) cell it measures
   - host cost: render time at 128x128, median of 5 runs after a warm-up,
     one thread, and callgrind's instruction count of a 64x64 render.
 It writes bench/results.md, bench/results.csv and bench/plot.svg.
+The fixed-point configurations are the Makefile's (make -s print-configs),
+described by docs/accuracy.md's table.
 
-  bench/run_bench.py [--quick]
+  bench/run_bench.py [--quick] [--scenes A,B] [--size WxH --out DIR]
 """
 import argparse
 import csv
@@ -24,16 +26,25 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 OUT = os.path.join(ROOT, "build", "bench")
 
+
+
+def fixed_configs():
+    """The Makefile's configurations, each with docs/accuracy.md's words for it."""
+    names = subprocess.run(["make", "-s", "print-configs"], cwd=ROOT, check=True, capture_output=True,
+                           text=True).stdout.split()
+    with open(os.path.join(ROOT, "docs", "accuracy.md")) as f:
+        what = dict(re.findall(r"^\| `(\w+)` \| ([^|]+?) \|", f.read(), re.M))
+    missing = [n for n in names if n not in what]
+    if missing:
+        sys.exit("bench: docs/accuracy.md's table of configurations has no row for %s" % ", ".join(missing))
+    return {n: ("fixed", n, "fixed " + what[n]) for n in names}
+
+
 # name -> (kind, board CONFIG, description)
-CONFIGS = {
-    "q20": ("fixed", "q20", "fixed Q11.20 (default)"),
-    "q20fast": ("fixed", "q20fast", "fixed Q11.20, fast sqrt/recip/pow"),
-    "q16": ("fixed", "q16", "fixed Q15.16 (more range)"),
-    "q16fast": ("fixed", "q16fast", "fixed Q15.16, fast sqrt/div/pow"),
-    "q12": ("fixed", "q12", "fixed Q19.12 (most range)"),
+CONFIGS = dict(fixed_configs(), **{
     "float": ("float", "q20", "single-precision soft-float"),
     "double": ("double", "q20", "double-precision soft-float (reference)"),
-}
+})
 DEFAULT = "q20"
 SPD = ["balls-1", "gears-1", "rings-1", "teapot-1", "tetra-1",
        "balls-2", "rings-2", "teapot-2", "tetra-2"]
@@ -54,8 +65,11 @@ def host_rt(cfg):
 
 
 def scene_path(scene):
-    p = os.path.join("scenes", "spd", scene + ".nff")
-    return p if os.path.exists(os.path.join(ROOT, p)) else os.path.join("scenes", scene + ".nff")
+    for d in (("scenes", "spd"), ("scenes",), ("scenes", "bench")):
+        p = os.path.join(*d, scene + ".nff")
+        if os.path.exists(os.path.join(ROOT, p)):
+            return p
+    sys.exit("bench: no scene %s in scenes/spd, scenes or scenes/bench" % scene)
 
 
 def render(cfg, scene, size, out, extra=()):
@@ -72,9 +86,9 @@ def compare(a, b):
     return psnr, int(m.group(2)), float(m.group(3)), float(m.group(4))
 
 
-def board_ipp(cfg, scene, board="mps2-an385"):
+def board_ipp(cfg, scene, board, size):
     kind, board_cfg, _ = CONFIGS[cfg]
-    args = ["BOARD=" + board, "BACKEND=" + kind, "SCENE=" + scene_path(scene), "SIZE=" + BOARD_SIZE,
+    args = ["BOARD=" + board, "BACKEND=" + kind, "SCENE=" + scene_path(scene), "SIZE=" + size,
             "DEPTH=5", "CONFIG=" + board_cfg, "AA=0"]
     run(["make", "-s", "-j2", "firmware"] + args)
     report = run(["make", "-s", "board-run", "RUN_OUT=" + os.path.join(OUT, "board-%s-%s.png" % (cfg, scene))]
@@ -105,7 +119,7 @@ def fmt_psnr(p):
     return "inf" if p == math.inf else "%.2f" % p
 
 
-def write_svg(path, cells, cfgs, agg, front):
+def write_svg(path, cells, cfgs, agg, front, board_size):
     W, H, L, R, T, B = 760, 460, 70, 200, 30, 50
     costs = [c["board_ipp"] for c in cells] + [a[0] for a in agg.values()]
     lo, hi = math.log10(min(costs)) - 0.1, math.log10(max(costs)) + 0.1
@@ -124,7 +138,7 @@ def write_svg(path, cells, cfgs, agg, front):
     col = {c: palette.get(c, "#999999") for c in cfgs}
     s = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="12">' % (W, H),
          '<rect width="100%" height="100%" fill="white"/>',
-         '<text x="%d" y="18" font-size="14">PSNR against the exact double vs board instructions per pixel (Cortex-M3, 64x64)</text>' % L]
+         '<text x="%d" y="18" font-size="14">PSNR against the exact double vs board instructions per pixel (Cortex-M3, %s)</text>' % (L, board_size)]
     for e in range(int(math.floor(lo)), int(math.ceil(hi)) + 1):
         for m in (1, 2, 5):
             v = m * 10 ** e
@@ -162,6 +176,10 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true", help="a subset (make bench-quick; its duration: docs/performance.md)")
     ap.add_argument("--board", default="mps2-an385", help="the board of the instructions-per-pixel column")
+    ap.add_argument("--scenes", help="these scenes (comma-separated names) instead")
+    ap.add_argument("--size", help="errors and board cost at WxH, one timed run, results in --out "
+                                   "(the test of make test: tests/boards/configs-tests.sh)")
+    ap.add_argument("--out", help="the folder of the results (default bench/)")
     ap.add_argument("--from-csv", action="store_true",
                     help="measure nothing: rewrite the results from results.csv's cells "
                          "(after a configuration or scene is dropped from it)")
@@ -169,32 +187,42 @@ def main():
     os.makedirs(OUT, exist_ok=True)
     extra_scenes = sorted(f[:-4] for f in os.listdir(os.path.join(ROOT, "scenes")) if f.endswith(".nff"))
     scenes = QUICK_SCENES if args.quick else SPD + extra_scenes
+    if args.scenes:
+        scenes = args.scenes.split(",")
     cfgs = QUICK_CONFIGS if args.quick else list(CONFIGS)
     runs = 3 if args.quick else 5
+    err_size, board_size = ERR_SIZE, BOARD_SIZE
+    if args.size:
+        if not args.out:
+            sys.exit("bench: --size writes its results to --out DIR, not bench/")
+        err_size = board_size = args.size
+        runs = 1
+    dest = args.out or os.path.join(ROOT, "bench")
+    os.makedirs(dest, exist_ok=True)
 
     if args.from_csv:
-        cells = read_csv(os.path.join(ROOT, "bench", "results%s.csv" % ("-quick" if args.quick else "")))
+        cells = read_csv(os.path.join(dest, "results%s.csv" % ("-quick" if args.quick else "")))
         scenes = list(dict.fromkeys(c["scene"] for c in cells))
         cfgs = [c for c in CONFIGS if any(x["config"] == c for x in cells)]
-        write_results(cells, scenes, cfgs, args.quick, runs)
+        write_results(cells, scenes, cfgs, args.quick, runs, dest, err_size, board_size)
         return
     cells = []
     for scene in scenes:
         ref = os.path.join(OUT, "ref-%s.png" % scene)
-        render("double", scene, ERR_SIZE, ref)
+        render("double", scene, err_size, ref)
         for cfg in cfgs:
             img = os.path.join(OUT, "%s-%s.png" % (cfg, scene))
-            render(cfg, scene, ERR_SIZE, img)  # also the warm-up
-            times = [render(cfg, scene, ERR_SIZE, img) for _ in range(runs)]
+            render(cfg, scene, err_size, img)  # also the warm-up
+            times = [render(cfg, scene, err_size, img) for _ in range(runs)]
             psnr, maxe, o2, o8 = compare(img, ref)
             cell = {"config": cfg, "scene": scene, "psnr": psnr, "max_err": maxe, "over2_pct": o2,
-                    "over8_pct": o8, "board_ipp": board_ipp(cfg, scene, args.board),
+                    "over8_pct": o8, "board_ipp": board_ipp(cfg, scene, args.board, board_size),
                     "host_ms": 1000 * statistics.median(times),
-                    "host_instr": None if args.quick else callgrind(cfg, scene)}
+                    "host_instr": None if args.quick or args.size else callgrind(cfg, scene)}
             cells.append(cell)
             print("%-8s %-9s psnr %7s  max %3d  board %9d instr/px  host %7.2f ms" %
                   (cfg, scene, fmt_psnr(psnr), maxe, cell["board_ipp"], cell["host_ms"]), flush=True)
-    write_results(cells, scenes, cfgs, args.quick, runs)
+    write_results(cells, scenes, cfgs, args.quick, runs, dest, err_size, board_size)
 
 
 def read_csv(path):
@@ -211,8 +239,8 @@ def read_csv(path):
     return cells
 
 
-def write_results(cells, scenes, cfgs, quick, runs):
-    """results.csv, plot.svg and results.md from the measured cells."""
+def write_results(cells, scenes, cfgs, quick, runs, dest, err_size, board_size):
+    """results.csv, plot.svg and results.md in dest from the measured cells."""
 
     # per-scene Pareto membership, and the configurations' aggregate points
     for scene in scenes:
@@ -227,14 +255,14 @@ def write_results(cells, scenes, cfgs, quick, runs):
     front = [cfgs[i] for i in pareto([agg[c] for c in cfgs])]
 
     suffix = "-quick" if quick else ""
-    with open(os.path.join(ROOT, "bench", "results%s.csv" % suffix), "w", newline="") as f:
+    with open(os.path.join(dest, "results%s.csv" % suffix), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["config", "scene", "psnr_db", "max_err", "over2_pct", "over8_pct", "board_instr_per_px",
                     "host_ms_128", "host_callgrind_instr_64", "pareto_in_scene"])
         for c in cells:
             w.writerow([c["config"], c["scene"], fmt_psnr(c["psnr"]), c["max_err"], c["over2_pct"], c["over8_pct"],
                         c["board_ipp"], "%.3f" % c["host_ms"], c["host_instr"] or "", int(c.get("pareto", False))])
-    write_svg(os.path.join(ROOT, "bench", "plot%s.svg" % suffix), cells, cfgs, agg, front)
+    write_svg(os.path.join(dest, "plot%s.svg" % suffix), cells, cfgs, agg, front, board_size)
 
     dbl = {c["scene"]: c["board_ipp"] for c in cells if c["config"] == "double"}
     flt = {c["scene"]: c["board_ipp"] for c in cells if c["config"] == "float"}
@@ -243,8 +271,8 @@ def write_results(cells, scenes, cfgs, quick, runs):
           "image against the exact double reference (its tolerances from double precision, src/numeric/tolerance.h) at %s, depth 5. Board: instructions per pixel on the emulated "
           "Cortex-M3 at %s (QEMU `-icount shift=0`, exact); soft-float configurations use libgcc's "
           "`__aeabi_f*`/`__aeabi_d*`. Host: render time at %s, median of %d runs after a warm-up, "
-          "one thread%s." % (" --quick" if quick else "", "-quick" if quick else "", ERR_SIZE,
-                             BOARD_SIZE, ERR_SIZE, runs,
+          "one thread%s." % (" --quick" if quick else "", "-quick" if quick else "", err_size,
+                             board_size, err_size, runs,
                              "" if quick else ", and callgrind's instruction count at " + CALLGRIND_SIZE), "",
           "![PSNR against board instructions per pixel](plot%s.svg)" % suffix, "",
           "## Configurations", "",
@@ -272,10 +300,11 @@ def write_results(cells, scenes, cfgs, quick, runs):
             c["board_ipp"], "%.1fx" % (flt[c["scene"]] / c["board_ipp"]) if c["scene"] in flt else "-",
             "%.1fx" % (dbl[c["scene"]] / c["board_ipp"]) if c["scene"] in dbl else "-", c["host_ms"],
             "{:,}".format(c["host_instr"]) if c["host_instr"] else "-"))
-    with open(os.path.join(ROOT, "bench", "results%s.md" % suffix), "w") as f:
+    with open(os.path.join(dest, "results%s.md" % suffix), "w") as f:
         f.write("\n".join(md) + "\n")
-    print("wrote bench/results%s.md, bench/results%s.csv, bench/plot%s.svg; Pareto front: %s"
-          % (suffix, suffix, suffix, ", ".join(front)))
+    where = os.path.relpath(dest, ROOT)
+    print("wrote %s/results%s.md, results%s.csv, plot%s.svg; Pareto front: %s"
+          % (where, suffix, suffix, suffix, ", ".join(front)))
     if DEFAULT in cfgs and DEFAULT not in front:
         print("note: the default configuration %s is not on the Pareto front" % DEFAULT)
 

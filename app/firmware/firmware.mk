@@ -171,9 +171,13 @@ FMT_MACRO := RT_FB_$(shell echo '$(FORMAT)' | tr a-z A-Z)
 # PRUNE=1 (default): code for primitive kinds and shading features the
 # scene does not use is compiled out (RT_USE_* from scene_data.h).
 PRUNE ?= 1
-# CONFIG picks a numeric configuration of the fixed backend (CFG_* in the
-# Makefile): q20 (the default, Q11.20), q20fast, q16, q16fast, q12.
+# CONFIG picks a numeric configuration of the fixed backend (CONFIGS and
+# CFG_* in the Makefile; q20, Q11.20, by default; each one's accuracy:
+# docs/accuracy.md).
 CONFIG ?= q20
+ifneq ($(words $(CONFIG)) $(filter $(CONFIGS),$(CONFIG)),1 $(CONFIG))
+$(error CONFIG=$(CONFIG) is not a numeric configuration: $(CONFIGS))
+endif
 CFG_FLAGS := $(CFG_$(CONFIG))
 # RAM: lines per band buffer (the firmware holds one band; on several
 # cores, two per core) and the stack (each core's)

@@ -184,9 +184,20 @@ static RT_INLINE bool never_shadow_miss(const void *p, const ray_t *r, uint32_t 
 /* A shadow ray from P along d (unit) to the light L that meets sphere
  * (C, r) at X leaves L towards X along -d, inside the cone from L that
  * holds the sphere: d . unit(L - C) >= cos a, sin a = r / |L - C|. The
- * cut is taken 2^-10 lower, more than the error of d, of a test's hit
- * point seen from at least a unit away, and of these products; a light
- * less than a unit off a sphere gets no cut (-2: every ray is tested). */
+ * cut is taken CONE_MARGIN lower, more than the error of d, of a test's
+ * hit point seen from at least a unit away, and of these products; a
+ * light less than a unit off a sphere gets no cut (-2: every ray is
+ * tested). Those errors are ulps of the format, so the margin is 1024
+ * of them: 2^-10 in Q.20, 2^-6 in Q.16, 2^-2 in Q.12 (where the cones
+ * cull less).
+ *
+ * In the fixed build the test is three 32-bit products of Q.K components,
+ * K = CONE_BITS, cheap also without a long multiply: K = 14 keeps each
+ * product below 2^28 + 2^15 and their sum in range (|d_a| <= 1 + 2^-18);
+ * a format with fewer fraction bits uses its own. */
+#define CONE_MARGIN R_ULPS(1024)
+#define CONE_BITS (FX_FRAC_BITS < 14 ? FX_FRAC_BITS : 14)
+#define CONE_SHIFT (FX_FRAC_BITS - CONE_BITS)
 RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
 {
     w->shadow_light = 0;
@@ -208,15 +219,16 @@ RT_COLD static void light_setup(const scene_t *sc, ray_scratch_t *w)
                 continue;
             real_t sin_a = r_div(s->radius, d);
             vec3_t u = v3_unit(lc);
-            real_t cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - R_RATIO(1, 1024);
+            real_t cut = r_sqrt(R_ONE - r_mul(sin_a, sin_a)) - CONE_MARGIN;
 #if RT_BACKEND_FIXED
-            /* d's components floored to Q.14 (an error below 2^-14 each),
-             * the axis rounded to it (2^-15): the dot product is within
-             * 2 sqrt3 2^-15 < 2^-12 of d . u, so the cut goes 2^-12 lower */
+            /* d's components floored to Q.K (an error below 2^-K each),
+             * the axis rounded to it (2^-(K+1)): the dot product is within
+             * 1.5 sqrt3 2^-K < 2^(2-K) of d . u, so the cut goes 2^(2-K)
+             * lower; cut is Q.F, cos_cut Q.2K */
             const int32_t axis[3] = { u.x, u.y, u.z };
             for (int a = 0; a < 3; a++)
-                ls->toward[a] = (axis[a] + (1 << 5)) >> 6;
-            ls->cos_cut = cut * 256 - ((int32_t)1 << 16);
+                ls->toward[a] = (axis[a] + ((1 << CONE_SHIFT) >> 1)) >> CONE_SHIFT;
+            ls->cos_cut = cut * ((int32_t)1 << (2 * CONE_BITS - FX_FRAC_BITS)) - ((int32_t)1 << (CONE_BITS + 2));
 #else
             ls->toward = u;
             ls->cos_cut = cut;
@@ -288,10 +300,9 @@ static RT_INLINE bool sphere_shadow_miss(const sphere_t *s, const ray_t *r, uint
     if (i >= RT_FLAT_EYE_SPHERES)
         return false; /* (below it, each has its cone, set up for the frame) */
     const light_sphere_t *ls = &w->light_spheres[l][i];
-#if RT_BACKEND_FIXED /* 32-bit products, Q.14 x Q.14: cheap also without a long multiply */
-    _Static_assert(FX_FRAC_BITS == 20, "the cones' directions are Q.20");
-    /* |d_a| <= 1 + 2^-18: each product below 2^28 + 2^15, the sum in range */
-    return (r->dir.x >> 6) * ls->toward[0] + (r->dir.y >> 6) * ls->toward[1] + (r->dir.z >> 6) * ls->toward[2] <
+#if RT_BACKEND_FIXED /* 32-bit products, Q.K x Q.K (light_setup) */
+    return (r->dir.x >> CONE_SHIFT) * ls->toward[0] + (r->dir.y >> CONE_SHIFT) * ls->toward[1] +
+               (r->dir.z >> CONE_SHIFT) * ls->toward[2] <
            ls->cos_cut;
 #else
     return v3_dot_in_range(r->dir, ls->toward) < ls->cos_cut;

@@ -45,8 +45,8 @@ typedef struct {
 typedef struct {
 #if RT_BACKEND_FIXED
     /* in 32-bit products (scene_hit.c): cheap also without a long multiply */
-    int32_t toward[3]; /* unit, from the centre to the light, in Q.14 */
-    int32_t cos_cut;   /* in Q.28 */
+    int32_t toward[3]; /* unit, from the centre to the light, in Q.K (scene_hit.c) */
+    int32_t cos_cut;   /* in Q.2K */
 #else
     vec3_t toward;  /* unit, from the centre to the light */
     real_t cos_cut; /* a shadow ray's d . toward below it misses (less a margin) */

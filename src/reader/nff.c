@@ -33,9 +33,10 @@ static bool view_key(reader_t *r, const char *key)
 /* 'from' and 'at' less than this many steps of the position grid apart
  * (in every coordinate) are one point: further apart, they are distinct
  * points to every build, also to the float build, whose spacing out at
- * the camera's extent is 2^(RT_FAR_EXTENT_LOG2 - 24), 32 steps. */
+ * the camera's extent is 2^(RT_FAR_EXTENT_LOG2 - 24), 32 steps in Q.20
+ * (a fraction of one with fewer fraction bits). */
 #define VIEW_MIN_STEPS 64
-_Static_assert(VIEW_MIN_STEPS - 1 > (1 << (RT_FAR_EXTENT_LOG2 - 24 + FX_FRAC_BITS)),
+_Static_assert((int64_t)(VIEW_MIN_STEPS - 1) << 24 > (int64_t)1 << (RT_FAR_EXTENT_LOG2 + FX_FRAC_BITS),
                "two points VIEW_MIN_STEPS apart on the grid are more than a float spacing apart");
 
 /* The view's degenerate cases, decided on the grid (the same integers in
