@@ -378,17 +378,6 @@ build/fuzz/fuzz_nff: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_double: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
-
-build/fuzz/fuzz_nff_float: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
-	    tests/fuzz/fuzz_nff.c $(CORE_SRC)
-
 # $(1) backend id, $(2) its flags: one build of the core for the
 # differential harness, instrumented, exporting only rt_backend_<id>
 define fuzz_core_rule
@@ -404,6 +393,20 @@ endef
 $(eval $(call fuzz_core_rule,fixed,))
 $(eval $(call fuzz_core_rule,float,$(BACKEND_FLAGS_float)))
 $(eval $(call fuzz_core_rule,double,$(BACKEND_FLAGS_double)))
+
+# fuzz_nff_double and fuzz_nff_float link the core objects fuzz_readers is
+# built from (the same flags: FUZZ_FLAGS, HOST_CAPS, the backend's), so the
+# core is compiled once per backend for both
+FUZZ_CORE_OBJS = $(addprefix build/fuzz/$(1)/,$(notdir $(CORE_SRC:.c=.o)))
+build/fuzz/fuzz_nff_double: tests/fuzz/fuzz_nff.c build/fuzz/core-double.o
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(BACKEND_FLAGS_double) -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c \
+	    $(call FUZZ_CORE_OBJS,double)
+
+build/fuzz/fuzz_nff_float: tests/fuzz/fuzz_nff.c build/fuzz/core-float.o
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(BACKEND_FLAGS_float) -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c \
+	    $(call FUZZ_CORE_OBJS,float)
 
 build/fuzz/fuzz_readers: tests/fuzz/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
 	$(show) CC $@
