@@ -126,6 +126,10 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 	@rm -f $$@.tmp
 endef
 
+# The core object of variant $(1), backend $(2): its own, or another
+# variant's where $(1)_core_$(2) names one built with the same flags
+core_obj = build/$(or $($(1)_core_$(2)),$(1))/core-$(2).o
+
 # (each backend's rules are eval'd on their own: foreach joins its results
 # with spaces, which would run one rule's recipe into the next rule)
 define host_rules
@@ -139,14 +143,14 @@ build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
 build/$(1)/rt: build/$(1)/main.o build/$(1)/bands.o build/$(1)/image.o build/$(1)/receive.o build/$(1)/uart_stream.o \
-               build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
+               build/$(1)/host_io.o build/$(1)/report.o $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b)))
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/lib/testlib.h tests/unit/probe_jump.h
+build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b))) tests/lib/testlib.h tests/unit/probe_jump.h
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests/lib \
-	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
+	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b))) -lm
 endef
 
 $(eval $(call host_rules,host))
@@ -171,6 +175,11 @@ $(eval $(call host_rules,tsan))
 # The stress suite's build: sanitised, and counting fixed-point saturations.
 stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
+# FX_COUNT_SATURATIONS changes only the fixed backend (the other builds'
+# counts are never read: app/rt/backend.c), so they are asan's objects
+stress_core_double = asan
+stress_core_float = asan
+stress_core_double_ftol = asan
 $(eval $(call host_rules,stress))
 
 # ---- unit tests (tests/unit/) ---------------------------------------------
