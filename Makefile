@@ -128,6 +128,10 @@ build/$(1)/core-$(2).o: $(patsubst src/%.c,build/$(1)/$(2)/%.o,$(CORE_SRC)) buil
 	@rm -f $$@.tmp
 endef
 
+# The core object of variant $(1), backend $(2): its own, or another
+# variant's where $(1)_core_$(2) names one built with the same flags
+core_obj = build/$(or $($(1)_core_$(2)),$(1))/core-$(2).o
+
 # (each backend's rules are eval'd on their own: foreach joins its results
 # with spaces, which would run one rule's recipe into the next rule)
 RT_APP = main bands image receive uart_stream host_io report
@@ -141,14 +145,14 @@ build/$(1)/%.o: app/rt/%.c $(wildcard app/rt/*.h) $(CORE_H) Makefile
 
 # libpng for PNG files; zlib for the UART stream's Adler-32 checksums;
 # POSIX threads for --threads (bands.c).
-build/$(1)/rt: $(RT_APP:%=build/$(1)/%.o) $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o)
+build/$(1)/rt: $(RT_APP:%=build/$(1)/%.o) $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b)))
 	$$(show) LD $$@
 	$$(Q)$$(CC) -pthread $$($(1)_LDFLAGS) -o $$@ $$^ -lpng -lz -lm
 
-build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) tests/lib/testlib.h tests/unit/probe_jump.h
+build/$(1)/test_%: tests/unit/test_%.c $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b))) tests/lib/testlib.h tests/unit/probe_jump.h
 	$$(show) CC $$@
 	$$(Q)$$(CC) $(WARN) -D_POSIX_C_SOURCE=200809L $$($(1)_CFLAGS) $$($(1)_LDFLAGS) $(HOST_CAPS) $(HOST_INC) -Itests/lib \
-	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),build/$(1)/core-$(b).o) -lm
+	    -o $$@ $$< $(foreach b,$(HOST_BACKENDS),$(call core_obj,$(1),$(b))) -lm
 endef
 
 $(eval $(call host_rules,host))
@@ -187,6 +191,11 @@ $(eval $(call host_rules,tsan))
 # The stress suite's build: sanitised, and counting fixed-point saturations.
 stress_CFLAGS = $(asan_CFLAGS) -DFX_COUNT_SATURATIONS=1
 stress_LDFLAGS = $(asan_LDFLAGS)
+# FX_COUNT_SATURATIONS changes only the fixed backend (the other builds'
+# counts are never read: app/rt/backend.c), so they are asan's objects
+stress_core_double = asan
+stress_core_float = asan
+stress_core_double_ftol = asan
 $(eval $(call host_rules,stress))
 
 # ---- unit tests (tests/unit/) ---------------------------------------------
@@ -427,17 +436,6 @@ build/fuzz/fuzz_nff: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
 	$(show) CC $@
 	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
 
-build/fuzz/fuzz_nff_double: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_DOUBLE=1 -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c $(CORE_SRC)
-
-build/fuzz/fuzz_nff_float: tests/fuzz/fuzz_nff.c $(CORE_SRC) $(CORE_H) Makefile
-	@mkdir -p $(@D)
-	$(show) CC $@
-	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) -DRT_BACKEND_FLOAT=1 -Iinclude -Isrc -o $@ \
-	    tests/fuzz/fuzz_nff.c $(CORE_SRC)
-
 # $(1) backend id, $(2) its flags: one build of the core for the
 # differential harness, instrumented, exporting only rt_backend_<id>
 define fuzz_core_rule
@@ -453,6 +451,20 @@ endef
 $(eval $(call fuzz_core_rule,fixed,))
 $(eval $(call fuzz_core_rule,float,$(BACKEND_FLAGS_float)))
 $(eval $(call fuzz_core_rule,double,$(BACKEND_FLAGS_double)))
+
+# fuzz_nff_double and fuzz_nff_float link the core objects fuzz_readers is
+# built from (the same flags: FUZZ_FLAGS, HOST_CAPS, the backend's), so the
+# core is compiled once per backend for both
+FUZZ_CORE_OBJS = $(addprefix build/fuzz/$(1)/,$(notdir $(CORE_SRC:.c=.o)))
+build/fuzz/fuzz_nff_double: tests/fuzz/fuzz_nff.c build/fuzz/core-double.o
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(BACKEND_FLAGS_double) -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c \
+	    $(call FUZZ_CORE_OBJS,double)
+
+build/fuzz/fuzz_nff_float: tests/fuzz/fuzz_nff.c build/fuzz/core-float.o
+	$(show) CC $@
+	$(Q)clang $(FUZZ_FLAGS) -fsanitize=fuzzer $(HOST_CAPS) $(BACKEND_FLAGS_float) -Iinclude -Isrc -o $@ tests/fuzz/fuzz_nff.c \
+	    $(call FUZZ_CORE_OBJS,float)
 
 build/fuzz/fuzz_readers: tests/fuzz/fuzz_readers.c build/fuzz/core-fixed.o build/fuzz/core-float.o build/fuzz/core-double.o
 	$(show) CC $@

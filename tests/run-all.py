@@ -12,14 +12,18 @@ of every suite that failed is printed whole at the end. A suite passes
 when its last summary line ("NAME: N passed, M failed") counts no failure
 and it exits 0; a suite that prints no summary counts one failure.
 
-Suites run side by side share nothing they write: each gets its own
-FW_ROOT (where make builds and runs firmware), so two suites never build
-into, or run from, the same folder. What all of them read (the host
+Suites run side by side share nothing they write but one cache: each
+gets its own FW_ROOT (where make builds and runs firmware), so two suites
+never build into, or run from, the same folder; all get FW_CACHE, where a
+firmware's compile stores its objects for the next one with the same
+preprocessed source and flags (tools/firmware/cc-cache.sh; emptied here
+first, its entries written whole or not at all). What all of them read (the host
 tools, the scene compilers) is built before the suites start (make test).
 """
 import os
 import re
 import shlex
+import shutil
 import subprocess
 import sys
 import time
@@ -27,6 +31,7 @@ import time
 SUMMARY = re.compile(r'^[a-z0-9_-]+: ([0-9]+) passed, ([0-9]+) failed$')
 LIST = os.path.join(os.path.dirname(os.path.abspath(__file__)), 'suites.list')
 LOGS = 'build/test-logs'
+CACHE = 'build/test-fw/cache'
 
 
 def read_list(variant):
@@ -82,6 +87,7 @@ def main(argv):
             sys.exit(f'run-all: no such suite: {" ".join(unknown)} (see {LIST})')
         suites = [s for s in suites if s[0] in args]
     os.makedirs(LOGS, exist_ok=True)
+    shutil.rmtree(CACHE, ignore_errors=True)
     jobs = max(1, min(jobs, len(suites)))
     print(f'run-all: {len(suites)} suites against {variant}, {jobs} at a time; logs in {LOGS}/', flush=True)
 
@@ -95,7 +101,7 @@ def main(argv):
             name, cmd = waiting.pop(0)
             log_path = f'{LOGS}/{name}.log'
             log = open(log_path, 'w')
-            env = dict(os.environ, FW_ROOT=f'build/test-fw/{name}')
+            env = dict(os.environ, FW_ROOT=f'build/test-fw/{name}', FW_CACHE=CACHE)
             try:
                 proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, env=env)
             except OSError as e:

@@ -371,12 +371,18 @@ endef
 $(eval $(call scenec_fp,float,-DRT_BACKEND_FLOAT=1))
 $(eval $(call scenec_fp,double,-DRT_BACKEND_DOUBLE=1))
 
+# FW_CACHE=DIR: a file whose preprocessed text and flags an earlier
+# firmware's compile had takes that one's object (tools/firmware/cc-cache.sh;
+# the test suites, which build many firmware that differ in scene, size or
+# format, share one: tests/run-all.py)
+FW_CCACHE = $(if $(FW_CACHE),sh tools/firmware/cc-cache.sh $(FW_CACHE) $(FW_DIR))
+
 # $(1) backend, $(2) a folder of sources
 define firmware_objs
 $(FW_DIR)/$(1)/%.o: $(2)/%.c $(CORE_H) platform/port.h $(wildcard app/firmware/*.h) $(FW_DIR)/scene_data.h platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)
 	$$(show) CC $$@
-	$$(Q)$$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) \
+	$$(Q)$$(FW_CCACHE) $$(FW_CC) $$(FW_CFLAGS) $$(FW_FLAGS_$(1)) $$(if $$(filter $$(basename $$(notdir $$<)),$$(FW_SIZE_FILES) $$(FW_SIZE_FILES_$(1))),-Os) \
 	    $$(if $$(filter libc_min $$(basename $$(notdir $$(BOARD_SRC))),$$(basename $$(notdir $$<))),-fno-lto) -c $$< -o $$@
 $(FW_DIR)/$(1)/%.o: $(2)/%.S platform/$(BOARD)/board.mk
 	@mkdir -p $$(@D)

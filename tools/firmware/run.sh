@@ -17,6 +17,9 @@ stream="${elf%.elf}.stream"
 clock="${QEMU_ACCEL:--icount ${QEMU_ICOUNT:-shift=0}}"
 t0=$(date +%s.%N)
 if [ "$RUN_END" = report ]; then
+    # emptied first: the loop below may read it before the background
+    # QEMU's redirection does, and must not find the last run's exit_status
+    : >"$stream"
     $QEMU -nographic -monitor none $clock -kernel "$elf" </dev/null >"$stream" 2>"$stream.err" &
     pid=$!
     end=$(($(date +%s) + 900))
