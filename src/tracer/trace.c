@@ -128,6 +128,7 @@ static inline colour_t direct_light(const tracer_t *tr, const surface_t *s, cons
     const material_t *m = s->m;
     real_t I = sc->light_intensity;
     (void)ray; /* only the lights' shares and a filtered texture look at it */
+    (void)mirror; /* only the lights' highlights, in the loop a build with shadows has */
     material_terms_t *t = &tr->terms[depth - 1];
     /* Kd C and I Kd C are kept per depth until the material or, under a
      * texture, C changes: a checker's tile mostly repeats ray after ray. */
